@@ -1,0 +1,72 @@
+# Seashells: `make run` builds the page and serves it; `make test` runs every test.
+# Both install what is missing first, so they work on a fresh Debian machine.
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+PORT ?= 8000
+TARGET := wasm32-unknown-unknown
+WASM_BINDGEN_VERSION := $(shell sed -n 's/^wasm-bindgen = "=\(.*\)"/\1/p' Cargo.toml)
+WASM := target/$(TARGET)/release/seashells_core.wasm
+PKG := www/pkg
+BIN := node_modules/.bin
+export PATH := $(HOME)/.cargo/bin:$(PATH)
+export XDG_RUNTIME_DIR ?= /tmp/seashells-runtime
+APT := DEBIAN_FRONTEND=noninteractive apt-get
+
+.PHONY: run test build bench deps deps-build deps-browser lint test-native test-browser test-page screenshots
+
+run: build
+	node tests/page/serve.mjs www $(PORT)
+
+## Installation: each step skips what is already there.
+
+deps-build:
+	@rustup target list --installed | grep -qx $(TARGET) || rustup target add $(TARGET)
+	@if [ "$$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen $(WASM_BINDGEN_VERSION)" ]; then \
+	  echo "Installing wasm-bindgen-cli $(WASM_BINDGEN_VERSION) (about two minutes)"; \
+	  cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION); fi
+	@command -v node >/dev/null || { $(APT) update && $(APT) install -y nodejs npm; }
+	@[ -x $(BIN)/wasm-opt ] && [ -d node_modules/playwright-core ] || npm ci --no-audit --no-fund
+
+deps-browser:
+	@command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
+	  { $(APT) update && $(APT) install -y chromium chromium-driver; }
+	@command -v wasm-pack >/dev/null || cargo install wasm-pack --locked
+
+deps: deps-build deps-browser
+
+## Build: release wasm, wasm-bindgen, wasm-opt from npm's binaryen.
+
+build: deps-build
+	cargo build --lib --release --target $(TARGET)
+	wasm-bindgen --target web --out-dir $(PKG) --out-name seashells $(WASM)
+	$(BIN)/wasm-opt -Os --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+	  --enable-mutable-globals --enable-reference-types --enable-multivalue \
+	  $(PKG)/seashells_bg.wasm -o $(PKG)/seashells_bg.wasm
+	@raw=$$(stat -c %s $(PKG)/seashells_bg.wasm); gz=$$(gzip -9c $(PKG)/seashells_bg.wasm | wc -c); \
+	  printf 'wasm: %s bytes raw, %s bytes gzipped\n' $$raw $$gz
+
+## Tests.
+
+lint:
+	cargo fmt --check
+	cargo clippy --all-targets -- -D warnings
+	cargo clippy --all-targets --target $(TARGET) -- -D warnings
+
+test-native:
+	cargo test
+
+test-browser: deps-browser
+	WASM_BINDGEN_TEST_WEBDRIVER_JSON=tests/webdriver.json CHROMEDRIVER=$$(command -v chromedriver) \
+	  wasm-pack test --headless --chrome --mode no-install
+
+test-page: build deps-browser
+	node --test --test-concurrency=1 tests/page/
+
+test: deps lint test-native test-browser test-page
+
+## Benchmarks print figures; they assert nothing.
+
+bench: build deps-browser
+	cargo run --release --bin seashells -- bench
+	node tests/page/bench.mjs

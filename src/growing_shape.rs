@@ -1,0 +1,37 @@
+//! The one interface between a shell form and everything that shows or exports it: a shape
+//! that grows one step at a time, appending to a permanent mesh and rewriting a small transient
+//! mesh that closes its current growing edge (the lip of a thick wall). A step's cost depends
+//! only on what it adds, never on how much has grown already.
+
+use crate::geometry::sweep::GeometryError;
+use crate::geometry::sweep_mesh::SweepMesh;
+use crate::mesh::{Bounds, Capacity, Mesh};
+use crate::spec::form::Form;
+use glam::DVec3;
+
+/// A shape grown step by step.
+pub trait GrowingShape {
+    /// Steps from the first to the fully grown shape.
+    fn steps(&self) -> usize;
+    /// Steps grown so far.
+    fn steps_done(&self) -> usize;
+    /// Sizes of the permanent mesh when fully grown.
+    fn capacity(&self) -> Capacity;
+    /// The largest the transient edge mesh ever gets.
+    fn edge_capacity(&self) -> Capacity;
+    /// Bounding box of the fully grown shape.
+    fn bounds(&self) -> Bounds;
+    /// The direction the fully grown shape is best seen from (where its opening faces).
+    fn front(&self) -> DVec3;
+    /// Grows one step: appends to `mesh`, and replaces `edge` with the geometry that closes the
+    /// new growing edge.
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh);
+}
+
+/// The growing shape a form describes; `rows` is the length of the pattern in rows, which the
+/// shape maps onto its steps for the pattern coordinates of its vertices.
+pub fn shape_for(form: &Form, rows: usize) -> Result<Box<dyn GrowingShape>, GeometryError> {
+    match form {
+        Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),
+    }
+}

@@ -1,0 +1,130 @@
+//! The triangle mesh every form produces and every consumer reads: the GPU buffers, the
+//! exporters and the tests. Vertices are laid out exactly as the vertex shader reads them.
+
+use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
+
+/// Which part of the shell a vertex belongs to; the shader colours each differently.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Surface {
+    /// The outer surface, which carries the pigmentation pattern.
+    Outer = 0,
+    /// The inner surface of the wall (the porcelain inside of the opening).
+    Inner = 1,
+    /// The edges joining outer and inner surfaces: lip, apex and sides of an open curve.
+    Edge = 2,
+}
+
+/// One mesh vertex, 36 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct Vertex {
+    pub position: [f32; 3],
+    pub normal: [f32; 3],
+    /// Pattern coordinates: x is the position along the growing edge in [0, 1], y the growth
+    /// time in pattern rows.
+    pub pattern: [f32; 2],
+    /// The [`Surface`] as a number.
+    pub surface: f32,
+}
+
+impl Vertex {
+    pub fn new(position: DVec3, normal: DVec3, pattern: [f64; 2], surface: Surface) -> Self {
+        Self {
+            position: position.as_vec3().to_array(),
+            normal: normal.as_vec3().to_array(),
+            pattern: [pattern[0] as f32, pattern[1] as f32],
+            surface: surface as u8 as f32,
+        }
+    }
+}
+
+/// An indexed triangle list.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    pub vertices: Vec<Vertex>,
+    pub indices: Vec<u32>,
+}
+
+impl Mesh {
+    pub fn with_capacity(capacity: Capacity) -> Self {
+        Self {
+            vertices: Vec::with_capacity(capacity.vertices),
+            indices: Vec::with_capacity(capacity.indices),
+        }
+    }
+
+    /// Index the next pushed vertex will get.
+    pub fn next_index(&self) -> u32 {
+        self.vertices.len() as u32
+    }
+
+    pub fn clear(&mut self) {
+        self.vertices.clear();
+        self.indices.clear();
+    }
+
+    /// Appends `other`, shifting its indices.
+    pub fn append(&mut self, other: &Mesh) {
+        let base = self.next_index();
+        self.vertices.extend_from_slice(&other.vertices);
+        self.indices.extend(other.indices.iter().map(|i| i + base));
+    }
+
+    /// Pushes the two triangles of a quad a-b-c-d (in order around it); `flip` reverses them.
+    pub fn quad(&mut self, [a, b, c, d]: [u32; 4], flip: bool) {
+        if flip {
+            self.indices.extend_from_slice(&[a, c, b, a, d, c]);
+        } else {
+            self.indices.extend_from_slice(&[a, b, c, a, c, d]);
+        }
+    }
+
+    /// Pushes one triangle; `flip` reverses it.
+    pub fn triangle(&mut self, [a, b, c]: [u32; 3], flip: bool) {
+        if flip {
+            self.indices.extend_from_slice(&[a, c, b]);
+        } else {
+            self.indices.extend_from_slice(&[a, b, c]);
+        }
+    }
+
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+}
+
+/// Sizes a mesh reaches when fully grown, so buffers can be allocated once.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Capacity {
+    pub vertices: usize,
+    pub indices: usize,
+}
+
+/// An axis-aligned bounding box.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounds {
+    pub min: DVec3,
+    pub max: DVec3,
+}
+
+impl Bounds {
+    pub const EMPTY: Bounds = Bounds {
+        min: DVec3::splat(f64::INFINITY),
+        max: DVec3::splat(f64::NEG_INFINITY),
+    };
+
+    pub fn include(&mut self, p: DVec3) {
+        self.min = self.min.min(p);
+        self.max = self.max.max(p);
+    }
+
+    pub fn center(&self) -> DVec3 {
+        (self.min + self.max) * 0.5
+    }
+
+    /// Radius of the sphere around the centre that holds the box.
+    pub fn radius(&self) -> f64 {
+        (self.max - self.min).length() * 0.5
+    }
+}

@@ -1,0 +1,502 @@
+//! The one renderer: wgpu on WebGPU when the browser has an adapter, WebGL2 otherwise. It only
+//! moves data: the mesh and pattern rows that the generator adds, the camera's matrices.
+
+mod pattern_texture;
+mod shell_buffers;
+
+use crate::camera::{OrbitCamera, display_from_shell};
+use crate::generator::Advance;
+use crate::mesh::{Capacity, Mesh, Vertex};
+use crate::spec::Colours;
+use crate::texture_layout::TextureLayout;
+use bytemuck::{Pod, Zeroable};
+use pattern_texture::PatternTexture;
+use shell_buffers::MeshBuffers;
+use std::sync::{Arc, Mutex};
+
+/// MSAA samples when the format allows them.
+const SAMPLES: u32 = 4;
+const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
+
+/// The uniform block of shaders/shell.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct Globals {
+    view_proj: [[f32; 4]; 4],
+    model: [[f32; 4]; 4],
+    eye: [f32; 4],
+    ground: [f32; 4],
+    interior: [f32; 4],
+    pattern: [f32; 4],
+    options: [f32; 4],
+}
+
+/// What the shader needs to know about the shell being drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShellLook {
+    pub ground: glam::Vec3,
+    pub interior: glam::Vec3,
+    /// Pattern rows per whorl, for the darkening inside the opening.
+    pub rows_per_whorl: f32,
+}
+
+impl ShellLook {
+    pub fn new(colours: &Colours, rows_per_whorl: f64) -> Self {
+        Self {
+            ground: colours.ground.linear().into(),
+            interior: colours.interior.linear().into(),
+            rows_per_whorl: rows_per_whorl as f32,
+        }
+    }
+}
+
+/// The buffers of one shell.
+struct Shell {
+    mesh: MeshBuffers,
+    edge: MeshBuffers,
+    pattern: Option<PatternTexture>,
+    look: ShellLook,
+    rows_grown: u32,
+    bind_group: wgpu::BindGroup,
+}
+
+/// Render targets that follow the canvas size.
+struct Targets {
+    depth: wgpu::TextureView,
+    msaa: Option<wgpu::TextureView>,
+}
+
+/// The renderer of one canvas.
+pub struct Renderer {
+    surface: wgpu::Surface<'static>,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    config: wgpu::SurfaceConfiguration,
+    backend: &'static str,
+    samples: u32,
+    encode_srgb: bool,
+    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    uniforms: wgpu::Buffer,
+    blank: PatternTexture,
+    targets: Targets,
+    shell: Option<Shell>,
+    background: wgpu::Color,
+    failure: Arc<Mutex<Option<String>>>,
+}
+
+fn create_targets(
+    device: &wgpu::Device,
+    config: &wgpu::SurfaceConfiguration,
+    samples: u32,
+) -> Targets {
+    let texture = |label, format, sample_count| {
+        device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d {
+                    width: config.width,
+                    height: config.height,
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                view_formats: &[],
+            })
+            .create_view(&wgpu::TextureViewDescriptor::default())
+    };
+    Targets {
+        depth: texture("depth", DEPTH_FORMAT, samples),
+        msaa: (samples > 1).then(|| texture("msaa", config.format, samples)),
+    }
+}
+
+impl Renderer {
+    /// Sets up wgpu on the canvas: WebGPU if an adapter comes, WebGL2 otherwise.
+    pub async fn new(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
+        let (width, height) = (canvas.width().max(1), canvas.height().max(1));
+        let instance = wgpu::util::new_instance_with_webgpu_detection(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        })
+        .await;
+        let surface = instance
+            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+            .map_err(|e| {
+                format!("This browser offers neither WebGPU nor WebGL2 on this page ({e}).")
+            })?;
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                force_fallback_adapter: false,
+                compatible_surface: Some(&surface),
+                apply_limit_buckets: false,
+            })
+            .await
+            .map_err(|e| {
+                format!(
+                    "No graphics adapter is available: neither WebGPU nor WebGL2 works here ({e})."
+                )
+            })?;
+        let backend = match adapter.get_info().backend {
+            wgpu::Backend::BrowserWebGpu => "WebGPU",
+            _ => "WebGL2",
+        };
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("seashells"),
+                required_features: wgpu::Features::empty(),
+                required_limits: wgpu::Limits::downlevel_webgl2_defaults()
+                    .using_resolution(adapter.limits()),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| format!("The {backend} device could not be opened ({e})."))?;
+        let failure = Arc::new(Mutex::new(None));
+        let lost = Arc::clone(&failure);
+        device.set_device_lost_callback(move |reason, message| {
+            if let Ok(mut slot) = lost.lock() {
+                *slot = Some(format!("The graphics device was lost ({reason:?}: {message}). Reload the page to continue."));
+            }
+        });
+        let errors = Arc::clone(&failure);
+        device.on_uncaptured_error(Arc::new(move |error| {
+            if let Ok(mut slot) = errors.lock() {
+                slot.get_or_insert_with(|| {
+                    format!("The graphics device reported an error: {error}")
+                });
+            }
+        }));
+        let caps = surface.get_capabilities(&adapter);
+        let format = caps
+            .formats
+            .iter()
+            .copied()
+            .find(|f| {
+                matches!(
+                    f,
+                    wgpu::TextureFormat::Rgba8UnormSrgb | wgpu::TextureFormat::Bgra8UnormSrgb
+                )
+            })
+            .or_else(|| {
+                caps.formats.iter().copied().find(|f| {
+                    matches!(
+                        f,
+                        wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Bgra8Unorm
+                    )
+                })
+            })
+            .ok_or_else(|| {
+                format!(
+                    "The canvas offers no 8-bit colour format ({:?}).",
+                    caps.formats
+                )
+            })?;
+        let config = wgpu::SurfaceConfiguration {
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            format,
+            color_space: wgpu::SurfaceColorSpace::Auto,
+            width,
+            height,
+            present_mode: wgpu::PresentMode::Fifo,
+            desired_maximum_frame_latency: 2,
+            alpha_mode: caps.alpha_modes[0],
+            view_formats: vec![],
+        };
+        surface.configure(&device, &config);
+        let samples = if adapter
+            .get_texture_format_features(format)
+            .flags
+            .sample_count_supported(SAMPLES)
+        {
+            SAMPLES
+        } else {
+            1
+        };
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("shell"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/shell.wgsl").into()),
+        });
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shell"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("shell"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let attributes =
+            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32];
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("shell"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &attributes,
+                })],
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleList,
+                front_face: wgpu::FrontFace::Ccw,
+                cull_mode: None,
+                ..Default::default()
+            },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: wgpu::MultisampleState {
+                count: samples,
+                ..Default::default()
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("globals"),
+            size: size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let blank = PatternTexture::new(&device, TextureLayout::new(1, 1).expect("1×1 fits"));
+        let targets = create_targets(&device, &config, samples);
+        Ok(Self {
+            encode_srgb: !format.is_srgb(),
+            surface,
+            device,
+            queue,
+            config,
+            backend,
+            samples,
+            pipeline,
+            layout,
+            uniforms,
+            blank,
+            targets,
+            shell: None,
+            background: wgpu::Color::BLACK,
+            failure,
+        })
+    }
+
+    /// "WebGPU" or "WebGL2".
+    pub fn backend(&self) -> &'static str {
+        self.backend
+    }
+
+    /// A device loss or error reported since the start, in words.
+    pub fn failure(&self) -> Option<String> {
+        self.failure.lock().ok().and_then(|f| f.clone())
+    }
+
+    /// The clear colour, as sRGB bytes; written as is to a target that does not encode sRGB.
+    pub fn set_background(&mut self, srgb: [u8; 3]) {
+        let [r, g, b] = if self.encode_srgb {
+            srgb.map(|c| f64::from(c) / 255.0)
+        } else {
+            crate::spec::colour::Rgb(srgb).linear().map(f64::from)
+        };
+        self.background = wgpu::Color { r, g, b, a: 1.0 };
+    }
+
+    /// Follows the canvas size in device pixels.
+    pub fn resize(&mut self, width: u32, height: u32) {
+        let (width, height) = (width.max(1), height.max(1));
+        if (width, height) != (self.config.width, self.config.height) {
+            self.config.width = width;
+            self.config.height = height;
+            self.surface.configure(&self.device, &self.config);
+            self.targets = create_targets(&self.device, &self.config, self.samples);
+        }
+    }
+
+    /// Allocates the buffers of a new shell at its final size; `pattern` is its texture layout
+    /// when it has a pattern.
+    pub fn load_shell(
+        &mut self,
+        capacity: (Capacity, Capacity),
+        pattern: Option<TextureLayout>,
+        look: ShellLook,
+    ) {
+        let pattern = pattern.map(|layout| PatternTexture::new(&self.device, layout));
+        let view = &pattern.as_ref().unwrap_or(&self.blank).view;
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shell"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: self.uniforms.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(view),
+                },
+            ],
+        });
+        self.shell = Some(Shell {
+            mesh: MeshBuffers::new(&self.device, capacity.0, "mesh"),
+            edge: MeshBuffers::new(&self.device, capacity.1, "edge"),
+            pattern,
+            look,
+            rows_grown: 0,
+            bind_group,
+        });
+    }
+
+    /// Uploads what the generator just added: new mesh ranges, the edge, new pattern rows
+    /// (`rgba` holds the rows of `advance.rows`).
+    pub fn upload(&mut self, mesh: &Mesh, edge: &Mesh, advance: &Advance, rgba: &[u8]) {
+        let Some(shell) = self.shell.as_mut() else {
+            return;
+        };
+        shell.mesh.write(
+            &self.queue,
+            mesh,
+            advance.vertices.clone(),
+            advance.indices.clone(),
+        );
+        if advance.edge_changed {
+            shell.edge.replace(&self.queue, edge);
+        }
+        if let Some(pattern) = &shell.pattern {
+            if !rgba.is_empty() {
+                pattern.write_rows(&self.queue, advance.rows.start as u32, rgba);
+            }
+        }
+        shell.rows_grown = advance.rows.end as u32;
+    }
+
+    /// Draws one frame.
+    pub fn draw(&mut self, camera: &OrbitCamera) -> Result<(), String> {
+        let frame = match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(frame)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
+            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
+                return Ok(());
+            }
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                self.surface.configure(&self.device, &self.config);
+                return Ok(());
+            }
+            other => return Err(format!("The canvas could not be drawn on ({other:?}).")),
+        };
+        let view = frame
+            .texture
+            .create_view(&wgpu::TextureViewDescriptor::default());
+        let aspect = self.config.width as f32 / self.config.height as f32;
+        if let Some(shell) = &self.shell {
+            let (cells, block_rows, patterned) = match &shell.pattern {
+                Some(p) => (p.layout.cells, p.layout.block_rows, 1.0),
+                None => (1, 1, 0.0),
+            };
+            let globals = Globals {
+                view_proj: camera.view_projection(aspect).to_cols_array_2d(),
+                model: display_from_shell().to_cols_array_2d(),
+                eye: camera.eye().extend(1.0).to_array(),
+                ground: shell.look.ground.extend(1.0).to_array(),
+                interior: shell.look.interior.extend(1.0).to_array(),
+                pattern: [
+                    cells as f32,
+                    shell.rows_grown as f32,
+                    block_rows as f32,
+                    patterned,
+                ],
+                options: [
+                    if self.encode_srgb { 1.0 } else { 0.0 },
+                    shell.look.rows_per_whorl,
+                    0.0,
+                    0.0,
+                ],
+            };
+            self.queue
+                .write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&globals));
+        }
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("frame"),
+            });
+        {
+            let (target, resolve) = match &self.targets.msaa {
+                Some(msaa) => (msaa, Some(&view)),
+                None => (&view, None),
+            };
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("shell"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: target,
+                    depth_slice: None,
+                    resolve_target: resolve,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(self.background),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &self.targets.depth,
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Discard,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            if let Some(shell) = &self.shell {
+                pass.set_pipeline(&self.pipeline);
+                pass.set_bind_group(0, &shell.bind_group, &[]);
+                shell.mesh.draw(&mut pass);
+                shell.edge.draw(&mut pass);
+            }
+        }
+        self.queue.submit([encoder.finish()]);
+        self.queue.present(frame);
+        Ok(())
+    }
+}

@@ -1,0 +1,80 @@
+//! GPU buffers sized once for the fully grown shell; each frame writes only what it adds.
+
+use crate::mesh::{Capacity, Mesh, Vertex};
+use std::ops::Range;
+
+/// A vertex buffer and an index buffer allocated for a mesh's final size.
+pub struct MeshBuffers {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+}
+
+fn bytes(count: usize, size: usize) -> u64 {
+    // Never zero: an empty buffer cannot be bound.
+    (count.max(4) * size) as u64
+}
+
+impl MeshBuffers {
+    pub fn new(device: &wgpu::Device, capacity: Capacity, label: &str) -> Self {
+        let vertices = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: bytes(capacity.vertices, size_of::<Vertex>()),
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let indices = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: bytes(capacity.indices, size_of::<u32>()),
+            usage: wgpu::BufferUsages::INDEX | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        Self {
+            vertices,
+            indices,
+            index_count: 0,
+        }
+    }
+
+    /// Writes the given ranges of `mesh` at the same places in the buffers.
+    pub fn write(
+        &mut self,
+        queue: &wgpu::Queue,
+        mesh: &Mesh,
+        vertices: Range<usize>,
+        indices: Range<usize>,
+    ) {
+        if !vertices.is_empty() {
+            let offset = (vertices.start * size_of::<Vertex>()) as u64;
+            queue.write_buffer(
+                &self.vertices,
+                offset,
+                bytemuck::cast_slice(&mesh.vertices[vertices]),
+            );
+        }
+        if !indices.is_empty() {
+            let offset = (indices.start * size_of::<u32>()) as u64;
+            queue.write_buffer(
+                &self.indices,
+                offset,
+                bytemuck::cast_slice(&mesh.indices[indices.clone()]),
+            );
+            self.index_count = indices.end as u32;
+        }
+    }
+
+    /// Replaces the whole content (for the small transient edge mesh).
+    pub fn replace(&mut self, queue: &wgpu::Queue, mesh: &Mesh) {
+        self.write(queue, mesh, 0..mesh.vertices.len(), 0..mesh.indices.len());
+        self.index_count = mesh.indices.len() as u32;
+    }
+
+    pub fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>) {
+        if self.index_count == 0 {
+            return;
+        }
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..self.index_count, 0, 0..1);
+    }
+}

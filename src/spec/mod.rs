@@ -1,0 +1,56 @@
+//! The whole shareable parameter set of a shell: one type, [`ShellSpec`], read from preset files
+//! and links, validated before anything is built from it.
+
+pub mod colour;
+pub mod form;
+pub mod pattern;
+
+use colour::Rgb;
+use form::Form;
+use pattern::PatternSpec;
+use serde::{Deserialize, Serialize};
+
+/// Everything needed to grow one shell, exactly.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ShellSpec {
+    /// The shape and the model that builds it.
+    pub form: Form,
+    /// The pigmentation model computed on the growing edge.
+    pub pattern: PatternSpec,
+    pub colours: Colours,
+    pub growth: GrowthSpec,
+    /// Seed of every random choice (the pattern's fluctuations and starting cells).
+    pub seed: u64,
+}
+
+/// How the shell is painted.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Colours {
+    /// The shell where there is no pigment.
+    pub ground: Rgb,
+    /// The pigment at full concentration.
+    pub pigment: Rgb,
+    /// The inside of the wall and the lip.
+    pub interior: Rgb,
+}
+
+/// The growth clock: how long the shell grows, and how fast it is shown.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GrowthSpec {
+    /// Length of the growth in pattern rows (time steps of the growing edge), apex to opening.
+    pub rows: u32,
+    /// Rows grown per animation frame.
+    pub speed: f64,
+}
+
+impl ShellSpec {
+    /// Pattern rows per turn of the shell, for shading depth inside the opening.
+    pub fn rows_per_whorl(&self) -> f64 {
+        match &self.form {
+            Form::Sweep(s) => f64::from(self.growth.rows) / s.spiral.whorls.max(1e-3),
+        }
+    }
+}

@@ -1,0 +1,46 @@
+//! The page around the canvas: status text, messages in words, and the data attributes on
+//! <body> that tests and scripts read (`data-state`, `data-backend`, `data-rows`).
+
+use wasm_bindgen::JsCast;
+use web_sys::{Document, HtmlElement};
+
+/// The document, which a page served to a browser always has.
+pub fn document() -> Document {
+    web_sys::window()
+        .and_then(|w| w.document())
+        .expect("a browser page has a document")
+}
+
+/// The element with this id, as an `HtmlElement`.
+pub fn element(id: &str) -> Option<HtmlElement> {
+    document().get_element_by_id(id)?.dyn_into().ok()
+}
+
+/// Sets `data-<key>` on <body>.
+pub fn signal(key: &str, value: &str) {
+    if let Some(body) = document().body() {
+        // A dataset write cannot fail for a plain lowercase key.
+        let _ = body.dataset().set(key, value);
+    }
+}
+
+/// Sets an element's text (never HTML).
+pub fn set_text(id: &str, text: &str) {
+    if let Some(e) = element(id) {
+        e.set_text_content(Some(text));
+    }
+}
+
+/// Shows a message in words in the page's alert area.
+pub fn show_message(text: &str) {
+    if let Some(e) = element("message") {
+        e.set_text_content(Some(text));
+        e.set_hidden(false);
+    }
+}
+
+/// Shows an error that stops the shell from being drawn, and marks the page as failed.
+pub fn show_error(text: &str) {
+    show_message(text);
+    signal("state", "error");
+}

@@ -1,0 +1,75 @@
+// Headless Chromium (Debian's, driven by playwright-core) with the flags that give each
+// graphics backend on these machines (see ../shared/TOOLCHAIN.md), and helpers that read the
+// page's own signals and its pixels.
+import { chromium } from 'playwright-core';
+
+const COMMON = [
+  '--no-sandbox', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync', '--disable-quic',
+];
+
+/** Flags per backend: WebGL2 through SwiftShader's GL, WebGPU through SwiftShader's Vulkan. */
+export const BACKENDS = {
+  WebGL2: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  WebGPU: [
+    '--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-angle=swiftshader',
+    '--use-vulkan=swiftshader', '--enable-unsafe-swiftshader',
+  ],
+};
+
+/** Launches Chromium for `backend` ("WebGL2" or "WebGPU"). */
+export function launch(backend) {
+  return chromium.launch({
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    args: [...COMMON, ...BACKENDS[backend]],
+  });
+}
+
+/** Opens `url` in a new page, collecting console errors and uncaught exceptions. */
+export async function open(browser, url, viewport = { width: 900, height: 700 }) {
+  const page = await browser.newPage({ viewport });
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(url);
+  return { page, errors };
+}
+
+/** Waits until <body data-state> is one of `states` (the page's own signal). */
+export async function waitForState(page, states, timeout = 120_000) {
+  await page.waitForFunction(
+    (wanted) => wanted.includes(document.body.dataset.state),
+    states,
+    { timeout },
+  );
+  return page.evaluate(() => ({ ...document.body.dataset }));
+}
+
+/**
+ * Reads the canvas's pixels from a screenshot and measures them against the background
+ * colour (the top-left pixel): the share of pixels that differ, and how many distinct shades
+ * (colours quantised to 4 bits a channel) the differing ones have.
+ */
+export async function measureCanvas(page, file) {
+  const canvas = page.locator('#shell');
+  const png = await canvas.screenshot({ path: file });
+  return page.evaluate(async (bytes) => {
+    const blob = new Blob([new Uint8Array(bytes)], { type: 'image/png' });
+    const bitmap = await createImageBitmap(blob);
+    const c = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const g = c.getContext('2d');
+    g.drawImage(bitmap, 0, 0);
+    const { data } = g.getImageData(0, 0, bitmap.width, bitmap.height);
+    const bg = [data[0], data[1], data[2]];
+    let differing = 0;
+    const shades = new Set();
+    for (let i = 0; i < data.length; i += 4) {
+      const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
+      if (d > 24) {
+        differing += 1;
+        shades.add(((data[i] >> 4) << 8) | ((data[i + 1] >> 4) << 4) | (data[i + 2] >> 4));
+      }
+    }
+    return { share: differing / (data.length / 4), shades: shades.size, width: bitmap.width, height: bitmap.height };
+  }, [...png]);
+}
