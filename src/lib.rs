@@ -11,6 +11,7 @@ pub mod spec;
 pub mod species;
 pub mod texture_layout;
 
+pub mod export;
 #[cfg(target_arch = "wasm32")]
 pub mod render;
 #[cfg(target_arch = "wasm32")]

@@ -7,6 +7,9 @@ use std::sync::OnceLock;
 
 include!(concat!(env!("OUT_DIR"), "/species.rs"));
 
+/// The preset shown when a link names none.
+pub const DEFAULT_PRESET: &str = "turbinate";
+
 /// Where a preset comes from, which groups the gallery.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -28,6 +28,15 @@ impl TextureLayout {
         })
     }
 
+    /// The most rows a pattern of `cells` cells can have (none when cells do not fit a row).
+    pub fn max_rows(cells: u32) -> u32 {
+        if cells == 0 || cells > MAX_SIDE {
+            0
+        } else {
+            MAX_SIDE / cells * MAX_SIDE
+        }
+    }
+
     /// Width and height of the texture.
     pub fn size(&self) -> (u32, u32) {
         (
@@ -87,6 +96,11 @@ mod tests {
         assert!(TextureLayout::new(2049, 10).is_none());
         assert!(TextureLayout::new(2048, 2049).is_none());
         assert!(TextureLayout::new(0, 10).is_none());
+        for cells in [1, 100, 700, 2048] {
+            let rows = TextureLayout::max_rows(cells);
+            assert!(TextureLayout::new(cells, rows).is_some());
+            assert!(TextureLayout::new(cells, rows + 1).is_none());
+        }
     }
 
     #[test]

@@ -132,6 +132,7 @@ impl Sweep {
                 .map(|i| curve.s_max() * i as f64 / n as f64)
                 .collect()
         };
+        // On a closed curve s wraps, so the last point (s_max) is the first (0) bit for bit.
         let sample = |s: f64| {
             let s = if curve.is_closed() {
                 s.rem_euclid(curve.s_max())

@@ -4,8 +4,8 @@
 //! With a wall thickness the shell is a closed solid: an inner surface under the outer one,
 //! joined by a lip strip at the growing edge (rewritten each step), by caps at the apex, and for
 //! an open generating curve by side strips along its two ends. A closed curve repeats its first
-//! point as its last (same position, bit for bit) so that the pattern coordinate can run from 0
-//! to 1 while the solid stays watertight.
+//! point as its last (the same position, bit for bit) so that the pattern coordinate can run
+//! from 0 to 1 while the solid stays watertight.
 
 use super::helico_spiral::SpiralWalk;
 use super::sweep::{GeometryError, Rim, Sweep};
@@ -77,7 +77,8 @@ impl SweepMesh {
         ((self.sweep.orientation() < 0.0) == outwards) != self.sweep.is_sinistral()
     }
 
-    /// Pushes a ring of rim points (outer or inner), closing the seam bit for bit.
+    /// Pushes a ring of rim points (outer or inner). On a closed curve the last point is
+    /// sampled at s = 0 again (see [`Sweep`]), so the seam closes bit for bit.
     fn push_ring(
         &self,
         mesh: &mut Mesh,
@@ -89,12 +90,6 @@ impl SweepMesh {
         let row = rim.t / self.sweep.step() * self.rows_per_rim;
         for (j, (p, n)) in ring.enumerate() {
             mesh.vertices.push(self.vertex(p, n, j, row, surface));
-        }
-        if self.sweep.is_closed() {
-            let last = mesh.vertices.len() - 1;
-            let first = mesh.vertices[base as usize];
-            mesh.vertices[last].position = first.position;
-            mesh.vertices[last].normal = first.normal;
         }
         base
     }

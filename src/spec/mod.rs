@@ -2,8 +2,11 @@
 //! and links, validated before anything is built from it.
 
 pub mod colour;
+pub mod fields;
 pub mod form;
+pub mod link;
 pub mod pattern;
+pub mod validate;
 
 use colour::Rgb;
 use form::Form;
@@ -17,6 +20,7 @@ pub struct ShellSpec {
     /// The shape and the model that builds it.
     pub form: Form,
     /// The pigmentation model computed on the growing edge.
+    #[serde(default)]
     pub pattern: PatternSpec,
     pub colours: Colours,
     pub growth: GrowthSpec,

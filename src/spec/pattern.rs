@@ -1,12 +1,47 @@
-//! The pigmentation part of a [`ShellSpec`](super::ShellSpec).
+//! The pigmentation part of a [`ShellSpec`](super::ShellSpec): the growing edge (cells,
+//! iterations per row, ends), how the recorded quantity becomes pigment, and the model.
 
 use serde::{Deserialize, Serialize};
 
 /// The pattern computed on the growing edge.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, default)]
 pub struct PatternSpec {
+    /// Cells along the growing edge.
+    pub cells: u32,
+    /// Model iterations (Δt = 1) per displayed row.
+    pub iterations: u32,
+    /// What happens at the two ends of the edge.
+    pub boundary: Boundary,
+    /// Recorded value shown as no pigment.
+    pub low: f64,
+    /// Recorded value shown as full pigment.
+    pub high: f64,
     pub model: Model,
+}
+
+impl Default for PatternSpec {
+    /// No pattern.
+    fn default() -> Self {
+        Self {
+            cells: 256,
+            iterations: 1,
+            boundary: Boundary::ZeroFlux,
+            low: 0.0,
+            high: 1.0,
+            model: Model::None,
+        }
+    }
+}
+
+/// Ends of the growing edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Boundary {
+    /// Nothing diffuses out of either end.
+    ZeroFlux,
+    /// The edge is a ring: the last cell neighbours the first.
+    Periodic,
 }
 
 /// The pattern model.
@@ -15,4 +50,81 @@ pub struct PatternSpec {
 pub enum Model {
     /// No pigmentation: the shell is painted in its ground colour.
     None,
+    /// Activator and substrate (Fowler et al. 1992, eq 8).
+    ActivatorSubstrate(ActivatorSubstrate),
+    /// Activator and inhibitor regulated by a hormone (Fowler et al. 1992, eq 9).
+    ActivatorInhibitor(ActivatorInhibitor),
+}
+
+/// Parameters of eq 8:
+/// ∂a/∂t = ρ s (a²/(1 + κa²) + ρ₀) − μa + D_a ∂²a/∂x²,
+/// ∂s/∂t = σ(x) − ρ s (a²/(1 + κa²) + ρ₀) − νs + D_s ∂²s/∂x².
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ActivatorSubstrate {
+    /// ρ: rate of the autocatalysis.
+    pub rho: f64,
+    /// Relative random fluctuation of ρ from cell to cell (0.025 is ±2.5 %).
+    pub rho_noise: f64,
+    /// ρ₀: base production of the activator.
+    pub rho0: f64,
+    /// μ: decay rate of the activator.
+    pub mu: f64,
+    /// D_a: diffusion of the activator.
+    pub d_a: f64,
+    /// σ (σ_max when modulated): production of the substrate.
+    pub sigma: f64,
+    /// Depth of the periodic modulation of σ along the edge, 0 (none) to 1.
+    pub sigma_depth: f64,
+    /// Period of the modulation of σ, in cells.
+    pub sigma_period: f64,
+    /// ν: decay rate of the substrate.
+    pub nu: f64,
+    /// D_s: diffusion of the substrate.
+    pub d_s: f64,
+    /// κ: saturation of the autocatalysis.
+    pub kappa: f64,
+    /// Activator concentration at the start.
+    pub a_init: f64,
+    /// Substrate concentration at the start.
+    pub s_init: f64,
+}
+
+/// Parameters of eq 9:
+/// ∂a/∂t = ρ/(h + h₀) (a²/(1 + κa²) + ρ₀) − μa + D_a ∂²a/∂x²,
+/// ∂h/∂t = σ + ρ a²/(1 + κa²) − (ν/c) h + D_h ∂²h/∂x²,
+/// dc/dt = ρ′ (mean of a along the edge) − ηc.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ActivatorInhibitor {
+    /// ρ: rate of the autocatalysis.
+    pub rho: f64,
+    /// Relative random fluctuation of ρ from cell to cell.
+    pub rho_noise: f64,
+    /// ρ₀: base production of the activator.
+    pub rho0: f64,
+    /// μ: decay rate of the activator.
+    pub mu: f64,
+    /// D_a: diffusion of the activator.
+    pub d_a: f64,
+    /// σ: base production of the inhibitor.
+    pub sigma: f64,
+    /// ν: decay rate of the inhibitor, divided by the hormone c.
+    pub nu: f64,
+    /// D_h: diffusion of the inhibitor.
+    pub d_h: f64,
+    /// ρ′: production of the hormone per unit of mean activator.
+    pub rho_c: f64,
+    /// η: decay rate of the hormone.
+    pub eta: f64,
+    /// h₀: inhibitor level that limits the activator's production when h is small.
+    pub h0: f64,
+    /// κ: saturation of the autocatalysis.
+    pub kappa: f64,
+    /// Activator concentration at the start.
+    pub a_init: f64,
+    /// Inhibitor concentration at the start.
+    pub h_init: f64,
+    /// Hormone concentration at the start.
+    pub c_init: f64,
 }

@@ -8,15 +8,12 @@ use crate::camera::OrbitCamera;
 use crate::generator::Generator;
 use crate::gestures::{Pointers, wheel_zoom};
 use crate::render::{Renderer, ShellLook};
-use crate::species;
+use crate::spec::link::{self, Decoded};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{HtmlCanvasElement, PointerEvent, WheelEvent};
-
-/// The preset shown when the link names none.
-const DEFAULT_PRESET: &str = "turbinate";
 
 /// Installs the panic hook: the console gets the full report, the page a sentence.
 #[wasm_bindgen(start)]
@@ -93,21 +90,20 @@ impl App {
     }
 }
 
-/// The preset named by the link's fragment (`#turbinate`), or the default.
-fn requested_preset() -> &'static species::Preset {
+/// The shell the link's fragment asks for; what could not be used is said on the page.
+fn requested_shell() -> Decoded {
     let hash = web_sys::window()
         .and_then(|w| w.location().hash().ok())
         .unwrap_or_default();
-    let id = hash.trim_start_matches('#');
-    if id.is_empty() {
-        return species::preset(DEFAULT_PRESET).expect("the default preset exists");
-    }
-    species::preset(id).unwrap_or_else(|| {
+    let decoded = link::decode(&hash);
+    if !decoded.problems.is_empty() {
+        let list: Vec<String> = decoded.problems.iter().map(ToString::to_string).collect();
         page::show_message(&format!(
-            "There is no preset called '{id}'; showing the {DEFAULT_PRESET} shell instead."
+            "Parts of this link could not be used: {}.",
+            list.join("; ")
         ));
-        species::preset(DEFAULT_PRESET).expect("the default preset exists")
-    })
+    }
+    decoded
 }
 
 /// Sets up the renderer and starts growing the shell the link asks for.
@@ -127,8 +123,8 @@ pub async fn start() -> Result<(), JsValue> {
     };
     page::signal("backend", renderer.backend());
     page::set_text("backend", &format!("Drawn with {}", renderer.backend()));
-    let preset = requested_preset();
-    let generator = match Generator::new(&preset.spec) {
+    let Decoded { preset, spec, .. } = requested_shell();
+    let generator = match Generator::new(&spec) {
         Ok(g) => g,
         Err(e) => {
             page::show_error(&format!("The shell '{}' cannot be built: {e}", preset.id));
@@ -142,7 +138,7 @@ pub async fn start() -> Result<(), JsValue> {
         renderer,
         pointers: Pointers::default(),
         canvas,
-        speed: preset.spec.growth.speed,
+        speed: spec.growth.speed,
         carry: 0.0,
         dirty: true,
         first_frame: true,
@@ -152,7 +148,7 @@ pub async fn start() -> Result<(), JsValue> {
     app.renderer.load_shell(
         app.generator.capacity(),
         None,
-        ShellLook::new(&preset.spec.colours, preset.spec.rows_per_whorl()),
+        ShellLook::new(&spec.colours, spec.rows_per_whorl()),
     );
     let grown = app.generator.grown();
     app.renderer

@@ -1,0 +1,552 @@
+//! The spec's description of its own fields: for every key of a [`ShellSpec`](super::ShellSpec)
+//! (its dotted path in the serialised form), the paper's symbol and name, the group it belongs
+//! to, and the range a value may take. Links are checked against it, and the editing panel is
+//! generated from it.
+
+/// Groups of the editing panel, in display order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Group {
+    Shape,
+    Curve,
+    Orientation,
+    Sculpture,
+    Wall,
+    Pattern,
+    Colours,
+    Growth,
+    Seed,
+}
+
+impl Group {
+    pub fn title(self) -> &'static str {
+        match self {
+            Group::Shape => "Shape",
+            Group::Curve => "Generating curve",
+            Group::Orientation => "Orientation",
+            Group::Sculpture => "Sculpture",
+            Group::Wall => "Wall and lip",
+            Group::Pattern => "Pattern model",
+            Group::Colours => "Colours",
+            Group::Growth => "Growth",
+            Group::Seed => "Seed",
+        }
+    }
+}
+
+/// What kind of value a field holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    /// A real number in [min, max]; `log` when a slider should move on a logarithmic scale.
+    Real {
+        min: f64,
+        max: f64,
+        log: bool,
+    },
+    /// A whole number in [min, max].
+    Integer {
+        min: u64,
+        max: u64,
+    },
+    Flag,
+    /// One of a fixed set of names.
+    Choice(&'static [&'static str]),
+    /// Six hexadecimal digits.
+    Colour,
+    /// A list of numbers (`width` > 1: a list of tuples of that many, written "a,b;c,d").
+    List {
+        width: usize,
+        integer: bool,
+    },
+    /// Free text, checked by the model that reads it.
+    Text,
+}
+
+/// One field.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Field {
+    /// Dotted path in the serialised spec. Keys under `pattern.model.` apply to every model
+    /// that has that parameter.
+    pub key: &'static str,
+    pub group: Group,
+    /// The paper's symbol, or "" where the paper has none.
+    pub symbol: &'static str,
+    pub name: &'static str,
+    pub kind: Kind,
+}
+
+const fn real(min: f64, max: f64) -> Kind {
+    Kind::Real {
+        min,
+        max,
+        log: false,
+    }
+}
+
+const fn log(min: f64, max: f64) -> Kind {
+    Kind::Real {
+        min,
+        max,
+        log: true,
+    }
+}
+
+const fn int(min: u64, max: u64) -> Kind {
+    Kind::Integer { min, max }
+}
+
+const fn f(
+    key: &'static str,
+    group: Group,
+    symbol: &'static str,
+    name: &'static str,
+    kind: Kind,
+) -> Field {
+    Field {
+        key,
+        group,
+        symbol,
+        name,
+        kind,
+    }
+}
+
+use Group::*;
+
+/// The largest diffusion per iteration that explicit Euler with Δt = Δx = 1 integrates
+/// stably: above it the discrete Laplacian amplifies the shortest wave.
+pub const MAX_DIFFUSION: f64 = 0.5;
+
+/// Every field of every form and model.
+pub const FIELDS: &[Field] = &[
+    f(
+        "form.kind",
+        Shape,
+        "",
+        "surface model",
+        Kind::Choice(&["sweep"]),
+    ),
+    f(
+        "form.spiral.delta_theta",
+        Shape,
+        "Δθ",
+        "angular step (degrees)",
+        real(0.5, 90.0),
+    ),
+    f(
+        "form.spiral.lambda_r",
+        Shape,
+        "λᵣ",
+        "radial growth per step",
+        log(0.8, 3.0),
+    ),
+    f(
+        "form.spiral.lambda_z",
+        Shape,
+        "λ_z",
+        "axial growth per step",
+        log(0.8, 3.0),
+    ),
+    f(
+        "form.spiral.r0",
+        Shape,
+        "r₀",
+        "distance from the axis at the apex",
+        real(0.0, 10.0),
+    ),
+    f(
+        "form.spiral.z0",
+        Shape,
+        "z₀",
+        "height along the axis at the apex",
+        real(-10.0, 10.0),
+    ),
+    f(
+        "form.spiral.whorls",
+        Shape,
+        "t_max/2π",
+        "whorls",
+        real(0.05, 30.0),
+    ),
+    f(
+        "form.spiral.subdivisions",
+        Shape,
+        "",
+        "rims per step",
+        int(1, 16),
+    ),
+    f(
+        "form.spiral.handedness",
+        Shape,
+        "",
+        "coiling",
+        Kind::Choice(&["dextral", "sinistral"]),
+    ),
+    f(
+        "form.curve.points",
+        Curve,
+        "𝓒",
+        "Bézier control points (u,v,w)",
+        Kind::List {
+            width: 3,
+            integer: false,
+        },
+    ),
+    f("form.curve.closed", Curve, "", "closed curve", Kind::Flag),
+    f(
+        "form.curve.lambda_c",
+        Curve,
+        "λ_c",
+        "growth of the curve per step",
+        log(0.8, 3.0),
+    ),
+    f(
+        "form.curve.segments",
+        Curve,
+        "n",
+        "segments per rim",
+        int(3, 512),
+    ),
+    f(
+        "form.curve.reparametrize",
+        Curve,
+        "",
+        "equal arc lengths (eqs 4–7)",
+        Kind::Flag,
+    ),
+    f(
+        "form.orientation.frame",
+        Orientation,
+        "",
+        "reference frame",
+        Kind::Choice(&["axis_aligned", "frenet"]),
+    ),
+    f(
+        "form.orientation.rotate_e1",
+        Orientation,
+        "e₁",
+        "rotation about the tangent (degrees)",
+        real(-180.0, 180.0),
+    ),
+    f(
+        "form.orientation.rotate_e2",
+        Orientation,
+        "e₂",
+        "rotation about the normal (degrees)",
+        real(-180.0, 180.0),
+    ),
+    f(
+        "form.orientation.rotate_e3",
+        Orientation,
+        "e₃",
+        "rotation about the binormal (degrees)",
+        real(-180.0, 180.0),
+    ),
+    f(
+        "form.sculpture.growth_ribs.amplitude",
+        Sculpture,
+        "d",
+        "ribs along growth: height",
+        real(-0.5, 0.5),
+    ),
+    f(
+        "form.sculpture.growth_ribs.count",
+        Sculpture,
+        "",
+        "ribs along growth: number across the curve",
+        real(0.0, 200.0),
+    ),
+    f(
+        "form.sculpture.growth_ribs.sharpness",
+        Sculpture,
+        "",
+        "ribs along growth: sharpness",
+        log(0.25, 64.0),
+    ),
+    f(
+        "form.sculpture.growth_ribs.drift",
+        Sculpture,
+        "",
+        "ribs along growth: phase drift per whorl (oblique ribs)",
+        real(-20.0, 20.0),
+    ),
+    f(
+        "form.sculpture.growth_ribs.frequency_change",
+        Sculpture,
+        "",
+        "ribs along growth: frequency factor per whorl",
+        log(0.2, 5.0),
+    ),
+    f(
+        "form.sculpture.curve_ribs.amplitude",
+        Sculpture,
+        "d",
+        "ribs along the curve: height",
+        real(-0.5, 0.5),
+    ),
+    f(
+        "form.sculpture.curve_ribs.count",
+        Sculpture,
+        "",
+        "ribs along the curve: number per whorl",
+        real(0.0, 400.0),
+    ),
+    f(
+        "form.sculpture.curve_ribs.sharpness",
+        Sculpture,
+        "",
+        "ribs along the curve: sharpness",
+        log(0.25, 64.0),
+    ),
+    f(
+        "form.sculpture.curve_ribs.drift",
+        Sculpture,
+        "",
+        "ribs along the curve: phase drift per whorl",
+        real(-20.0, 20.0),
+    ),
+    f(
+        "form.sculpture.curve_ribs.frequency_change",
+        Sculpture,
+        "",
+        "ribs along the curve: frequency factor per whorl",
+        log(0.2, 5.0),
+    ),
+    f(
+        "form.wall.thickness",
+        Wall,
+        "",
+        "wall thickness (relative to the curve)",
+        real(0.0, 0.5),
+    ),
+    f(
+        "form.wall.lip_length",
+        Wall,
+        "",
+        "lip length (degrees before the opening)",
+        real(0.0, 720.0),
+    ),
+    f(
+        "form.wall.lip_flare",
+        Wall,
+        "",
+        "lip flare (extra size at the opening)",
+        real(-0.5, 2.0),
+    ),
+    f(
+        "form.wall.lip_thickening",
+        Wall,
+        "",
+        "lip thickening (factor at the opening)",
+        log(0.5, 10.0),
+    ),
+    f(
+        "pattern.cells",
+        Pattern,
+        "",
+        "cells along the growing edge",
+        int(8, 2048),
+    ),
+    f(
+        "pattern.iterations",
+        Pattern,
+        "",
+        "iterations per row",
+        int(1, 5000),
+    ),
+    f(
+        "pattern.boundary",
+        Pattern,
+        "",
+        "ends of the edge",
+        Kind::Choice(&["zero_flux", "periodic"]),
+    ),
+    f(
+        "pattern.low",
+        Pattern,
+        "",
+        "value shown as no pigment",
+        real(-1000.0, 1000.0),
+    ),
+    f(
+        "pattern.high",
+        Pattern,
+        "",
+        "value shown as full pigment",
+        real(-1000.0, 1000.0),
+    ),
+    f(
+        "pattern.model.kind",
+        Pattern,
+        "",
+        "model",
+        Kind::Choice(&["none", "activator_substrate", "activator_inhibitor"]),
+    ),
+    f(
+        "pattern.model.rho",
+        Pattern,
+        "ρ",
+        "autocatalysis rate",
+        log(1e-4, 10.0),
+    ),
+    f(
+        "pattern.model.rho_noise",
+        Pattern,
+        "",
+        "random fluctuation of ρ (fraction)",
+        real(0.0, 0.5),
+    ),
+    f(
+        "pattern.model.rho0",
+        Pattern,
+        "ρ₀",
+        "base production of the activator",
+        log(1e-6, 1.0),
+    ),
+    f(
+        "pattern.model.mu",
+        Pattern,
+        "μ",
+        "decay of the activator",
+        log(1e-5, 1.0),
+    ),
+    f(
+        "pattern.model.d_a",
+        Pattern,
+        "D_a",
+        "activator diffusion",
+        real(0.0, MAX_DIFFUSION),
+    ),
+    f(
+        "pattern.model.sigma",
+        Pattern,
+        "σ",
+        "substrate (inhibitor) production",
+        log(1e-6, 1.0),
+    ),
+    f(
+        "pattern.model.sigma_depth",
+        Pattern,
+        "",
+        "depth of the modulation of σ(x)",
+        real(0.0, 1.0),
+    ),
+    f(
+        "pattern.model.sigma_period",
+        Pattern,
+        "",
+        "period of σ(x) (cells)",
+        real(2.0, 4096.0),
+    ),
+    f(
+        "pattern.model.nu",
+        Pattern,
+        "ν",
+        "decay of the substrate (inhibitor)",
+        log(1e-6, 1.0),
+    ),
+    f(
+        "pattern.model.d_s",
+        Pattern,
+        "D_s",
+        "substrate diffusion",
+        real(0.0, MAX_DIFFUSION),
+    ),
+    f(
+        "pattern.model.d_h",
+        Pattern,
+        "D_h",
+        "inhibitor diffusion",
+        real(0.0, MAX_DIFFUSION),
+    ),
+    f(
+        "pattern.model.rho_c",
+        Pattern,
+        "ρ′",
+        "hormone production",
+        log(1e-4, 10.0),
+    ),
+    f(
+        "pattern.model.eta",
+        Pattern,
+        "η",
+        "hormone decay",
+        log(1e-5, 1.0),
+    ),
+    f(
+        "pattern.model.h0",
+        Pattern,
+        "h₀",
+        "inhibitor offset",
+        log(1e-4, 10.0),
+    ),
+    f(
+        "pattern.model.kappa",
+        Pattern,
+        "κ",
+        "saturation of the autocatalysis",
+        real(0.0, 100.0),
+    ),
+    f(
+        "pattern.model.a_init",
+        Pattern,
+        "a(0)",
+        "activator at the start",
+        real(0.0, 100.0),
+    ),
+    f(
+        "pattern.model.s_init",
+        Pattern,
+        "s(0)",
+        "substrate at the start",
+        real(0.0, 100.0),
+    ),
+    f(
+        "pattern.model.h_init",
+        Pattern,
+        "h(0)",
+        "inhibitor at the start",
+        real(0.0, 100.0),
+    ),
+    f(
+        "pattern.model.c_init",
+        Pattern,
+        "c(0)",
+        "hormone at the start",
+        real(0.0, 100.0),
+    ),
+    f("colours.ground", Colours, "", "shell ground", Kind::Colour),
+    f("colours.pigment", Colours, "", "pigment", Kind::Colour),
+    f(
+        "colours.interior",
+        Colours,
+        "",
+        "inside of the wall",
+        Kind::Colour,
+    ),
+    f(
+        "growth.rows",
+        Growth,
+        "",
+        "rows from apex to opening",
+        int(2, 20_000),
+    ),
+    f(
+        "growth.speed",
+        Growth,
+        "",
+        "rows per frame",
+        log(0.05, 200.0),
+    ),
+    f(
+        "seed",
+        Seed,
+        "",
+        "seed of the random choices",
+        int(0, u64::MAX),
+    ),
+];
+
+/// The description of a key.
+pub fn field(key: &str) -> Option<&'static Field> {
+    FIELDS.iter().find(|f| f.key == key)
+}

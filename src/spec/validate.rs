@@ -1,0 +1,108 @@
+//! Checks that involve several fields at once, and the caps that keep any spec within memory
+//! and time: each violation is repaired (from a fallback spec, usually the preset's own
+//! values) and reported as a [`Problem`] naming the key, the cap and what was used.
+
+use super::ShellSpec;
+use super::form::{CurveSpec, Form, SweepSpec};
+use super::link::Problem;
+use super::pattern::Model;
+use crate::texture_layout::TextureLayout;
+
+/// Most vertices a shell's mesh may have (72 MB of vertex data).
+pub const MAX_VERTICES: u64 = 2_000_000;
+/// Most cell updates (cells × rows × iterations) one pattern may take.
+pub const MAX_CELL_UPDATES: u64 = 4_000_000_000;
+
+/// Vertices of a sweep's mesh: rims × points per rim, doubled with a wall.
+fn sweep_vertices(s: &SweepSpec) -> u64 {
+    let rims = (s.spiral.whorls * 360.0 / s.spiral.delta_theta * f64::from(s.spiral.subdivisions))
+        .round() as u64
+        + 1;
+    let points = u64::from(s.curve.segments) + 1;
+    rims * points * if s.wall.thickness > 0.0 { 2 } else { 1 }
+}
+
+/// Whether the curve has the number of control points its closedness needs.
+fn curve_fits(curve: &CurveSpec) -> bool {
+    let n = curve.points.len();
+    if curve.closed {
+        n >= 3 && n % 3 == 0
+    } else {
+        n >= 4 && n % 3 == 1
+    }
+}
+
+/// Repairs every cross-field violation of `spec` from `fallback` and says what was done.
+pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    let (Form::Sweep(s), Form::Sweep(f)) = (&mut spec.form, &fallback.form);
+    if !curve_fits(&s.curve) {
+        let n = s.curve.points.len();
+        let need = if s.curve.closed {
+            "3k points (k ≥ 1)"
+        } else {
+            "3k + 1 points (k ≥ 1)"
+        };
+        problems.push(Problem::new(
+            "form.curve.points",
+            format!(
+                "a {} curve needs {need}, not {n}; used the preset's curve",
+                if s.curve.closed { "closed" } else { "open" }
+            ),
+        ));
+        s.curve.points = f.curve.points.clone();
+        s.curve.closed = f.curve.closed;
+    }
+    let vertices = sweep_vertices(s);
+    if vertices > MAX_VERTICES {
+        s.spiral.whorls = f.spiral.whorls;
+        s.spiral.delta_theta = f.spiral.delta_theta;
+        s.spiral.subdivisions = f.spiral.subdivisions;
+        s.curve.segments = f.curve.segments;
+        problems.push(Problem::new(
+            "form",
+            format!(
+                "the mesh would have {vertices} vertices, more than the cap of {MAX_VERTICES}; used the preset's whorls, angular step, rims per step and segments"
+            ),
+        ));
+    }
+    if spec.pattern.model != Model::None {
+        let cells = spec.pattern.cells;
+        if TextureLayout::new(cells, spec.growth.rows).is_none() {
+            let fit = TextureLayout::max_rows(cells);
+            problems.push(Problem::new(
+                "growth.rows",
+                format!(
+                    "{cells} cells × {} rows do not fit the pattern texture (2048 × 2048 texels); used {fit} rows",
+                    spec.growth.rows
+                ),
+            ));
+            spec.growth.rows = fit;
+        }
+        let updates =
+            u64::from(cells) * u64::from(spec.growth.rows) * u64::from(spec.pattern.iterations);
+        if updates > MAX_CELL_UPDATES {
+            let fit =
+                (MAX_CELL_UPDATES / (u64::from(cells) * u64::from(spec.growth.rows))).max(1) as u32;
+            problems.push(Problem::new(
+                "pattern.iterations",
+                format!(
+                    "cells × rows × iterations = {updates} cell updates, more than the cap of {MAX_CELL_UPDATES}; used {fit} iterations per row"
+                ),
+            ));
+            spec.pattern.iterations = fit;
+        }
+        if spec.pattern.low >= spec.pattern.high {
+            problems.push(Problem::new(
+                "pattern.low",
+                format!(
+                    "the value shown as no pigment ({}) must be below the one shown as full pigment ({}); used the preset's {} and {}",
+                    spec.pattern.low, spec.pattern.high, fallback.pattern.low, fallback.pattern.high
+                ),
+            ));
+            spec.pattern.low = fallback.pattern.low;
+            spec.pattern.high = fallback.pattern.high;
+        }
+    }
+    problems
+}

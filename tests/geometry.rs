@@ -1,0 +1,345 @@
+//! Properties of the swept shell (Fowler et al. 1992, §2) that must hold for any parameters:
+//! self-similarity, the Frenet frame, reparametrization, sculpture growing with the shell,
+//! mirror symmetry of dextral and sinistral shells, and watertight solids.
+#![cfg(not(target_arch = "wasm32"))]
+
+use glam::{DQuat, DVec3};
+use proptest::prelude::*;
+use seashells_core::export::stl;
+use seashells_core::generator::Generator;
+use seashells_core::geometry::frame::{Frame, FrameMode};
+use seashells_core::geometry::helico_spiral::HelicoSpiral;
+use seashells_core::geometry::sweep::Sweep;
+use seashells_core::mesh::Mesh;
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::form::{Form, Handedness, RibSpec, SweepSpec};
+use seashells_core::species::preset;
+use std::collections::HashMap;
+
+fn turbinate() -> ShellSpec {
+    preset("turbinate").expect("preset").spec.clone()
+}
+
+fn sweep_of(spec: &mut ShellSpec) -> &mut SweepSpec {
+    match &mut spec.form {
+        Form::Sweep(s) => s,
+    }
+}
+
+/// A self-similar shell: one λ for r, z and the curve, no sculpture, no lip.
+fn self_similar(lambda: f64, z0: f64, frame: FrameMode, rotations: [f64; 3]) -> SweepSpec {
+    let mut spec = turbinate();
+    let s = sweep_of(&mut spec);
+    s.spiral.lambda_r = lambda;
+    s.spiral.lambda_z = lambda;
+    s.curve.lambda_c = lambda;
+    s.spiral.z0 = z0;
+    s.spiral.whorls = 3.0;
+    s.orientation.frame = frame;
+    [
+        s.orientation.rotate_e1,
+        s.orientation.rotate_e2,
+        s.orientation.rotate_e3,
+    ] = rotations;
+    s.wall.lip_length = 0.0;
+    s.clone()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// Rim i + k is rim i turned by kΔθ about the axis and scaled by λᵏ about the origin.
+    #[test]
+    fn the_surface_maps_into_itself(
+        lambda in 1.001f64..1.08,
+        z0 in -3.0f64..3.0,
+        frenet in any::<bool>(),
+        rotations in prop::array::uniform3(-60.0f64..60.0),
+        i in 0usize..20,
+        k in 1usize..30,
+    ) {
+        let frame = if frenet { FrameMode::Frenet } else { FrameMode::AxisAligned };
+        let spec = self_similar(lambda, z0, frame, rotations);
+        let sweep = Sweep::new(&spec).unwrap();
+        let step = sweep.step();
+        let per_rim = sweep.lambda()[0];
+        let a = sweep.rim_at(i as f64 * step);
+        let b = sweep.rim_at((i + k) as f64 * step);
+        let turn = DQuat::from_rotation_z(k as f64 * step);
+        let scale = per_rim.powi(k as i32);
+        for (p, q) in a.points.iter().zip(&b.points) {
+            let mapped = turn * p.position * scale;
+            prop_assert!((mapped - q.position).length() < 1e-9 * q.position.length().max(1.0),
+                "{mapped} vs {}", q.position);
+            prop_assert!((turn * p.normal - q.normal).length() < 1e-6);
+        }
+    }
+
+    /// In Frenet mode, a planar curve lies in the plane normal to the spiral's tangent.
+    #[test]
+    fn frenet_rims_lie_in_the_normal_plane(lambda in 1.001f64..1.05, z0 in -2.0f64..2.0, t in 0.0f64..15.0) {
+        let spec = self_similar(lambda, z0, FrameMode::Frenet, [0.0; 3]);
+        let sweep = Sweep::new(&spec).unwrap();
+        let spiral = HelicoSpiral::from_step(spec.spiral.r0, z0, lambda, lambda, spec.spiral.delta_theta.to_radians());
+        let e1 = Frame::frenet(&spiral, t).e1;
+        let centre = spiral.point(t);
+        for p in &sweep.rim_at(t).points {
+            prop_assert!((p.position - centre).dot(e1).abs() < 1e-9 * centre.length().max(1.0));
+        }
+    }
+}
+
+#[test]
+fn reparametrized_rim_points_are_equally_spaced() {
+    let mut spec = turbinate();
+    let s = sweep_of(&mut spec);
+    // A lopsided closed curve whose parameter speed varies a lot.
+    s.curve.points = vec![
+        [0.4, 0.0, 0.0],
+        [0.4, 0.05, 0.0],
+        [0.05, 0.6, 0.0],
+        [0.0, 0.6, 0.0],
+        [-0.3, 0.6, 0.0],
+        [-0.3, -0.2, 0.0],
+        [0.0, -0.25, 0.0],
+        [0.3, -0.3, 0.0],
+        [0.4, -0.05, 0.0],
+    ];
+    s.curve.segments = 200;
+    for (reparametrize, bound) in [(true, 0.01), (false, f64::INFINITY)] {
+        s.curve.reparametrize = reparametrize;
+        let rim = Sweep::new(s).unwrap().rim_at(2.0);
+        let gaps: Vec<f64> = rim
+            .points
+            .windows(2)
+            .map(|w| w[0].position.distance(w[1].position))
+            .collect();
+        let mean = gaps.iter().sum::<f64>() / gaps.len() as f64;
+        let worst = gaps
+            .iter()
+            .map(|g| (g / mean - 1.0).abs())
+            .fold(0.0, f64::max);
+        if reparametrize {
+            assert!(worst < bound, "spacing varies by {worst}");
+        } else {
+            assert!(
+                worst > 0.3,
+                "the test curve should be uneven without reparametrization ({worst})"
+            );
+        }
+    }
+}
+
+#[test]
+fn rib_amplitude_grows_in_proportion_to_the_curve() {
+    let plain = self_similar(1.02, 1.5, FrameMode::Frenet, [0.0; 3]);
+    let mut ribbed = plain.clone();
+    ribbed.sculpture.growth_ribs = RibSpec {
+        amplitude: 0.08,
+        count: 10.0,
+        sharpness: 2.0,
+        ..RibSpec::NONE
+    };
+    let (a, b) = (Sweep::new(&plain).unwrap(), Sweep::new(&ribbed).unwrap());
+    let relief = |t: f64| {
+        let (p, q) = (a.rim_at(t), b.rim_at(t));
+        let size = 1.02f64.powf(t / plain.spiral.delta_theta.to_radians());
+        p.points
+            .iter()
+            .zip(&q.points)
+            .map(|(p, q)| p.position.distance(q.position))
+            .fold(0.0, f64::max)
+            / size
+    };
+    let (early, late) = (relief(1.0), relief(15.0));
+    assert!(early > 0.07 && early < 0.081, "relief {early}");
+    assert!(
+        (late / early - 1.0).abs() < 1e-6,
+        "relative relief {early} then {late}"
+    );
+}
+
+#[test]
+fn sinistral_shells_mirror_dextral_ones() {
+    let mut spec = turbinate();
+    let (mut left, mut right) = (Generator::new(&spec).unwrap(), None);
+    left.finish();
+    sweep_of(&mut spec).spiral.handedness = Handedness::Sinistral;
+    let mut g = Generator::new(&spec).unwrap();
+    g.finish();
+    right.replace(g);
+    let (a, b) = (left.mesh(), right.unwrap().mesh().clone());
+    assert_eq!(a.vertices.len(), b.vertices.len());
+    for (p, q) in a.vertices.iter().zip(&b.vertices) {
+        assert_eq!([p.position[0], -p.position[1], p.position[2]], q.position);
+        assert_eq!([p.normal[0], -p.normal[1], p.normal[2]], q.normal);
+    }
+    // Mirroring reverses the winding, so the triangles still face outwards.
+    for (s, t) in a.indices.chunks(3).zip(b.indices.chunks(3)) {
+        assert_eq!([s[0], s[2], s[1]], [t[0], t[1], t[2]]);
+    }
+}
+
+/// Directed edges by welded position; a closed, consistently oriented surface has each edge
+/// exactly once in each direction.
+fn directed_edges(mesh: &Mesh) -> HashMap<([u32; 3], [u32; 3]), usize> {
+    let key = |i: u32| mesh.vertices[i as usize].position.map(f32::to_bits);
+    let mut edges = HashMap::new();
+    for t in mesh.indices.chunks_exact(3) {
+        for (a, b) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+            *edges.entry((key(a), key(b))).or_insert(0) += 1;
+        }
+    }
+    edges
+}
+
+fn signed_volume(mesh: &Mesh) -> f64 {
+    let p = |i: u32| DVec3::from(mesh.vertices[i as usize].position.map(f64::from));
+    mesh.indices
+        .chunks_exact(3)
+        .map(|t| p(t[0]).dot(p(t[1]).cross(p(t[2]))) / 6.0)
+        .sum()
+}
+
+fn assert_closed_and_outward(spec: &ShellSpec, what: &str) {
+    let mut g = Generator::new(spec).unwrap();
+    g.finish();
+    let mesh = g.snapshot();
+    let edges = directed_edges(&mesh);
+    for (&(a, b), &count) in &edges {
+        assert_eq!(count, 1, "{what}: edge used {count} times in one direction");
+        assert_eq!(
+            edges.get(&(b, a)),
+            Some(&1),
+            "{what}: an edge has no opposite (a hole)"
+        );
+    }
+    assert!(signed_volume(&mesh) > 0.0, "{what}: triangles face inwards");
+}
+
+#[test]
+fn thick_walls_are_closed_solids_facing_outwards() {
+    for sinistral in [false, true] {
+        for closed in [true, false] {
+            let mut spec = turbinate();
+            let s = sweep_of(&mut spec);
+            s.spiral.whorls = 2.0;
+            s.wall.thickness = 0.06;
+            s.wall.lip_length = 90.0;
+            s.wall.lip_flare = 0.3;
+            s.wall.lip_thickening = 2.0;
+            s.sculpture.curve_ribs = RibSpec {
+                amplitude: 0.03,
+                count: 12.0,
+                ..RibSpec::NONE
+            };
+            // A count that does not divide the curve: the closed curve's seam must still close.
+            s.sculpture.growth_ribs = RibSpec {
+                amplitude: 0.02,
+                count: 7.5,
+                ..RibSpec::NONE
+            };
+            if sinistral {
+                s.spiral.handedness = Handedness::Sinistral;
+            }
+            if !closed {
+                s.curve.closed = false;
+                s.curve.points = vec![
+                    [0.0, -0.3, 0.0],
+                    [0.3, -0.3, 0.0],
+                    [0.3, 0.3, 0.0],
+                    [0.0, 0.3, 0.0],
+                ];
+            }
+            assert_closed_and_outward(&spec, &format!("closed {closed}, sinistral {sinistral}"));
+        }
+    }
+}
+
+#[test]
+fn the_exported_stl_of_a_closed_wall_is_watertight() {
+    let mut g = Generator::new(&turbinate()).unwrap();
+    g.finish();
+    let bytes = stl::write(&g.snapshot());
+    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
+    assert_eq!(bytes.len(), 84 + 50 * count);
+    let mut edges: HashMap<([u32; 3], [u32; 3]), usize> = HashMap::new();
+    for tri in bytes[84..].chunks_exact(50) {
+        let corner = |k: usize| {
+            let at = 12 + 12 * k;
+            [0, 4, 8].map(|o| u32::from_le_bytes(tri[at + o..at + o + 4].try_into().unwrap()))
+        };
+        let [a, b, c] = [corner(0), corner(1), corner(2)];
+        for (p, q) in [(a, b), (b, c), (c, a)] {
+            *edges
+                .entry(if p < q { (p, q) } else { (q, p) })
+                .or_insert(0) += 1;
+        }
+    }
+    assert!(
+        edges.values().all(|&n| n == 2),
+        "every edge of the STL is shared by exactly two triangles"
+    );
+}
+
+#[test]
+fn the_generator_hands_out_each_rim_once_whatever_the_chunks() {
+    let spec = turbinate();
+    let mut whole = Generator::new(&spec).unwrap();
+    whole.finish();
+    let mut pieces = Generator::new(&spec).unwrap();
+    let mut vertices = pieces.mesh().vertices.len();
+    let mut indices = pieces.mesh().indices.len();
+    let mut step = 1;
+    while !pieces.is_done() {
+        let advance = pieces.advance(step);
+        assert_eq!(
+            advance.vertices.start, vertices,
+            "new vertices start where the last ended"
+        );
+        assert_eq!(advance.indices.start, indices);
+        vertices = advance.vertices.end;
+        indices = advance.indices.end;
+        step = step % 7 + 1;
+    }
+    assert_eq!(pieces.mesh(), whole.mesh());
+    assert_eq!(pieces.edge(), whole.edge());
+    let (capacity, edge_capacity) = whole.capacity();
+    assert_eq!(whole.mesh().vertices.len(), capacity.vertices);
+    assert_eq!(whole.mesh().indices.len(), capacity.indices);
+    assert_eq!(whole.edge().vertices.len(), edge_capacity.vertices);
+    assert_eq!(whole.edge().indices.len(), edge_capacity.indices);
+    let Form::Sweep(s) = &spec.form;
+    let rims = (s.spiral.whorls * 360.0 / s.spiral.delta_theta * f64::from(s.spiral.subdivisions))
+        .round() as usize
+        + 1;
+    let points = s.curve.segments as usize + 1;
+    assert_eq!(
+        capacity.vertices,
+        2 * rims * points + 2,
+        "outer and inner rims plus two apex centres"
+    );
+}
+
+#[test]
+fn normals_are_unit_and_agree_with_the_triangles() {
+    let mut g = Generator::new(&turbinate()).unwrap();
+    g.finish();
+    let mesh = g.snapshot();
+    let mut agree = 0;
+    for t in mesh.indices.chunks_exact(3) {
+        let v = |k: usize| mesh.vertices[t[k] as usize];
+        let p = |k: usize| DVec3::from(v(k).position.map(f64::from));
+        let face = (p(1) - p(0)).cross(p(2) - p(0));
+        let n = DVec3::from(v(0).normal.map(f64::from));
+        assert!((n.length() - 1.0).abs() < 1e-5);
+        if face.dot(n) > 0.0 {
+            agree += 1;
+        }
+    }
+    let share = agree as f64 / mesh.triangle_count() as f64;
+    assert!(
+        share > 0.99,
+        "only {share} of triangles agree with their vertex normals"
+    );
+}

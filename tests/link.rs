@@ -1,0 +1,218 @@
+//! The link codec: decode(encode(spec)) == spec for every valid spec, encoding is canonical,
+//! and every kind of bad link gets a specific message while still giving a shell.
+#![cfg(not(target_arch = "wasm32"))]
+
+use proptest::prelude::*;
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::fields::{FIELDS, Kind};
+use seashells_core::spec::link::{MAX_LINK, decode, encode, flatten};
+use seashells_core::spec::validate::repair;
+use seashells_core::species::{DEFAULT_PRESET, presets};
+use serde_json::Value;
+
+/// A random valid spec: a preset with some fields set to random values in their ranges.
+fn perturbed(preset: usize, changes: &[(usize, f64)]) -> Option<(usize, ShellSpec)> {
+    let preset = preset % presets().len();
+    let base = &presets()[preset].spec;
+    let mut value = serde_json::to_value(base).unwrap();
+    for &(i, x) in changes {
+        let field = &FIELDS[i % FIELDS.len()];
+        if field.key.ends_with(".kind") {
+            continue;
+        }
+        let slot = field
+            .key
+            .split('.')
+            .try_fold(&mut value, |v, part| v.as_object_mut()?.get_mut(part));
+        let Some(slot) = slot else { continue };
+        *slot = match field.kind {
+            Kind::Real { min, max, .. } => serde_json::json!(min + x * (max - min)),
+            Kind::Integer { min, max } => {
+                let span = (max - min).min(1 << 40) as f64;
+                serde_json::json!(min + (x * span) as u64)
+            }
+            Kind::Flag => Value::Bool(x < 0.5),
+            Kind::Choice(options) => {
+                Value::String(options[(x * options.len() as f64) as usize % options.len()].into())
+            }
+            Kind::Colour => Value::String(format!("{:06x}", (x * 16_777_215.0) as u32)),
+            Kind::List { .. } | Kind::Text => continue,
+        };
+    }
+    let mut spec: ShellSpec = serde_json::from_value(value).ok()?;
+    repair(&mut spec, base);
+    Some((preset, spec))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn decode_inverts_encode(preset in 0usize..1000, changes in prop::collection::vec((0usize..1000, 0.0f64..1.0), 0..12)) {
+        if let Some((preset, spec)) = perturbed(preset, &changes) {
+            let preset = &presets()[preset];
+            let link = encode(preset, &spec);
+            let decoded = decode(&link);
+            prop_assert!(decoded.problems.is_empty(), "{link}: {:?}", decoded.problems);
+            prop_assert_eq!(&decoded.spec, &spec);
+            prop_assert_eq!(encode(decoded.preset, &decoded.spec), link);
+        }
+    }
+
+    #[test]
+    fn any_text_gives_a_shell_and_never_panics(text in ".{0,200}") {
+        let decoded = decode(&text);
+        let again = decode(&encode(decoded.preset, &decoded.spec));
+        prop_assert!(again.problems.is_empty());
+        prop_assert_eq!(again.spec, decoded.spec);
+    }
+}
+
+#[test]
+fn a_preset_alone_encodes_to_its_name_and_version() {
+    for preset in presets() {
+        assert_eq!(
+            encode(preset, &preset.spec),
+            format!("v=1&preset={}", preset.id)
+        );
+    }
+}
+
+#[test]
+fn the_canonical_form_sorts_and_deduplicates() {
+    let messy = "#preset=turbinate&form.spiral.whorls=5.0&v=1&seed=7";
+    let decoded = decode(messy);
+    assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+    assert_eq!(
+        encode(decoded.preset, &decoded.spec),
+        "v=1&preset=turbinate&form.spiral.whorls=5&seed=7"
+    );
+}
+
+/// Each bad link, the key its problem must name, and words the message must contain.
+const BAD_LINKS: &[(&str, &str, &str)] = &[
+    (
+        "v=1&preset=turbinate&form.spiral.whorlz=3",
+        "form.spiral.whorlz",
+        "not a key",
+    ),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls=many",
+        "form.spiral.whorls",
+        "not a number",
+    ),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls=",
+        "form.spiral.whorls",
+        "not a number",
+    ),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls=NaN",
+        "form.spiral.whorls",
+        "not a finite number",
+    ),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls=1e9",
+        "form.spiral.whorls",
+        "used 30",
+    ),
+    (
+        "v=1&preset=turbinate&form.curve.segments=-4",
+        "form.curve.segments",
+        "whole number",
+    ),
+    (
+        "v=1&preset=turbinate&form.curve.points=1,2",
+        "form.curve.points",
+        "not 3",
+    ),
+    (
+        "v=1&preset=turbinate&form.curve.points=0,0,0;1,1,0",
+        "form.curve.points",
+        "needs 3k points",
+    ),
+    (
+        "v=1&preset=turbinate&form.spiral.handedness=upside",
+        "form.spiral.handedness",
+        "not one of",
+    ),
+    (
+        "v=1&preset=turbinate&colours.ground=%3Cscript%3E",
+        "colours.ground",
+        "not a colour",
+    ),
+    ("v=1&preset=turbi", "preset", "no preset 'turbi'"),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls",
+        "form.spiral.whorls",
+        "key=value",
+    ),
+    (
+        "v=1&preset=turbinate&seed=1&seed=2",
+        "seed",
+        "more than once",
+    ),
+    (
+        "v=9&preset=turbinate&form.spiral.whorls=3",
+        "v",
+        "newer version",
+    ),
+    ("preset=turbinate", "v", "no version"),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls=30&form.spiral.subdivisions=16&form.curve.segments=512",
+        "form",
+        "cap",
+    ),
+    (
+        "v=1&preset=turbinate&<img src=x onerror=alert(1)>=1",
+        "<img src",
+        "not a key",
+    ),
+    ("nonsense-preset", "preset", "no preset"),
+];
+
+#[test]
+fn bad_links_get_specific_messages_and_still_give_a_shell() {
+    for &(link, key, words) in BAD_LINKS {
+        let decoded = decode(link);
+        let problem = decoded
+            .problems
+            .iter()
+            .find(|p| p.key == key)
+            .unwrap_or_else(|| panic!("{link}: no problem about {key} in {:?}", decoded.problems));
+        assert!(
+            problem.message.contains(words),
+            "{link}: '{}' lacks '{words}'",
+            problem.message
+        );
+        let again = decode(&encode(decoded.preset, &decoded.spec));
+        assert!(
+            again.problems.is_empty(),
+            "{link} repaired into an invalid spec: {:?}",
+            again.problems
+        );
+    }
+}
+
+#[test]
+fn an_overlong_link_is_refused_as_a_whole() {
+    let link = format!("v=1&preset=turbinate&seed={}", "9".repeat(MAX_LINK));
+    let decoded = decode(&link);
+    assert_eq!(decoded.preset.id, DEFAULT_PRESET);
+    assert_eq!(decoded.problems.len(), 1);
+    assert!(decoded.problems[0].message.contains("more than"));
+}
+
+#[test]
+fn every_leaf_of_every_preset_is_described_in_the_field_table() {
+    let mut leaves = std::collections::BTreeSet::new();
+    for preset in presets() {
+        leaves.extend(flatten(&serde_json::to_value(&preset.spec).unwrap()).into_keys());
+    }
+    for leaf in &leaves {
+        assert!(
+            FIELDS.iter().any(|f| &f.key == leaf),
+            "{leaf} has no description in spec::fields"
+        );
+    }
+}
