@@ -5,7 +5,7 @@
 
 use glam::{DQuat, DVec3};
 use proptest::prelude::*;
-use seashells_core::export::stl;
+use seashells_core::export::{obj, stl};
 use seashells_core::generator::Generator;
 use seashells_core::geometry::frame::{Frame, FrameMode};
 use seashells_core::geometry::helico_spiral::HelicoSpiral;
@@ -342,4 +342,25 @@ fn normals_are_unit_and_agree_with_the_triangles() {
         share > 0.99,
         "only {share} of triangles agree with their vertex normals"
     );
+}
+
+#[test]
+fn the_exported_obj_is_watertight_by_position_index() {
+    let mut g = Generator::new(&turbinate()).unwrap();
+    g.finish();
+    let text = String::from_utf8(obj::write(&g.snapshot())).unwrap();
+    let mut edges: HashMap<(u32, u32), usize> = HashMap::new();
+    let mut faces = 0;
+    for line in text.lines().filter(|l| l.starts_with("f ")) {
+        faces += 1;
+        let v: Vec<u32> = line[2..]
+            .split(' ')
+            .map(|corner| corner.split("//").next().unwrap().parse().unwrap())
+            .collect();
+        for (a, b) in [(v[0], v[1]), (v[1], v[2]), (v[2], v[0])] {
+            *edges.entry((a.min(b), a.max(b))).or_insert(0) += 1;
+        }
+    }
+    assert_eq!(faces, g.snapshot().triangle_count());
+    assert!(edges.values().all(|&n| n == 2));
 }

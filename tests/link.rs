@@ -211,7 +211,7 @@ fn every_leaf_of_every_preset_is_described_in_the_field_table() {
     }
     for leaf in &leaves {
         assert!(
-            FIELDS.iter().any(|f| &f.key == leaf),
+            FIELDS.iter().any(|f| f.key == leaf),
             "{leaf} has no description in spec::fields"
         );
     }

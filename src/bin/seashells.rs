@@ -1,1 +1,122 @@
-fn main() {}
+//! `seashells`: the native exporter on the same core as the page.
+//!
+//!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl}
+//!     seashells presets
+//!
+//! A wrong preset, link, option or extension gets one line on stderr and a non-zero exit.
+
+use seashells_core::export::MeshFormat;
+use seashells_core::generator::Generator;
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::link;
+use seashells_core::species::{self, presets};
+use std::collections::BTreeMap;
+use std::process::ExitCode;
+
+const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} | seashells presets";
+
+/// Options given as `--name value`.
+struct Options(BTreeMap<String, String>);
+
+impl Options {
+    fn parse(args: &[String], allowed: &[&str]) -> Result<Self, String> {
+        let mut map = BTreeMap::new();
+        let mut it = args.iter();
+        while let Some(arg) = it.next() {
+            let name = arg
+                .strip_prefix("--")
+                .filter(|n| allowed.contains(n))
+                .ok_or_else(|| format!("unexpected '{arg}' ({USAGE})"))?;
+            let value = it.next().ok_or_else(|| format!("--{name} needs a value"))?;
+            if map.insert(name.to_string(), value.clone()).is_some() {
+                return Err(format!("--{name} is given twice"));
+            }
+        }
+        Ok(Self(map))
+    }
+
+    fn get(&self, name: &str) -> Option<&str> {
+        self.0.get(name).map(String::as_str)
+    }
+
+    fn required(&self, name: &str) -> Result<&str, String> {
+        self.get(name)
+            .ok_or_else(|| format!("--{name} is missing ({USAGE})"))
+    }
+
+    /// The spec named by --preset or --link (exactly one of them).
+    fn spec(&self) -> Result<ShellSpec, String> {
+        match (self.get("preset"), self.get("link")) {
+            (Some(id), None) => species::preset(id).map(|p| p.spec.clone()).ok_or_else(|| {
+                let ids: Vec<&str> = presets().iter().map(|p| p.id).collect();
+                format!("there is no preset '{id}' (presets: {})", ids.join(", "))
+            }),
+            (None, Some(fragment)) => {
+                let decoded = link::decode(fragment);
+                if decoded.problems.is_empty() {
+                    Ok(decoded.spec)
+                } else {
+                    let problems: Vec<String> =
+                        decoded.problems.iter().map(ToString::to_string).collect();
+                    Err(format!(
+                        "the link cannot be used as given: {}",
+                        problems.join("; ")
+                    ))
+                }
+            }
+            _ => Err(format!("give exactly one of --preset and --link ({USAGE})")),
+        }
+    }
+}
+
+fn grown(spec: &ShellSpec) -> Result<Generator, String> {
+    let mut generator = Generator::new(spec).map_err(|e| e.to_string())?;
+    generator.finish();
+    Ok(generator)
+}
+
+fn write(path: &str, bytes: &[u8]) -> Result<(), String> {
+    std::fs::write(path, bytes).map_err(|e| format!("cannot write '{path}': {e}"))
+}
+
+fn mesh(args: &[String]) -> Result<String, String> {
+    let options = Options::parse(args, &["preset", "link", "out"])?;
+    let out = options.required("out")?;
+    let format = MeshFormat::from_path(out)?;
+    let generator = grown(&options.spec()?)?;
+    let mesh = generator.snapshot();
+    write(out, &format.write(&mesh))?;
+    Ok(format!(
+        "wrote {out}: {} vertices, {} triangles",
+        mesh.vertices.len(),
+        mesh.triangle_count()
+    ))
+}
+
+fn list() -> String {
+    let lines: Vec<String> = presets()
+        .iter()
+        .map(|p| format!("{:<24} {} ({})", p.id, p.name, p.source))
+        .collect();
+    lines.join("\n")
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("mesh") => mesh(&args[1..]),
+        Some("presets") => Ok(list()),
+        Some(other) => Err(format!("unknown command '{other}' ({USAGE})")),
+        None => Err(USAGE.to_string()),
+    };
+    match result {
+        Ok(report) => {
+            println!("{report}");
+            ExitCode::SUCCESS
+        }
+        Err(message) => {
+            eprintln!("seashells: {message}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -402,10 +402,8 @@ impl Renderer {
         if advance.edge_changed {
             shell.edge.replace(&self.queue, edge);
         }
-        if let Some(pattern) = &shell.pattern {
-            if !rgba.is_empty() {
-                pattern.write_rows(&self.queue, advance.rows.start as u32, rgba);
-            }
+        if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
+            pattern.write_rows(&self.queue, advance.rows.start as u32, rgba);
         }
         shell.rows_grown = advance.rows.end as u32;
     }

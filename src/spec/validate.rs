@@ -26,7 +26,7 @@ fn sweep_vertices(s: &SweepSpec) -> u64 {
 fn curve_fits(curve: &CurveSpec) -> bool {
     let n = curve.points.len();
     if curve.closed {
-        n >= 3 && n % 3 == 0
+        n >= 3 && n.is_multiple_of(3)
     } else {
         n >= 4 && n % 3 == 1
     }

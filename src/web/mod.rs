@@ -117,6 +117,7 @@ pub async fn start() -> Result<(), JsValue> {
     let renderer = match Renderer::new(canvas.clone()).await {
         Ok(r) => r,
         Err(message) => {
+            page::set_text("backend", "Not drawn");
             page::show_error(&message);
             return Ok(());
         }
@@ -171,9 +172,12 @@ fn background() -> [u8; 3] {
     }
 }
 
+/// The frame callback, shared with itself so that each frame can schedule the next.
+type FrameLoop = Rc<RefCell<Option<Closure<dyn FnMut()>>>>;
+
 /// Runs the frame loop until a frame says stop.
 fn run(app: Rc<RefCell<App>>) {
-    let callback: Rc<RefCell<Option<Closure<dyn FnMut()>>>> = Rc::new(RefCell::new(None));
+    let callback: FrameLoop = Rc::new(RefCell::new(None));
     let next = Rc::clone(&callback);
     *callback.borrow_mut() = Some(Closure::new(move || {
         if app.borrow_mut().frame() {

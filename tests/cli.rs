@@ -1,0 +1,104 @@
+//! The `seashells` command line: files are written for good input; every kind of bad input
+//! gets exactly one line on stderr and a non-zero exit.
+#![cfg(not(target_arch = "wasm32"))]
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_seashells"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn temp(name: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("seashells-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name).to_string_lossy().into_owned()
+}
+
+#[test]
+fn mesh_writes_each_format_by_extension() {
+    for (ext, magic) in [
+        ("obj", &b"# seashells"[..]),
+        ("ply", b"ply\n"),
+        ("stl", b"seashells"),
+    ] {
+        let out = temp(&format!("shell.{ext}"));
+        let result = run(&["mesh", "--preset", "turbinate", "--out", &out]);
+        assert!(
+            result.status.success(),
+            "{}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+        let bytes = std::fs::read(&out).unwrap();
+        assert!(bytes.starts_with(magic), "{ext} file starts wrongly");
+    }
+}
+
+#[test]
+fn mesh_takes_a_link_in_place_of_a_preset() {
+    let out = temp("linked.stl");
+    let result = run(&[
+        "mesh",
+        "--link",
+        "#v=1&preset=turbinate&form.spiral.whorls=2",
+        "--out",
+        &out,
+    ]);
+    assert!(result.status.success());
+    let small = std::fs::metadata(&out).unwrap().len();
+    let full = temp("full.stl");
+    assert!(
+        run(&["mesh", "--preset", "turbinate", "--out", &full])
+            .status
+            .success()
+    );
+    assert!(
+        small < std::fs::metadata(&full).unwrap().len() / 2,
+        "two whorls make a smaller mesh"
+    );
+}
+
+#[test]
+fn bad_input_gets_one_line_and_a_non_zero_exit() {
+    let out = temp("bad.stl");
+    let cases: &[&[&str]] = &[
+        &["mesh", "--preset", "no-such-shell", "--out", &out],
+        &["mesh", "--preset", "turbinate", "--out", "shell.xyz"],
+        &[
+            "mesh",
+            "--link",
+            "v=1&preset=turbinate&form.spiral.whorls=lots",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--preset",
+            "turbinate",
+            "--link",
+            "v=1&preset=turbinate",
+            "--out",
+            &out,
+        ],
+        &["mesh", "--preset", "turbinate"],
+        &[
+            "mesh",
+            "--preset",
+            "turbinate",
+            "--out",
+            "/no/such/folder/shell.stl",
+        ],
+        &["mesh", "--colour", "red"],
+        &["grow"],
+        &[],
+    ];
+    for args in cases {
+        let result = run(args);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(!result.status.success(), "{args:?} succeeded");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.starts_with("seashells: "), "{args:?}: {stderr}");
+    }
+}

@@ -1,0 +1,60 @@
+// The page grows a lit shell on either backend, and says so in words when it cannot.
+// Screenshots are kept in tests/page/screenshots/ (git-ignored) for people to look at.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { serve } from './serve.mjs';
+import { launch, open, waitForState, measureCanvas } from './browser.mjs';
+
+const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
+mkdirSync(SHOTS, { recursive: true });
+let server;
+let base;
+
+before(async () => {
+  server = await serve(new URL('../../www/', import.meta.url).pathname);
+  base = `http://127.0.0.1:${server.address().port}/`;
+});
+after(() => server.close());
+
+for (const backend of ['WebGL2', 'WebGPU']) {
+  test(`a lit shell grows on ${backend}`, async () => {
+    const browser = await launch(backend);
+    try {
+      const { page, errors } = await open(browser, `${base}#v=1&preset=turbinate&growth.speed=6`);
+      const ready = await waitForState(page, ['growing', 'grown', 'error']);
+      assert.equal(ready.state, 'growing', `the page reported ${ready.state}`);
+      assert.equal(ready.backend, backend, 'the backend reported matches the flags');
+      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 100);
+      const early = await measureCanvas(page, `${SHOTS}growth-${backend}-early.png`);
+      await waitForState(page, ['grown']);
+      const late = await measureCanvas(page, `${SHOTS}growth-${backend}-grown.png`);
+      assert.ok(late.share > 0.04, `the grown shell covers only ${late.share} of the canvas`);
+      assert.ok(late.shades > 40, `only ${late.shades} distinct shades: not a lit surface`);
+      assert.ok(late.share > early.share * 1.3, `the shell did not grow: ${early.share} then ${late.share}`);
+      assert.match(await page.textContent('#backend'), new RegExp(backend));
+      assert.deepEqual(errors, []);
+    } finally {
+      await browser.close();
+    }
+  });
+}
+
+test('without WebGPU or WebGL2 the page says so in words', async () => {
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu', '--disable-webgl', '--disable-3d-apis', '--disable-features=WebGPU'],
+  });
+  try {
+    const { page } = await open(browser, base);
+    const state = await waitForState(page, ['growing', 'grown', 'error']);
+    assert.equal(state.state, 'error');
+    const message = await page.textContent('#message');
+    assert.match(message, /WebGPU|WebGL2/);
+    assert.ok(await page.isVisible('#message'));
+    await page.screenshot({ path: `${SHOTS}no-graphics.png` });
+  } finally {
+    await browser.close();
+  }
+});
