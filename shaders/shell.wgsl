@@ -115,7 +115,10 @@ fn fs_main(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) ve
     let fill = light(n, v, normalize(vec3<f32>(0.7, 0.1, 0.45)), vec3<f32>(0.32, 0.36, 0.42), albedo, shine);
     let rim = light(n, v, normalize(vec3<f32>(0.1, 0.3, -0.9)), vec3<f32>(0.35, 0.33, 0.3), albedo, shine);
     let sky = mix(vec3<f32>(0.10, 0.09, 0.08), vec3<f32>(0.22, 0.24, 0.27), 0.5 + 0.5 * n.y);
-    var colour = key + fill + rim + sky * albedo;
+    // A soft shoulder (extended Reinhard, white point 1.6) keeps the relief of pale shells
+    // in the highlights instead of clipping it.
+    let lit = (key + fill + rim + sky * albedo) * 1.15;
+    var colour = lit * (vec3<f32>(1.0) + lit / 2.56) / (vec3<f32>(1.0) + lit);
     if (g.options.x > 0.5) {
         colour = encode_srgb(clamp(colour, vec3<f32>(0.0), vec3<f32>(1.0)));
     }

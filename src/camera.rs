@@ -26,6 +26,7 @@ pub struct OrbitCamera {
     target: Vec3,
     radius: f32,
     default_yaw: f32,
+    default_pitch: f32,
     /// Angle around the vertical axis.
     pub yaw: f32,
     /// Angle above the horizon, within ±85°.
@@ -36,22 +37,24 @@ pub struct OrbitCamera {
 
 impl OrbitCamera {
     /// Frames `bounds`, seen from `front` (a direction in shell space, e.g. where the opening
-    /// faces).
-    pub fn framing(bounds: &Bounds, front: DVec3) -> Self {
+    /// faces), turned by `yaw` and raised by `pitch` (radians).
+    pub fn framing(bounds: &Bounds, front: DVec3, yaw: f32, pitch: f32) -> Self {
         let display = display_from_shell();
         let target = display.transform_point3(bounds.center().as_vec3());
         let f = display.transform_vector3(front.as_vec3());
-        let default_yaw = if f.x == 0.0 && f.z == 0.0 {
+        let facing = if f.x == 0.0 && f.z == 0.0 {
             0.0
         } else {
             f.x.atan2(f.z)
         };
+        let default_pitch = (DEFAULT_PITCH + pitch).clamp(-1.48, 1.48);
         Self {
             target,
             radius: (bounds.radius() as f32).max(1e-6),
-            default_yaw,
-            yaw: default_yaw,
-            pitch: DEFAULT_PITCH,
+            default_yaw: facing + yaw,
+            default_pitch,
+            yaw: facing + yaw,
+            pitch: default_pitch,
             zoom: 1.0,
         }
     }
@@ -59,7 +62,7 @@ impl OrbitCamera {
     /// Back to the first view.
     pub fn reset(&mut self) {
         self.yaw = self.default_yaw;
-        self.pitch = DEFAULT_PITCH;
+        self.pitch = self.default_pitch;
         self.zoom = 1.0;
     }
 
@@ -119,7 +122,7 @@ mod tests {
     fn the_whole_shell_is_in_view() {
         let b = unit_box();
         for aspect in [0.5, 1.0, 2.0] {
-            let cam = OrbitCamera::framing(&b, DVec3::X);
+            let cam = OrbitCamera::framing(&b, DVec3::X, 0.0, 0.0);
             let m = cam.view_projection(aspect) * display_from_shell();
             for corner in 0..8 {
                 let p = DVec3::new(
@@ -141,7 +144,7 @@ mod tests {
     #[test]
     fn apex_is_shown_up_and_the_front_faces_the_camera() {
         let b = unit_box();
-        let cam = OrbitCamera::framing(&b, DVec3::X);
+        let cam = OrbitCamera::framing(&b, DVec3::X, 0.0, 0.0);
         let m = cam.view_projection(1.0) * display_from_shell();
         let project = |p: DVec3| {
             let c = m * p.as_vec3().extend(1.0);
@@ -154,7 +157,7 @@ mod tests {
 
     #[test]
     fn zoom_and_pitch_stay_in_range() {
-        let mut cam = OrbitCamera::framing(&unit_box(), DVec3::Y);
+        let mut cam = OrbitCamera::framing(&unit_box(), DVec3::Y, 0.0, 0.0);
         cam.orbit(0.0, 10.0);
         assert!(cam.pitch < 1.5);
         cam.zoom_by(1e9);

@@ -65,7 +65,7 @@ mod tests {
             min: DVec3::splat(-1.0),
             max: DVec3::splat(1.0),
         };
-        OrbitCamera::framing(&b, DVec3::X)
+        OrbitCamera::framing(&b, DVec3::X, 0.0, 0.0)
     }
 
     #[test]

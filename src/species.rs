@@ -44,7 +44,20 @@ pub struct Preset {
     pub group: Group,
     /// One line about what it shows.
     pub description: String,
+    /// Where the camera starts, when the view from the opening is not the telling one.
+    #[serde(default)]
+    pub view: View,
     pub spec: ShellSpec,
+}
+
+/// The first view of a preset, relative to looking into its opening.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct View {
+    /// Turn about the vertical, degrees.
+    pub yaw: f32,
+    /// Extra height above the horizon, degrees.
+    pub pitch: f32,
 }
 
 /// Every preset, in gallery order (by group, then file name). A preset file that does not

@@ -70,7 +70,7 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
     renderer.upload(generator.mesh(), generator.edge(), &generator.grown(), &[]);
     let (bounds, front) = generator.framing();
     renderer
-        .draw(&OrbitCamera::framing(&bounds, front))
+        .draw(&OrbitCamera::framing(&bounds, front, 0.0, 0.0))
         .expect("a frame");
     let (share, shades) = coverage(&canvas);
     assert!(share > 0.05, "the shell covers {share:.3} of the canvas");

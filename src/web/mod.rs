@@ -135,7 +135,12 @@ pub async fn start() -> Result<(), JsValue> {
     page::set_text("title", &preset.name);
     let (bounds, front) = generator.framing();
     let mut app = App {
-        camera: OrbitCamera::framing(&bounds, front),
+        camera: OrbitCamera::framing(
+            &bounds,
+            front,
+            preset.view.yaw.to_radians(),
+            preset.view.pitch.to_radians(),
+        ),
         renderer,
         pointers: Pointers::default(),
         canvas,
