@@ -55,10 +55,11 @@ fn texel(cell: i32, row: i32) -> vec3<f32> {
     return textureLoad(pattern_texture, vec2<i32>(block * cells + c, r - block * block_rows), 0).rgb;
 }
 
-// Bilinear sample at (position along the edge in [0, 1], row).
+// Bilinear sample at (position along the edge in [0, 1], row): x = 0 and 1 fall on the
+// centres of the end cells, a whole row number on the centre of that row.
 fn pigment(at: vec2<f32>) -> vec3<f32> {
-    let x = at.x * g.pattern.x - 0.5;
-    let y = at.y - 0.5;
+    let x = at.x * (g.pattern.x - 1.0);
+    let y = at.y;
     let x0 = floor(x);
     let y0 = floor(y);
     let fx = x - x0;

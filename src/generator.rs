@@ -1,9 +1,11 @@
-//! The incremental generator: one spec in, new rims (and later new pattern rows) out, a few
-//! at a time, on a growth clock measured in pattern rows. The cost of a call depends on the
-//! rows it adds, never on the age of the shell.
+//! The incremental generator: one spec in, new pattern rows and new rims out, a few at a time,
+//! on a growth clock measured in pattern rows (row 0 is the starting state at the apex, row
+//! `rows − 1` the opening). The cost of a call depends on the rows it adds, never on the age
+//! of the shell.
 
 use crate::growing_shape::{GrowingShape, shape_for};
 use crate::mesh::{Bounds, Capacity, Mesh};
+use crate::pattern::run::PatternRun;
 use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
@@ -17,17 +19,19 @@ pub struct Advance {
     pub indices: Range<usize>,
     /// Whether the transient edge mesh was rewritten.
     pub edge_changed: bool,
-    /// Pattern rows now grown, before and after.
+    /// The pattern rows added (their RGBA is [`PatternRun::rgba`] over this range).
     pub rows: Range<usize>,
 }
 
 /// A shell growing from its spec.
 pub struct Generator {
     shape: Box<dyn GrowingShape>,
+    pattern: Option<PatternRun>,
     mesh: Mesh,
     edge: Mesh,
     rows: usize,
     rows_done: usize,
+    failure: Option<String>,
 }
 
 /// Why a generator cannot be built from a spec.
@@ -42,14 +46,18 @@ impl std::fmt::Display for BuildError {
 
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
-        let rows = spec.growth.rows.max(1) as usize;
+        let rows = spec.growth.rows.max(2) as usize;
         let shape = shape_for(&spec.form, rows).map_err(|e| BuildError(e.0))?;
+        let pattern = PatternRun::new(spec)
+            .map_err(|e| BuildError(format!("the pattern cannot be computed: {e}")))?;
         let mut generator = Self {
             mesh: Mesh::with_capacity(shape.capacity()),
             edge: Mesh::with_capacity(shape.edge_capacity()),
             shape,
+            pattern,
             rows,
-            rows_done: 0,
+            rows_done: 1,
+            failure: None,
         };
         generator.grow_shape();
         Ok(generator)
@@ -65,8 +73,20 @@ impl Generator {
         self.rows_done
     }
 
+    /// Whether growth has ended: fully grown, or stopped by a failure.
     pub fn is_done(&self) -> bool {
-        self.rows_done >= self.rows && self.shape.steps_done() >= self.shape.steps()
+        self.failure.is_some()
+            || (self.rows_done >= self.rows && self.shape.steps_done() >= self.shape.steps())
+    }
+
+    /// Why growth stopped early (the pattern diverged), in words.
+    pub fn failure(&self) -> Option<&str> {
+        self.failure.as_deref()
+    }
+
+    /// The pattern, when the shell has one.
+    pub fn pattern(&self) -> Option<&PatternRun> {
+        self.pattern.as_ref()
     }
 
     /// Buffer sizes of the fully grown mesh and of the edge.
@@ -102,7 +122,7 @@ impl Generator {
         let target = if steps <= 1 {
             steps
         } else {
-            (self.rows_done * (steps - 1) / self.rows + 1).min(steps)
+            ((self.rows_done - 1) * (steps - 1) / (self.rows - 1) + 1).min(steps)
         };
         let mut changed = false;
         while self.shape.steps_done() < target {
@@ -119,7 +139,16 @@ impl Generator {
             self.mesh.indices.len(),
             self.rows_done,
         );
-        self.rows_done = (self.rows_done + rows).min(self.rows);
+        let target = (self.rows_done + rows).min(self.rows);
+        while self.failure.is_none() && self.rows_done < target {
+            if let Some(pattern) = &mut self.pattern {
+                if let Err(e) = pattern.advance() {
+                    self.failure = Some(format!("The pattern stopped {e}."));
+                    break;
+                }
+            }
+            self.rows_done += 1;
+        }
         let edge_changed = self.grow_shape();
         Advance {
             vertices: v0..self.mesh.vertices.len(),
@@ -136,6 +165,29 @@ impl Generator {
             indices: 0..self.mesh.indices.len(),
             edge_changed: true,
             rows: 0..self.rows_done,
+        }
+    }
+
+    /// Grows row by row, up to `rows` rows, while `keep_going` allows (a frame's time budget):
+    /// at least one row is grown when any remains.
+    pub fn advance_while(&mut self, rows: usize, mut keep_going: impl FnMut() -> bool) -> Advance {
+        let (v0, i0, r0) = (
+            self.mesh.vertices.len(),
+            self.mesh.indices.len(),
+            self.rows_done,
+        );
+        let mut edge_changed = false;
+        for k in 0..rows {
+            if self.is_done() || (k > 0 && !keep_going()) {
+                break;
+            }
+            edge_changed |= self.advance(1).edge_changed;
+        }
+        Advance {
+            vertices: v0..self.mesh.vertices.len(),
+            indices: i0..self.mesh.indices.len(),
+            edge_changed,
+            rows: r0..self.rows_done,
         }
     }
 

@@ -28,8 +28,8 @@ pub trait GrowingShape {
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh);
 }
 
-/// The growing shape a form describes; `rows` is the length of the pattern in rows, which the
-/// shape maps onto its steps for the pattern coordinates of its vertices.
+/// The growing shape a form describes; `rows` (at least 2) is the length of the pattern in
+/// rows: the first step lies on row 0, the last on row `rows − 1`.
 pub fn shape_for(form: &Form, rows: usize) -> Result<Box<dyn GrowingShape>, GeometryError> {
     match form {
         Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),

@@ -7,6 +7,7 @@ pub mod geometry;
 pub mod gestures;
 pub mod growing_shape;
 pub mod mesh;
+pub mod pattern;
 pub mod spec;
 pub mod species;
 pub mod texture_layout;

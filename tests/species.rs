@@ -18,7 +18,11 @@ fn every_preset_is_valid_and_grows_into_a_finite_mesh() {
         let mesh = g.snapshot();
         assert!(mesh.triangle_count() > 1000, "{}", p.id);
         for v in &mesh.vertices {
-            assert!(v.position.iter().chain(&v.normal).all(|x| x.is_finite()), "{}: non-finite vertex", p.id);
+            assert!(
+                v.position.iter().chain(&v.normal).all(|x| x.is_finite()),
+                "{}: non-finite vertex",
+                p.id
+            );
         }
     }
 }
@@ -26,10 +30,23 @@ fn every_preset_is_valid_and_grows_into_a_finite_mesh() {
 #[test]
 fn the_shapes_of_the_paper_are_all_there() {
     for id in [
-        "turbinate", "patelliform", "tubular", "spherical", "diskoid", "turreted", "fusiform",
-        "fusiform-stout", "conical", "thatcheria-mirabilis", "epitonium-scalare",
-        "epitonium-scalare-axis-aligned", "rapa-rapa", "cardium-costatum", "turritella-nivea",
-        "lattice", "spiral-ribs",
+        "turbinate",
+        "patelliform",
+        "tubular",
+        "spherical",
+        "diskoid",
+        "turreted",
+        "fusiform",
+        "fusiform-stout",
+        "conical",
+        "thatcheria-mirabilis",
+        "epitonium-scalare",
+        "epitonium-scalare-axis-aligned",
+        "rapa-rapa",
+        "cardium-costatum",
+        "turritella-nivea",
+        "lattice",
+        "spiral-ribs",
     ] {
         assert!(preset(id).is_some(), "missing preset {id}");
     }
@@ -46,7 +63,11 @@ fn figure_2_uses_the_papers_numbers() {
         ("diskoid", 1.4, 1.014),
     ] {
         let Form::Sweep(s) = &preset(id).unwrap().spec.form;
-        assert_eq!((s.spiral.z0, s.spiral.lambda_r, s.spiral.lambda_z), (z0, lambda, lambda), "{id}");
+        assert_eq!(
+            (s.spiral.z0, s.spiral.lambda_r, s.spiral.lambda_z),
+            (z0, lambda, lambda),
+            "{id}"
+        );
         assert_eq!(s.spiral.delta_theta, 10.0, "{id}");
     }
 }

@@ -1,19 +1,26 @@
 //! `seashells`: the native exporter on the same core as the page.
 //!
 //!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl}
+//!     seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv}
+//!                       [--cells N] [--rows N] [--iterations N]
 //!     seashells presets
 //!
 //! A wrong preset, link, option or extension gets one line on stderr and a non-zero exit.
 
-use seashells_core::export::MeshFormat;
+use seashells_core::export::{self, MeshFormat};
 use seashells_core::generator::Generator;
+use seashells_core::pattern::run::PatternRun;
 use seashells_core::spec::ShellSpec;
+use seashells_core::spec::fields::{self, Kind};
 use seashells_core::spec::link;
+use seashells_core::spec::validate::repair;
 use seashells_core::species::{self, presets};
 use std::collections::BTreeMap;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} | seashells presets";
+const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} | \
+seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N] | \
+seashells presets";
 
 /// Options given as `--name value`.
 struct Options(BTreeMap<String, String>);
@@ -93,6 +100,80 @@ fn mesh(args: &[String]) -> Result<String, String> {
     ))
 }
 
+/// A whole number option, within the range the spec allows for its key.
+fn count(options: &Options, name: &str, key: &str) -> Result<Option<u32>, String> {
+    let Some(text) = options.get(name) else {
+        return Ok(None);
+    };
+    let n: u32 = text
+        .parse()
+        .map_err(|_| format!("--{name} takes a whole number, not '{text}'"))?;
+    if let Some(Kind::Integer { min, max }) = fields::field(key).map(|f| f.kind) {
+        if !(min..=max).contains(&u64::from(n)) {
+            return Err(format!("--{name} must be between {min} and {max}, not {n}"));
+        }
+    }
+    Ok(Some(n))
+}
+
+fn pattern(args: &[String]) -> Result<String, String> {
+    let options = Options::parse(
+        args,
+        &["preset", "link", "out", "cells", "rows", "iterations"],
+    )?;
+    let out = options.required("out")?;
+    let csv = match out
+        .rsplit_once('.')
+        .map(|(_, e)| e.to_ascii_lowercase())
+        .as_deref()
+    {
+        Some("png") => false,
+        Some("csv") => true,
+        _ => return Err(format!("'{out}' should end in .png or .csv")),
+    };
+    let mut spec = options.spec()?;
+    let base = spec.clone();
+    if let Some(n) = count(&options, "cells", "pattern.cells")? {
+        spec.pattern.cells = n;
+    }
+    if let Some(n) = count(&options, "rows", "growth.rows")? {
+        spec.growth.rows = n;
+    }
+    if let Some(n) = count(&options, "iterations", "pattern.iterations")? {
+        spec.pattern.iterations = n;
+    }
+    let problems = repair(&mut spec, &base);
+    if let Some(p) = problems.first() {
+        return Err(p.to_string());
+    }
+    let mut run = PatternRun::new(&spec)
+        .map_err(|e| format!("the pattern cannot be computed: {e}"))?
+        .ok_or("this shell has no pattern model")?;
+    let mut text = String::new();
+    if csv {
+        export::csv::write_row(&mut text, run.recorded());
+    }
+    while run.rows() < spec.growth.rows as usize {
+        run.advance()
+            .map_err(|e| format!("the pattern stopped {e}"))?;
+        if csv {
+            export::csv::write_row(&mut text, run.recorded());
+        }
+    }
+    let bytes = if csv {
+        text.into_bytes()
+    } else {
+        export::png::encode(run.cells(), run.rows(), run.rgba())
+    };
+    write(out, &bytes)?;
+    Ok(format!(
+        "wrote {out}: {} cells × {} rows, hash {:016x}",
+        run.cells(),
+        run.rows(),
+        run.hash()
+    ))
+}
+
 fn list() -> String {
     let lines: Vec<String> = presets()
         .iter()
@@ -105,6 +186,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         Some("mesh") => mesh(&args[1..]),
+        Some("pattern") => pattern(&args[1..]),
         Some("presets") => Ok(list()),
         Some(other) => Err(format!("unknown command '{other}' ({USAGE})")),
         None => Err(USAGE.to_string()),

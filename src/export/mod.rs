@@ -1,8 +1,10 @@
-//! Writing what the core grows to files: meshes as OBJ, binary PLY or binary STL, chosen by
-//! the file's extension.
+//! Writing what the core grows to files: meshes as OBJ, binary PLY or binary STL, and patterns
+//! as PNG or CSV, chosen by the file's extension.
 
+pub mod csv;
 pub mod obj;
 pub mod ply;
+pub mod png;
 pub mod stl;
 pub mod weld;
 

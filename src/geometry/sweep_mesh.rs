@@ -38,7 +38,7 @@ impl SweepMesh {
         let sweep = Sweep::new(spec)?;
         let [lr, lz, _] = sweep.lambda();
         let walk = SpiralWalk::new(spec.spiral.r0, spec.spiral.z0, lr, lz, sweep.step());
-        let rows_per_rim = rows as f64 / (sweep.rims() - 1) as f64;
+        let rows_per_rim = (rows - 1) as f64 / (sweep.rims() - 1) as f64;
         Ok(Self {
             sweep,
             walk,

@@ -11,6 +11,9 @@ pub struct PatternSpec {
     pub cells: u32,
     /// Model iterations (Δt = 1) per displayed row.
     pub iterations: u32,
+    /// Refinement k: k cells per cell and k² steps per iteration, the same model resolved
+    /// more finely (1: as Meinhardt ran it).
+    pub refinement: u32,
     /// What happens at the two ends of the edge.
     pub boundary: Boundary,
     /// Recorded value shown as no pigment.
@@ -26,6 +29,7 @@ impl Default for PatternSpec {
         Self {
             cells: 256,
             iterations: 1,
+            refinement: 1,
             boundary: Boundary::ZeroFlux,
             low: 0.0,
             high: 1.0,
@@ -54,6 +58,9 @@ pub enum Model {
     ActivatorSubstrate(ActivatorSubstrate),
     /// Activator and inhibitor regulated by a hormone (Fowler et al. 1992, eq 9).
     ActivatorInhibitor(ActivatorInhibitor),
+    /// A spreading reaction switched off by a second reaction-diffusion system (the triangles
+    /// of *Conus marmoreus*, fig 15).
+    Coupled(Coupled),
 }
 
 /// Parameters of eq 8:
@@ -127,4 +134,57 @@ pub struct ActivatorInhibitor {
     pub h_init: f64,
     /// Hormone concentration at the start.
     pub c_init: f64,
+    /// Cells, chosen at random from the seed, whose activator starts at `start_level`: the
+    /// system is excitable, so waves need a start.
+    pub starts: u32,
+    /// Activator concentration of the starting cells.
+    pub start_level: f64,
+    /// Width of each start, in cells.
+    pub start_width: u32,
+}
+
+/// Parameters of the coupled model of *Conus marmoreus* (our design from Fowler et al. 1992 §3.2
+/// and Meinhardt's account of triangles; see `pattern::coupled`):
+/// ∂a/∂t = ρ (a²/(1 + κa²) + ρ₀) − μa − γ a e⁴/(θ⁴ + e⁴) + D_a ∂²a/∂x²,
+/// ∂e/∂t = ρₑ f a/(a + kₐ) (e²/(1 + e²) + ρₑ₀) − μₑ e + Dₑ ∂²e/∂x²,
+/// ∂f/∂t = ν_f (1 − f) − ε_f ρₑ f a/(a + kₐ) e²/(1 + e²).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Coupled {
+    /// ρ: rate of the spreading reaction's autocatalysis.
+    pub rho: f64,
+    /// Relative random fluctuation of ρ from cell to cell.
+    pub rho_noise: f64,
+    /// ρ₀: base production of the spreading reaction.
+    pub rho0: f64,
+    /// μ: decay of the spreading reaction.
+    pub mu: f64,
+    /// D_a: diffusion of the spreading reaction (sets how fast triangles widen).
+    pub d_a: f64,
+    /// κ: saturation of its autocatalysis.
+    pub kappa: f64,
+    /// ρₑ: autocatalysis of the extinguisher.
+    pub rho_e: f64,
+    /// ρₑ₀: base production of the extinguisher where the reaction is active (its clock).
+    pub rho_e0: f64,
+    /// μₑ: decay of the extinguisher.
+    pub mu_e: f64,
+    /// Dₑ: diffusion of the extinguisher (spreads the extinction across a triangle).
+    pub d_e: f64,
+    /// kₐ: activity of the reaction at which the extinguisher's production is half on.
+    pub k_a: f64,
+    /// γ: strength of the extinction.
+    pub gamma: f64,
+    /// θ: extinguisher level at which the extinction is half on.
+    pub theta: f64,
+    /// ν_f: recovery of the extinguisher's substrate.
+    pub nu_f: f64,
+    /// ε_f: use of that substrate by the extinguisher's burst.
+    pub eps_f: f64,
+    /// Starts of the spreading reaction, placed by the seed.
+    pub starts: u32,
+    /// Level of the reaction at a start.
+    pub start_level: f64,
+    /// Width of each start, in cells.
+    pub start_width: u32,
 }

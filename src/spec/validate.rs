@@ -67,7 +67,20 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
         ));
     }
     if spec.pattern.model != Model::None {
-        let cells = spec.pattern.cells;
+        let most = crate::texture_layout::MAX_SIDE / spec.pattern.refinement.max(1);
+        if spec.pattern.cells > most {
+            problems.push(Problem::new(
+                "pattern.cells",
+                format!(
+                    "{} cells refined {} times make {} columns, more than the pattern texture's 2048; used {most} cells",
+                    spec.pattern.cells,
+                    spec.pattern.refinement,
+                    spec.pattern.cells * spec.pattern.refinement
+                ),
+            ));
+            spec.pattern.cells = most;
+        }
+        let cells = spec.pattern.cells * spec.pattern.refinement.max(1);
         if TextureLayout::new(cells, spec.growth.rows).is_none() {
             let fit = TextureLayout::max_rows(cells);
             problems.push(Problem::new(
@@ -79,15 +92,16 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
             ));
             spec.growth.rows = fit;
         }
-        let updates =
-            u64::from(cells) * u64::from(spec.growth.rows) * u64::from(spec.pattern.iterations);
+        // Refinement k computes k² steps per iteration on k× the cells (`cells` counts them).
+        let k = u64::from(spec.pattern.refinement.max(1));
+        let per_iteration = u64::from(cells) * u64::from(spec.growth.rows) * k * k;
+        let updates = per_iteration * u64::from(spec.pattern.iterations);
         if updates > MAX_CELL_UPDATES {
-            let fit =
-                (MAX_CELL_UPDATES / (u64::from(cells) * u64::from(spec.growth.rows))).max(1) as u32;
+            let fit = (MAX_CELL_UPDATES / per_iteration).max(1) as u32;
             problems.push(Problem::new(
                 "pattern.iterations",
                 format!(
-                    "cells × rows × iterations = {updates} cell updates, more than the cap of {MAX_CELL_UPDATES}; used {fit} iterations per row"
+                    "cells × rows × iterations (× refinement³) = {updates} cell updates, more than the cap of {MAX_CELL_UPDATES}; used {fit} iterations per row"
                 ),
             ));
             spec.pattern.iterations = fit;

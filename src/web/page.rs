@@ -44,3 +44,16 @@ pub fn show_error(text: &str) {
     show_message(text);
     signal("state", "error");
 }
+
+/// The page's background colour as sRGB bytes, following the light or dark theme (the same
+/// values as --bg in style.css).
+pub fn background() -> [u8; 3] {
+    let dark = web_sys::window()
+        .and_then(|w| w.match_media("(prefers-color-scheme: dark)").ok().flatten())
+        .is_some_and(|m| m.matches());
+    if dark {
+        [0x16, 0x17, 0x19]
+    } else {
+        [0xf4, 0xf1, 0xea]
+    }
+}

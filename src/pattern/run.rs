@@ -1,0 +1,127 @@
+//! A pattern being grown: the model, the colours, every row so far as RGBA (the texture and
+//! the planar view), and a hash of the recorded values that is the same on every platform
+//! for the same spec.
+
+use super::{EdgeModel, PatternError, build};
+use crate::spec::ShellSpec;
+use crate::spec::colour::Rgb;
+
+/// FNV-1a, 64 bits, over the bytes given.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Fnv(u64);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv {
+    pub fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+
+    pub fn value(self) -> u64 {
+        self.0
+    }
+}
+
+/// The pattern of one shell, row by row.
+pub struct PatternRun {
+    model: Box<dyn EdgeModel>,
+    ground: Rgb,
+    pigment: Rgb,
+    low: f64,
+    high: f64,
+    cells: usize,
+    rows: usize,
+    rgba: Vec<u8>,
+    shade: Vec<f32>,
+    hash: Fnv,
+}
+
+impl PatternRun {
+    /// The pattern a spec asks for, with its first row (the starting state) recorded; `None`
+    /// when the spec has no pattern model.
+    pub fn new(spec: &ShellSpec) -> Result<Option<Self>, PatternError> {
+        let Some(model) = build(&spec.pattern, spec.seed)? else {
+            return Ok(None);
+        };
+        let cells = model.recorded().len();
+        let mut run = Self {
+            model,
+            ground: spec.colours.ground,
+            pigment: spec.colours.pigment,
+            low: spec.pattern.low,
+            high: spec.pattern.high,
+            cells,
+            rows: 0,
+            rgba: Vec::with_capacity(cells * 4 * spec.growth.rows as usize),
+            shade: vec![0.0; cells],
+            hash: Fnv::default(),
+        };
+        run.record();
+        Ok(Some(run))
+    }
+
+    fn record(&mut self) {
+        for x in self.model.recorded() {
+            self.hash.write(&x.to_bits().to_le_bytes());
+        }
+        self.model.pigment(self.low, self.high, &mut self.shade);
+        for &p in &self.shade {
+            let c = self.ground.mix(self.pigment, p);
+            self.rgba.extend_from_slice(&[c.0[0], c.0[1], c.0[2], 255]);
+        }
+        self.rows += 1;
+    }
+
+    /// Computes and records the next row.
+    pub fn advance(&mut self) -> Result<(), PatternError> {
+        self.model
+            .advance_row()
+            .map_err(|e| PatternError(format!("at row {}, {e}", self.rows)))?;
+        self.record();
+        Ok(())
+    }
+
+    /// Cells per row.
+    pub fn cells(&self) -> usize {
+        self.cells
+    }
+
+    /// Rows recorded so far.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// All rows so far, `cells × 4` bytes each.
+    pub fn rgba(&self) -> &[u8] {
+        &self.rgba
+    }
+
+    /// The recorded values of the latest row.
+    pub fn recorded(&self) -> &[f64] {
+        self.model.recorded()
+    }
+
+    /// Hash of every recorded value so far, bit for bit.
+    pub fn hash(&self) -> u64 {
+        self.hash.value()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fnv_matches_the_reference_values() {
+        let mut h = Fnv::default();
+        assert_eq!(h.value(), 0xcbf29ce484222325);
+        h.write(b"a");
+        assert_eq!(h.value(), 0xaf63dc4c8601ec8c);
+    }
+}

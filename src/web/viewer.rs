@@ -1,0 +1,220 @@
+//! The viewer: one canvas and its renderer, the shell growing on it, its planar pattern beside
+//! it, and the camera the pointer turns. Loading another spec restarts growth without
+//! reloading the page.
+
+use super::page;
+use super::planar::Planar;
+use crate::camera::OrbitCamera;
+use crate::generator::{Advance, Generator};
+use crate::gestures::{Pointers, wheel_zoom};
+use crate::render::{Renderer, ShellLook};
+use crate::spec::ShellSpec;
+use crate::species::Preset;
+use crate::texture_layout::TextureLayout;
+use web_sys::HtmlCanvasElement;
+
+/// Milliseconds of a frame that growth may take, so that no speed can freeze the tab.
+const GROWTH_BUDGET_MS: f64 = 12.0;
+
+/// A shell being grown.
+pub struct Growing {
+    pub preset: &'static Preset,
+    pub generator: Generator,
+    camera: OrbitCamera,
+    planar: Option<Planar>,
+}
+
+pub struct Viewer {
+    renderer: Renderer,
+    canvas: HtmlCanvasElement,
+    planar_canvas: HtmlCanvasElement,
+    pub pointers: Pointers,
+    growing: Option<Growing>,
+    /// Whether growth advances each frame.
+    pub playing: bool,
+    /// Rows per frame.
+    pub speed: f64,
+    carry: f64,
+    dirty: bool,
+}
+
+fn now() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map_or(0.0, |p| p.now())
+}
+
+impl Viewer {
+    pub async fn new(
+        canvas: HtmlCanvasElement,
+        planar_canvas: HtmlCanvasElement,
+    ) -> Result<Self, String> {
+        let mut renderer = Renderer::new(canvas.clone()).await?;
+        renderer.set_background(page::background());
+        Ok(Self {
+            renderer,
+            canvas,
+            planar_canvas,
+            pointers: Pointers::default(),
+            growing: None,
+            playing: true,
+            speed: 1.0,
+            carry: 0.0,
+            dirty: true,
+        })
+    }
+
+    /// "WebGPU" or "WebGL2".
+    pub fn backend(&self) -> &'static str {
+        self.renderer.backend()
+    }
+
+    /// The shell being grown.
+    pub fn growing(&self) -> Option<&Growing> {
+        self.growing.as_ref()
+    }
+
+    /// Starts growing `spec` from its apex.
+    pub fn load(&mut self, preset: &'static Preset, spec: ShellSpec) -> Result<(), String> {
+        let generator =
+            Generator::new(&spec).map_err(|e| format!("This shell cannot be built: {e}"))?;
+        let pattern = generator
+            .pattern()
+            .map(|p| (p.cells() as u32, spec.growth.rows));
+        let layout = pattern.and_then(|(cells, rows)| TextureLayout::new(cells, rows));
+        self.renderer.load_shell(
+            generator.capacity(),
+            layout,
+            ShellLook::new(&spec.colours, spec.rows_per_whorl()),
+        );
+        let (bounds, front) = generator.framing();
+        let camera = OrbitCamera::framing(
+            &bounds,
+            front,
+            preset.view.yaw.to_radians(),
+            preset.view.pitch.to_radians(),
+        );
+        let planar = Planar::new(self.planar_canvas.clone(), pattern);
+        self.speed = spec.growth.speed;
+        self.carry = 0.0;
+        self.growing = Some(Growing {
+            preset,
+            generator,
+            camera,
+            planar,
+        });
+        let grown = self
+            .growing
+            .as_ref()
+            .map(|g| g.generator.grown())
+            .unwrap_or_default();
+        self.upload(&grown);
+        self.dirty = true;
+        page::signal("state", "loading");
+        Ok(())
+    }
+
+    fn upload(&mut self, advance: &Advance) {
+        let Some(g) = &self.growing else { return };
+        let rgba = g.generator.pattern().map_or(&[][..], |p| {
+            let row = p.cells() * 4;
+            &p.rgba()[advance.rows.start * row..advance.rows.end * row]
+        });
+        self.renderer
+            .upload(g.generator.mesh(), g.generator.edge(), advance, rgba);
+        if let Some(planar) = &g.planar {
+            planar.draw_rows(advance.rows.start as u32, rgba);
+        }
+        page::signal("rows", &g.generator.rows_done().to_string());
+    }
+
+    /// Grows up to `rows` rows now (within the frame's budget).
+    pub fn grow(&mut self, rows: usize) {
+        let Some(g) = &mut self.growing else { return };
+        let deadline = now() + GROWTH_BUDGET_MS;
+        let advance = g.generator.advance_while(rows, || now() < deadline);
+        self.upload(&advance);
+        self.dirty = true;
+    }
+
+    /// Keeps the drawing buffer at the canvas's size in device pixels.
+    fn fit_canvas(&mut self) {
+        let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
+        let width = (f64::from(self.canvas.client_width()) * dpr).round() as u32;
+        let height = (f64::from(self.canvas.client_height()) * dpr).round() as u32;
+        if width > 0 && height > 0 && (width, height) != (self.canvas.width(), self.canvas.height())
+        {
+            self.canvas.set_width(width);
+            self.canvas.set_height(height);
+            self.renderer.resize(width, height);
+            self.dirty = true;
+        }
+    }
+
+    /// One animation frame: grow at the current speed, draw if anything changed.
+    pub fn frame(&mut self) -> Result<(), String> {
+        if let Some(failure) = self.renderer.failure() {
+            return Err(failure);
+        }
+        self.fit_canvas();
+        let growing = self
+            .growing
+            .as_ref()
+            .is_some_and(|g| !g.generator.is_done());
+        if growing && self.playing {
+            self.carry += self.speed;
+            let rows = self.carry.floor();
+            self.carry -= rows;
+            if rows > 0.0 {
+                self.grow(rows as usize);
+            }
+        }
+        if !self.dirty {
+            return Ok(());
+        }
+        let Some(g) = &self.growing else {
+            return Ok(());
+        };
+        self.renderer.draw(&g.camera)?;
+        self.dirty = false;
+        if let Some(failure) = g.generator.failure() {
+            page::show_message(failure);
+            page::signal("state", "stopped");
+        } else if g.generator.is_done() {
+            if let Some(p) = g.generator.pattern() {
+                page::signal("pattern-hash", &format!("{:016x}", p.hash()));
+            }
+            page::signal("state", "grown");
+        } else {
+            page::signal("state", "growing");
+        }
+        Ok(())
+    }
+
+    /// The camera of the shell being grown, for the pointer and keyboard.
+    pub fn camera_mut(&mut self) -> Option<&mut OrbitCamera> {
+        self.dirty = true;
+        self.growing.as_mut().map(|g| &mut g.camera)
+    }
+
+    /// A pointer moved to (x, y) CSS pixels.
+    pub fn pointer_moved(&mut self, id: i32, x: f32, y: f32) {
+        let height = self.canvas.client_height().max(1) as f32;
+        if let Some(g) = &mut self.growing {
+            if self.pointers.moved(id, x, y, height, &mut g.camera) {
+                self.dirty = true;
+            }
+        }
+    }
+
+    /// A wheel turned by `delta` pixels.
+    pub fn wheel(&mut self, delta: f64) {
+        if let Some(camera) = self.camera_mut() {
+            camera.zoom_by(wheel_zoom(delta));
+        }
+    }
+
+    pub fn canvas(&self) -> &HtmlCanvasElement {
+        &self.canvas
+    }
+}

@@ -1,0 +1,59 @@
+//! The generator grows mesh and pattern in step, and a pattern that cannot go on stops growth
+//! with a message instead of garbage.
+#![cfg(not(target_arch = "wasm32"))]
+
+use seashells_core::generator::Generator;
+use seashells_core::spec::pattern::Model;
+use seashells_core::species::{preset, presets};
+
+#[test]
+fn every_row_the_clock_counts_is_a_row_of_the_pattern() {
+    for p in presets()
+        .iter()
+        .filter(|p| p.spec.pattern.model != Model::None)
+    {
+        let mut g = Generator::new(&p.spec).unwrap();
+        let mut step = 3;
+        while !g.is_done() {
+            let a = g.advance(step);
+            let pattern = g.pattern().unwrap();
+            assert_eq!(pattern.rows(), g.rows_done(), "{}", p.id);
+            assert_eq!(pattern.rgba().len(), pattern.rows() * pattern.cells() * 4);
+            assert_eq!(a.rows.end, g.rows_done());
+            step = step % 11 + 1;
+        }
+        assert_eq!(g.rows_done(), p.spec.growth.rows as usize, "{}", p.id);
+        assert!(g.failure().is_none(), "{}: {:?}", p.id, g.failure());
+    }
+}
+
+#[test]
+fn advance_while_stops_when_told_but_grows_at_least_a_row() {
+    let mut g = Generator::new(&preset("oliva-porphyria").unwrap().spec).unwrap();
+    let a = g.advance_while(50, || false);
+    assert_eq!(a.rows, 1..2);
+    let mut budget = 5;
+    let b = g.advance_while(50, || {
+        budget -= 1;
+        budget > 0
+    });
+    assert_eq!(b.rows, 2..7);
+}
+
+#[test]
+fn a_diverging_pattern_stops_growth_with_a_message() {
+    let mut spec = preset("stripes").unwrap().spec.clone();
+    if let Model::ActivatorSubstrate(m) = &mut spec.pattern.model {
+        m.rho = 5.0;
+        m.sigma = 1.0;
+    }
+    let mut g = Generator::new(&spec).unwrap();
+    g.finish();
+    let message = g.failure().expect("the pattern must diverge");
+    assert!(
+        message.contains("row") && (message.contains("κ") || message.contains("ρ")),
+        "{message}"
+    );
+    assert!(g.is_done());
+    assert!(g.rows_done() < spec.growth.rows as usize);
+}
