@@ -61,6 +61,7 @@ test-browser: deps-browser
 	  wasm-pack test --headless --chrome --mode no-install
 
 test-page: build deps-browser
+	cargo build --release --bin seashells
 	node --test --test-concurrency=1 tests/page/
 
 test: deps lint test-native test-browser test-page

@@ -141,11 +141,9 @@ impl Generator {
         );
         let target = (self.rows_done + rows).min(self.rows);
         while self.failure.is_none() && self.rows_done < target {
-            if let Some(pattern) = &mut self.pattern {
-                if let Err(e) = pattern.advance() {
-                    self.failure = Some(format!("The pattern stopped {e}."));
-                    break;
-                }
+            if let Some(Err(e)) = self.pattern.as_mut().map(PatternRun::advance) {
+                self.failure = Some(format!("The pattern stopped {e}."));
+                break;
             }
             self.rows_done += 1;
         }

@@ -1,7 +1,9 @@
 //! Seashells grown rim by rim: the pure core (geometry, pattern models, the spec and its link
 //! codec, presets) and, on wasm32, the thin renderer and web adapters.
 
+pub mod bench;
 pub mod camera;
+pub mod export;
 pub mod generator;
 pub mod geometry;
 pub mod gestures;
@@ -12,7 +14,6 @@ pub mod spec;
 pub mod species;
 pub mod texture_layout;
 
-pub mod export;
 #[cfg(target_arch = "wasm32")]
 pub mod render;
 #[cfg(target_arch = "wasm32")]

@@ -4,6 +4,7 @@
 //!     seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv}
 //!                       [--cells N] [--rows N] [--iterations N]
 //!     seashells presets
+//!     seashells bench
 //!
 //! A wrong preset, link, option or extension gets one line on stderr and a non-zero exit.
 
@@ -20,7 +21,7 @@ use std::process::ExitCode;
 
 const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} | \
 seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N] | \
-seashells presets";
+seashells presets | seashells bench";
 
 /// Options given as `--name value`.
 struct Options(BTreeMap<String, String>);
@@ -108,12 +109,12 @@ fn count(options: &Options, name: &str, key: &str) -> Result<Option<u32>, String
     let n: u32 = text
         .parse()
         .map_err(|_| format!("--{name} takes a whole number, not '{text}'"))?;
-    if let Some(Kind::Integer { min, max }) = fields::field(key).map(|f| f.kind) {
-        if !(min..=max).contains(&u64::from(n)) {
-            return Err(format!("--{name} must be between {min} and {max}, not {n}"));
+    match fields::field(key).map(|f| f.kind) {
+        Some(Kind::Integer { min, max }) if !(min..=max).contains(&u64::from(n)) => {
+            Err(format!("--{name} must be between {min} and {max}, not {n}"))
         }
+        _ => Ok(Some(n)),
     }
-    Ok(Some(n))
 }
 
 fn pattern(args: &[String]) -> Result<String, String> {
@@ -174,6 +175,16 @@ fn pattern(args: &[String]) -> Result<String, String> {
     ))
 }
 
+/// Prints the benchmark's figures, timed with the native clock.
+fn bench() -> String {
+    let origin = std::time::Instant::now();
+    let now = || origin.elapsed().as_secs_f64() * 1000.0;
+    format!(
+        "native\n{}",
+        seashells_core::bench::report(&seashells_core::bench::run(&now))
+    )
+}
+
 fn list() -> String {
     let lines: Vec<String> = presets()
         .iter()
@@ -188,6 +199,7 @@ fn main() -> ExitCode {
         Some("mesh") => mesh(&args[1..]),
         Some("pattern") => pattern(&args[1..]),
         Some("presets") => Ok(list()),
+        Some("bench") => Ok(bench()),
         Some(other) => Err(format!("unknown command '{other}' ({USAGE})")),
         None => Err(USAGE.to_string()),
     };

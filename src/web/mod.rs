@@ -28,6 +28,14 @@ pub fn install_panic_hook() {
 
 type Shared = Rc<RefCell<Viewer>>;
 
+/// The benchmark's figures in this browser, as text (see `crate::bench`).
+#[wasm_bindgen]
+pub fn benchmark() -> String {
+    let performance = web_sys::window().and_then(|w| w.performance());
+    let now = || performance.as_ref().map_or(0.0, |p| p.now());
+    crate::bench::report(&crate::bench::run(&now))
+}
+
 /// The shell the link's fragment asks for; what could not be used is said on the page.
 fn requested_shell() -> Decoded {
     let hash = web_sys::window()

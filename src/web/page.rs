@@ -16,10 +16,11 @@ pub fn element(id: &str) -> Option<HtmlElement> {
     document().get_element_by_id(id)?.dyn_into().ok()
 }
 
-/// Sets `data-<key>` on <body>.
+/// Sets `data-<key>` on <body>; `key` is in the dataset's camelCase (`patternHash` sets
+/// `data-pattern-hash`).
 pub fn signal(key: &str, value: &str) {
     if let Some(body) = document().body() {
-        // A dataset write cannot fail for a plain lowercase key.
+        // A dataset write fails only for keys with a hyphen, which this page never uses.
         let _ = body.dataset().set(key, value);
     }
 }

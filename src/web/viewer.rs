@@ -182,7 +182,7 @@ impl Viewer {
             page::signal("state", "stopped");
         } else if g.generator.is_done() {
             if let Some(p) = g.generator.pattern() {
-                page::signal("pattern-hash", &format!("{:016x}", p.hash()));
+                page::signal("patternHash", &format!("{:016x}", p.hash()));
             }
             page::signal("state", "grown");
         } else {
@@ -200,10 +200,10 @@ impl Viewer {
     /// A pointer moved to (x, y) CSS pixels.
     pub fn pointer_moved(&mut self, id: i32, x: f32, y: f32) {
         let height = self.canvas.client_height().max(1) as f32;
-        if let Some(g) = &mut self.growing {
-            if self.pointers.moved(id, x, y, height, &mut g.camera) {
-                self.dirty = true;
-            }
+        if let Some(g) = &mut self.growing
+            && self.pointers.moved(id, x, y, height, &mut g.camera)
+        {
+            self.dirty = true;
         }
     }
 
