@@ -85,6 +85,7 @@ fn model_name(model: &Model) -> &'static str {
         Model::ActivatorSubstrate(_) => "eq 8",
         Model::ActivatorInhibitor(_) => "eq 9",
         Model::Coupled(_) => "coupled",
+        Model::Automaton(_) => "automaton",
     }
 }
 

@@ -18,6 +18,8 @@ pub enum Group {
     Shapes,
     /// Reaction-diffusion pigmentation of the same paper, §3.
     Pigmentation,
+    /// Pigmentation by the vector cellular automaton.
+    Automaton,
 }
 
 impl Group {
@@ -26,6 +28,7 @@ impl Group {
         match self {
             Group::Shapes => "Shell shapes",
             Group::Pigmentation => "Pigmentation patterns",
+            Group::Automaton => "Cellular automaton",
         }
     }
 }

@@ -4,6 +4,8 @@
 
 pub mod activator_inhibitor;
 pub mod activator_substrate;
+pub mod automaton;
+pub mod automaton_rule;
 pub mod coupled;
 pub mod diffusion;
 pub mod grid;
@@ -61,6 +63,11 @@ pub fn check_stability(d: (&str, f64), decay: (&str, f64)) -> Result<(), Pattern
 
 /// The model a pattern spec describes, or `None` for a shell without pattern.
 pub fn build(spec: &PatternSpec, seed: u64) -> Result<Option<Box<dyn EdgeModel>>, PatternError> {
+    if spec.cells == 0 && spec.model != Model::None {
+        return Err(PatternError(
+            "the growing edge needs at least one cell".into(),
+        ));
+    }
     Ok(match &spec.model {
         Model::None => None,
         Model::ActivatorSubstrate(p) => Some(Box::new(
@@ -70,6 +77,7 @@ pub fn build(spec: &PatternSpec, seed: u64) -> Result<Option<Box<dyn EdgeModel>>
             activator_inhibitor::ActivatorInhibitor::new(p, spec, seed)?,
         )),
         Model::Coupled(p) => Some(Box::new(coupled::Coupled::new(p, spec, seed)?)),
+        Model::Automaton(p) => Some(Box::new(automaton::Automaton::new(p, spec, seed)?)),
     })
 }
 

@@ -57,6 +57,8 @@ pub enum Kind {
         width: usize,
         integer: bool,
     },
+    /// Rows of whole numbers of any length, written "0,1,1;0,0,1".
+    Table,
     /// Free text, checked by the model that reads it.
     Text,
 }
@@ -157,7 +159,7 @@ pub const FIELDS: &[Field] = &[
     f("pattern.boundary", Pattern, "", "ends of the edge", Kind::Choice(&["zero_flux", "periodic"])),
     f("pattern.low", Pattern, "", "value shown as no pigment", real(-1000.0, 1000.0)),
     f("pattern.high", Pattern, "", "value shown as full pigment", real(-1000.0, 1000.0)),
-    f("pattern.model.kind", Pattern, "", "model", Kind::Choice(&["none", "activator_substrate", "activator_inhibitor", "coupled"])),
+    f("pattern.model.kind", Pattern, "", "model", Kind::Choice(&["none", "activator_substrate", "activator_inhibitor", "coupled", "automaton"])),
     f("pattern.model.rho", Pattern, "ρ", "autocatalysis rate", log(1e-4, 10.0)),
     f("pattern.model.rho_noise", Pattern, "", "random fluctuation of ρ (fraction)", real(0.0, 0.5)),
     f("pattern.model.rho0", Pattern, "ρ₀", "base production of the activator", log(1e-6, 1.0)),
@@ -189,6 +191,14 @@ pub const FIELDS: &[Field] = &[
     f("pattern.model.theta", Pattern, "θ", "extinguisher level of half extinction", log(1e-3, 10.0)),
     f("pattern.model.nu_f", Pattern, "ν_f", "recovery of the extinguisher's substrate", log(1e-6, 1.0)),
     f("pattern.model.eps_f", Pattern, "ε_f", "use of that substrate by the extinguisher", log(1e-5, 10.0)),
+    f("pattern.model.rule", Pattern, "", "automaton rule a/b-c/d, or custom", Kind::Text),
+    f("pattern.model.f", Pattern, "f", "custom prepigment table (p = 0; p = 1)", Kind::Table),
+    f("pattern.model.g", Pattern, "g", "custom activity table (p = 0; p = 1)", Kind::Table),
+    f("pattern.model.start_cells", Pattern, "", "starting cells, by position", Kind::List { width: 1, integer: true }),
+    f("pattern.model.random_starts", Pattern, "", "starting cells placed by the seed", int(0, 2048)),
+    f("pattern.model.start_value", Pattern, "x(j,0)", "prepigment of a starting cell", int(1, 255)),
+    f("pattern.model.start_activity", Pattern, "p(j,0)", "activity of a starting cell", int(0, 1)),
+    f("pattern.model.colour_by", Pattern, "", "colour by", Kind::Choice(&["prepigment", "activity", "both"])),
     f("colours.ground", Colours, "", "shell ground", Kind::Colour),
     f("colours.pigment", Colours, "", "pigment", Kind::Colour),
     f("colours.interior", Colours, "", "inside of the wall", Kind::Colour),

@@ -171,6 +171,17 @@ fn parse_list(text: &str, width: usize, integer: bool) -> Result<Value, String> 
         .map(Value::Array)
 }
 
+/// Rows of whole numbers of any length: "0,1,1;0,0,1" (empty text: no rows).
+fn parse_table(text: &str) -> Result<Value, String> {
+    if text.trim().is_empty() {
+        return Ok(Value::Array(vec![]));
+    }
+    text.split(';')
+        .map(|row| parse_list(row, 1, true))
+        .collect::<Result<_, _>>()
+        .map(Value::Array)
+}
+
 /// Reads `text` as the value of `field`, shaped like `current`. Out-of-range numbers are
 /// clamped; the second item says so.
 fn parse_value(
@@ -218,6 +229,7 @@ fn parse_value(
         (Some(Kind::List { width, integer }), _) => {
             parse_list(text, width, integer).map(|v| (v, None))
         }
+        (Some(Kind::Table), _) => parse_table(text).map(|v| (v, None)),
         (Some(Kind::Text), _) | (None, Value::String(_)) => {
             Ok((Value::String(text.to_string()), None))
         }

@@ -61,6 +61,44 @@ pub enum Model {
     /// A spreading reaction switched off by a second reaction-diffusion system (the triangles
     /// of *Conus marmoreus*, fig 15).
     Coupled(Coupled),
+    /// The vector cellular automaton of prepigment and activity (the 1/6-8/5 rule family).
+    Automaton(Automaton),
+}
+
+/// What colours the shell under the automaton.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ColourBy {
+    /// The prepigment count, mapped from `low..high`.
+    Prepigment,
+    /// The activity: active cells are pigmented.
+    Activity,
+    /// Active cells fully pigmented, the others by their prepigment.
+    Both,
+}
+
+/// Parameters of the vector cellular automaton: x(i, t+1) = f(p, m), p(i, t+1) = g(p, m),
+/// m = x(i−1, t) + x(i, t) + x(i+1, t) (eqs 2–4).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Automaton {
+    /// A rule "a/b-c/d" (zeros in f's and g's rows), or "custom" for the tables below.
+    pub rule: String,
+    /// A custom table f: two rows (mother inactive, active) of daughter prepigment by sum m.
+    #[serde(default)]
+    pub f: Vec<Vec<u32>>,
+    /// A custom table g: two rows of daughter activity (0 or 1) by sum m.
+    #[serde(default)]
+    pub g: Vec<Vec<u32>>,
+    /// Cells that start with prepigment, by position along the edge.
+    pub start_cells: Vec<u32>,
+    /// Further starting cells placed by the seed.
+    pub random_starts: u32,
+    /// Prepigment of a starting cell.
+    pub start_value: u32,
+    /// Activity of a starting cell (0 or 1).
+    pub start_activity: u32,
+    pub colour_by: ColourBy,
 }
 
 /// Parameters of eq 8:

@@ -5,7 +5,8 @@
 use super::ShellSpec;
 use super::form::{CurveSpec, Form, SweepSpec};
 use super::link::Problem;
-use super::pattern::Model;
+use super::pattern::{Automaton, Model, PatternSpec};
+use crate::pattern::automaton::rule_of;
 use crate::texture_layout::TextureLayout;
 
 /// Most vertices a shell's mesh may have (72 MB of vertex data).
@@ -106,6 +107,7 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
             ));
             spec.pattern.iterations = fit;
         }
+        problems.extend(repair_automaton(&mut spec.pattern, &fallback.pattern));
         if spec.pattern.low >= spec.pattern.high {
             problems.push(Problem::new(
                 "pattern.low",
@@ -116,6 +118,47 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
             ));
             spec.pattern.low = fallback.pattern.low;
             spec.pattern.high = fallback.pattern.high;
+        }
+    }
+    problems
+}
+
+/// The automaton's rule must parse, its starting cells lie on the edge, and, being discrete,
+/// it has no refinement.
+fn repair_automaton(pattern: &mut PatternSpec, fallback: &PatternSpec) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    let cells = pattern.cells;
+    if !matches!(pattern.model, Model::Automaton(_)) {
+        return problems;
+    }
+    if pattern.refinement != 1 {
+        problems.push(Problem::new(
+            "pattern.refinement",
+            "the automaton is discrete and cannot be refined; used 1",
+        ));
+        pattern.refinement = 1;
+    }
+    let Model::Automaton(a) = &mut pattern.model else {
+        return problems;
+    };
+    if let Err(e) = rule_of(a) {
+        let (rule, f, g) = match &fallback.model {
+            Model::Automaton(Automaton { rule, f, g, .. }) => (rule.clone(), f.clone(), g.clone()),
+            _ => ("1/6-8/5".to_string(), vec![], vec![]),
+        };
+        problems.push(Problem::new(
+            "pattern.model.rule",
+            format!("{e}; used the rule {rule}"),
+        ));
+        (a.rule, a.f, a.g) = (rule, f, g);
+    }
+    if let Some(&beyond) = a.start_cells.iter().find(|&&c| c >= cells) {
+        problems.push(Problem::new(
+            "pattern.model.start_cells",
+            format!("cell {beyond} is beyond the edge's {cells} cells; used the last cell"),
+        ));
+        for c in &mut a.start_cells {
+            *c = (*c).min(cells.saturating_sub(1));
         }
     }
     problems
