@@ -36,7 +36,7 @@ fn perturbed(preset: usize, changes: &[(usize, f64)]) -> Option<(usize, ShellSpe
                 Value::String(options[(x * options.len() as f64) as usize % options.len()].into())
             }
             Kind::Colour => Value::String(format!("{:06x}", (x * 16_777_215.0) as u32)),
-            Kind::List { .. } | Kind::Text => continue,
+            Kind::List { .. } | Kind::Table | Kind::Text => continue,
         };
     }
     let mut spec: ShellSpec = serde_json::from_value(value).ok()?;
