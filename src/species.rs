@@ -63,7 +63,16 @@ pub struct View {
     pub pitch: f32,
 }
 
-/// Every preset, in gallery order (by group, then file name). A preset file that does not
+/// The figure a source names ("…, fig. 12" gives 12), for ordering; none sorts last.
+fn figure(source: &str) -> u32 {
+    source
+        .rsplit_once("fig. ")
+        .and_then(|(_, rest)| rest.split(|c: char| !c.is_ascii_digit()).next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(u32::MAX)
+}
+
+/// Every preset, in gallery order (by group, then the figure it reproduces, then file name). A preset file that does not
 /// parse is a build defect, caught by the native tests; here it panics with the file's name.
 pub fn presets() -> &'static [Preset] {
     static PRESETS: OnceLock<Vec<Preset>> = OnceLock::new();
@@ -77,7 +86,7 @@ pub fn presets() -> &'static [Preset] {
                 preset
             })
             .collect();
-        all.sort_by_key(|p| p.group);
+        all.sort_by_key(|p| (p.group, figure(&p.source), p.id));
         all
     })
 }

@@ -3,6 +3,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
+use seashells_core::generator::Generator;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{FIELDS, Kind};
 use seashells_core::spec::link::{MAX_LINK, decode, encode, flatten};
@@ -62,6 +63,7 @@ proptest! {
     #[test]
     fn any_text_gives_a_shell_and_never_panics(text in ".{0,200}") {
         let decoded = decode(&text);
+        prop_assert!(Generator::new(&decoded.spec).is_ok());
         let again = decode(&encode(decoded.preset, &decoded.spec));
         prop_assert!(again.problems.is_empty());
         prop_assert_eq!(again.spec, decoded.spec);
@@ -169,6 +171,16 @@ const BAD_LINKS: &[(&str, &str, &str)] = &[
         "not a key",
     ),
     ("nonsense-preset", "preset", "no preset"),
+    (
+        "v=1&preset=oliva-porphyria&pattern.model.d_a=0.9",
+        "pattern.model.d_a",
+        "used 0.475",
+    ),
+    (
+        "v=1&preset=stripes&pattern.model.d_s=0.5&pattern.model.nu=0.4",
+        "pattern.model.d_s",
+        "4·D_s + ν ≤ 2",
+    ),
 ];
 
 #[test]
@@ -191,6 +203,9 @@ fn bad_links_get_specific_messages_and_still_give_a_shell() {
             "{link} repaired into an invalid spec: {:?}",
             again.problems
         );
+        if let Err(e) = Generator::new(&decoded.spec) {
+            panic!("{link} was repaired into a spec that cannot be built: {e}");
+        }
     }
 }
 
@@ -215,4 +230,40 @@ fn every_leaf_of_every_preset_is_described_in_the_field_table() {
             "{leaf} has no description in spec::fields"
         );
     }
+}
+
+#[test]
+fn a_panel_edit_is_read_like_a_link_value() {
+    use seashells_core::spec::link::with;
+    use seashells_core::spec::pattern::Model;
+    let oliva = seashells_core::species::preset("oliva-porphyria").unwrap();
+    let edited = with(oliva, &oliva.spec, "pattern.model.d_a", "0.02");
+    assert!(edited.problems.is_empty());
+    assert_eq!(
+        encode(oliva, &edited.spec),
+        "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02"
+    );
+    let Model::ActivatorInhibitor(m) = &edited.spec.pattern.model else {
+        panic!("eq 9")
+    };
+    assert_eq!(m.d_a, 0.02);
+    assert_eq!(edited.spec.seed, oliva.spec.seed, "an edit keeps the seed");
+
+    let clamped = with(oliva, &edited.spec, "pattern.model.d_a", "3");
+    assert_eq!(
+        clamped.problems.len(),
+        1,
+        "one message per key: {:?}",
+        clamped.problems
+    );
+    let message = &clamped.problems[0].message;
+    assert!(
+        message.contains("used 0.5, then") && message.ends_with("used 0.475"),
+        "{message}"
+    );
+
+    let switched = with(oliva, &edited.spec, "pattern.model.kind", "automaton");
+    assert!(switched.problems.is_empty(), "{:?}", switched.problems);
+    assert!(matches!(switched.spec.pattern.model, Model::Automaton(_)));
+    assert_eq!(decode(&encode(oliva, &switched.spec)).spec, switched.spec);
 }

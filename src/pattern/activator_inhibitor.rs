@@ -16,7 +16,7 @@ use super::diffusion::laplacian;
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
-use super::{EdgeModel, PatternError, check_finite, check_stability};
+use super::{EdgeModel, PatternError, check_finite};
 use crate::spec::pattern::{ActivatorInhibitor as Params, PatternSpec};
 
 pub struct ActivatorInhibitor {
@@ -32,8 +32,6 @@ pub struct ActivatorInhibitor {
 
 impl ActivatorInhibitor {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
-        check_stability(("D_a", p.d_a), ("μ", p.mu))?;
-        check_stability(("D_h", p.d_h), ("ν", 0.0))?;
         if p.eta > 1.0 {
             return Err(PatternError(format!(
                 "η = {} makes the hormone overshoot: explicit Euler needs η ≤ 1",

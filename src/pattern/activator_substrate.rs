@@ -11,7 +11,7 @@
 use super::diffusion::laplacian;
 use super::grid::Grid;
 use super::noise::Noise;
-use super::{EdgeModel, PatternError, check_finite, check_stability};
+use super::{EdgeModel, PatternError, check_finite};
 use crate::spec::pattern::{ActivatorSubstrate as Params, PatternSpec};
 use std::f64::consts::TAU;
 
@@ -28,8 +28,6 @@ pub struct ActivatorSubstrate {
 
 impl ActivatorSubstrate {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
-        check_stability(("D_a", p.d_a), ("μ", p.mu))?;
-        check_stability(("D_s", p.d_s), ("ν", p.nu))?;
         let grid = Grid::new(spec);
         let mut noise = Noise::new(seed, 1);
         let rho = (0..grid.cells)

@@ -28,7 +28,7 @@ use super::diffusion::laplacian;
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
-use super::{EdgeModel, PatternError, check_finite, check_stability};
+use super::{EdgeModel, PatternError, check_finite};
 use crate::spec::pattern::{Coupled as Params, PatternSpec};
 
 pub struct Coupled {
@@ -44,8 +44,6 @@ pub struct Coupled {
 
 impl Coupled {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
-        check_stability(("D_a", p.d_a), ("μ", p.mu + p.gamma))?;
-        check_stability(("Dₑ", p.d_e), ("μₑ", p.mu_e))?;
         let grid = Grid::new(spec);
         let mut noise = Noise::new(seed, 1);
         let rho = (0..grid.cells)

@@ -63,6 +63,54 @@ pub enum Kind {
     Text,
 }
 
+/// Positions of a slider over a real range.
+const SLIDER_STEPS: f64 = 1000.0;
+
+impl Kind {
+    /// The slider position (0 to 1000 for reals, the offset from `min` for whole numbers) of
+    /// a value; logarithmic ranges move by equal ratios.
+    pub fn slider_position(self, x: f64) -> f64 {
+        match self {
+            Kind::Real {
+                min,
+                max,
+                log: true,
+            } => SLIDER_STEPS * (x / min).ln() / (max / min).ln(),
+            Kind::Real { min, max, .. } => SLIDER_STEPS * (x - min) / (max - min),
+            Kind::Integer { min, .. } => x - min as f64,
+            _ => 0.0,
+        }
+    }
+
+    /// The value at a slider position.
+    pub fn slider_value(self, position: f64) -> f64 {
+        match self {
+            Kind::Real {
+                min,
+                max,
+                log: true,
+            } => min * (max / min).powf(position / SLIDER_STEPS),
+            Kind::Real { min, max, .. } => min + (max - min) * position / SLIDER_STEPS,
+            Kind::Integer { min, .. } => min as f64 + position,
+            _ => position,
+        }
+    }
+}
+
+/// A number shown with four significant digits, for a slider's live readout.
+pub fn display(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+    let s = format!("{x:.digits$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
 /// One field.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Field {
@@ -210,4 +258,38 @@ pub const FIELDS: &[Field] = &[
 /// The description of a key.
 pub fn field(key: &str) -> Option<&'static Field> {
     FIELDS.iter().find(|f| f.key == key)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sliders_map_both_ways() {
+        for kind in [log(0.001, 10.0), real(-2.0, 3.0), int(8, 2048)] {
+            for x in [0.002, 0.5, 1.0, 9.0, 100.0] {
+                let back = kind.slider_value(kind.slider_position(x));
+                assert!(
+                    (back - x).abs() < 1e-9 * x.abs().max(1.0),
+                    "{kind:?}: {x} → {back}"
+                );
+            }
+        }
+        assert_eq!(display(0.0150004), "0.015");
+        assert_eq!(display(1234.6), "1235");
+        assert_eq!(display(-0.5), "-0.5");
+    }
+
+    #[test]
+    fn every_range_is_sound() {
+        for f in FIELDS {
+            match f.kind {
+                Kind::Real { min, max, log } => {
+                    assert!(min < max && (!log || min > 0.0), "{}", f.key)
+                }
+                Kind::Integer { min, max } => assert!(min < max, "{}", f.key),
+                _ => {}
+            }
+        }
+    }
 }

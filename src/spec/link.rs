@@ -385,7 +385,6 @@ pub fn decode(fragment: &str) -> Decoded {
             default_preset()
         }
     };
-    let mut value = to_value(&preset.spec);
     let mut seen = std::collections::BTreeSet::new();
     for (key, _) in &pairs {
         if !seen.insert(key.clone()) {
@@ -395,6 +394,29 @@ pub fn decode(fragment: &str) -> Decoded {
             ));
         }
     }
+    apply(preset, &preset.spec, pairs, problems)
+}
+
+/// `spec` (a variant of `preset`) with one more `key=value`, read exactly as a link's would be:
+/// what the editing panel uses.
+pub fn with(preset: &'static Preset, spec: &ShellSpec, key: &str, value: &str) -> Decoded {
+    apply(
+        preset,
+        spec,
+        vec![(key.to_string(), value.to_string())],
+        Vec::new(),
+    )
+}
+
+/// Applies `key=value` pairs (the last of a repeated key wins) to `spec`, then repairs it
+/// against the preset.
+fn apply(
+    preset: &'static Preset,
+    spec: &ShellSpec,
+    pairs: Vec<(String, String)>,
+    mut problems: Vec<Problem>,
+) -> Decoded {
+    let mut value = to_value(spec);
     let mut last: BTreeMap<String, String> = BTreeMap::new();
     let mut order = Vec::new();
     for (k, v) in pairs {
@@ -464,6 +486,21 @@ pub fn decode(fragment: &str) -> Decoded {
     Decoded {
         preset,
         spec,
-        problems,
+        problems: merged(problems),
     }
+}
+
+/// One problem per key, its messages in the order they arose ("…; used 0.5, then …").
+fn merged(problems: Vec<Problem>) -> Vec<Problem> {
+    let mut out: Vec<Problem> = Vec::with_capacity(problems.len());
+    for p in problems {
+        match out.iter_mut().find(|q| q.key == p.key) {
+            Some(q) => {
+                q.message.push_str(", then ");
+                q.message.push_str(&p.message);
+            }
+            None => out.push(p),
+        }
+    }
+    out
 }

@@ -7,6 +7,7 @@ use super::form::{CurveSpec, Form, SweepSpec};
 use super::link::Problem;
 use super::pattern::{Automaton, Model, PatternSpec};
 use crate::pattern::automaton::rule_of;
+use crate::pattern::diffusions;
 use crate::texture_layout::TextureLayout;
 
 /// Most vertices a shell's mesh may have (72 MB of vertex data).
@@ -106,6 +107,13 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
                 ),
             ));
             spec.pattern.iterations = fit;
+        }
+        for d in diffusions(&mut spec.pattern.model) {
+            if let Some(problem) = d.problem() {
+                let used = d.limit();
+                problems.push(Problem::new(d.key, format!("{problem}; used {used}")));
+                *d.value = used;
+            }
         }
         problems.extend(repair_automaton(&mut spec.pattern, &fallback.pattern));
         if spec.pattern.low >= spec.pattern.high {

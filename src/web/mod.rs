@@ -1,19 +1,25 @@
 //! The browser adapter: the wasm entry, the requestAnimationFrame loop, and the events that
-//! reach the viewer. Everything it shows comes from the pure core.
+//! reach the app. Everything it shows comes from the pure core.
 
+mod app;
+mod dom;
 mod download;
+mod gallery;
 mod page;
+mod panel;
 mod planar;
 mod viewer;
 
-use crate::export;
-use crate::spec::link::{self, Decoded};
+use app::App;
 use std::cell::RefCell;
 use std::rc::Rc;
 use viewer::Viewer;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
-use web_sys::{HtmlCanvasElement, PointerEvent, WheelEvent};
+use web_sys::{
+    Event, EventTarget, HtmlCanvasElement, HtmlInputElement, KeyboardEvent, PointerEvent,
+    WheelEvent,
+};
 
 /// Installs the panic hook: the console gets the full report, the page a sentence.
 #[wasm_bindgen(start)]
@@ -26,8 +32,6 @@ pub fn install_panic_hook() {
     }));
 }
 
-type Shared = Rc<RefCell<Viewer>>;
-
 /// The benchmark's figures in this browser, as text (see `crate::bench`).
 #[wasm_bindgen]
 pub fn benchmark() -> String {
@@ -36,34 +40,29 @@ pub fn benchmark() -> String {
     crate::bench::report(&crate::bench::run(&now))
 }
 
-/// The shell the link's fragment asks for; what could not be used is said on the page.
-fn requested_shell() -> Decoded {
-    let hash = web_sys::window()
-        .and_then(|w| w.location().hash().ok())
-        .unwrap_or_default();
-    let decoded = link::decode(&hash);
-    if !decoded.problems.is_empty() {
-        let list: Vec<String> = decoded.problems.iter().map(ToString::to_string).collect();
-        page::show_message(&format!(
-            "Parts of this link could not be used: {}.",
-            list.join("; ")
-        ));
-    }
-    decoded
-}
+type Shared = Rc<RefCell<App>>;
 
-fn canvas(id: &str) -> Result<HtmlCanvasElement, JsValue> {
+fn canvas(id: &str) -> Result<HtmlCanvasElement, String> {
     page::element(id)
-        .ok_or_else(|| JsValue::from_str(&format!("the page has no #{id}")))?
+        .ok_or_else(|| format!("the page has no #{id}"))?
         .dyn_into()
-        .map_err(|_| JsValue::from_str(&format!("#{id} is not a canvas")))
+        .map_err(|_| format!("#{id} is not a canvas"))
 }
 
-/// Sets up the renderer and starts growing the shell the link asks for.
+/// Builds the gallery, sets up both renderers and shows what the link asks for.
 #[wasm_bindgen]
 pub async fn start() -> Result<(), JsValue> {
-    page::signal("state", "loading");
-    let viewer = match Viewer::new(canvas("shell")?, canvas("planar")?).await {
+    signal_loading();
+    if let Some(groups) = page::element("gallery-groups") {
+        gallery::build(&groups);
+    }
+    let background = page::background();
+    let viewers = async {
+        let main = Viewer::new(canvas("shell")?, Some(canvas("planar")?), background).await?;
+        let pictures = Viewer::new(canvas("picture-canvas")?, None, background).await?;
+        Ok::<_, String>((main, pictures))
+    };
+    let (main, pictures) = match viewers.await {
         Ok(v) => v,
         Err(message) => {
             page::set_text("backend", "Not drawn");
@@ -71,28 +70,35 @@ pub async fn start() -> Result<(), JsValue> {
             return Ok(());
         }
     };
-    page::signal("backend", viewer.backend());
-    page::set_text("backend", &format!("Drawn with {}", viewer.backend()));
-    let viewer = Rc::new(RefCell::new(viewer));
-    let Decoded { preset, spec, .. } = requested_shell();
-    page::set_text("title", &preset.name);
-    if let Err(message) = viewer.borrow_mut().load(preset, spec) {
-        page::show_error(&message);
-        return Ok(());
-    }
-    listen(&viewer)?;
-    run(viewer);
+    let app: Shared = Rc::new(RefCell::new(App::new(
+        main,
+        gallery::Pictures::new(pictures),
+    )));
+    let weak = Rc::downgrade(&app);
+    app.borrow_mut()
+        .set_on_change(Rc::new(move |key: &str, value: String| {
+            if let Some(app) = weak.upgrade() {
+                app.borrow_mut().edit(key, value);
+            }
+        }));
+    app.borrow_mut().route();
+    listen(&app)?;
+    run(app);
     Ok(())
+}
+
+fn signal_loading() {
+    page::signal("state", "loading");
 }
 
 /// The frame callback, shared with itself so that each frame can schedule the next.
 type FrameLoop = Rc<RefCell<Option<Closure<dyn FnMut()>>>>;
 
 /// Runs the frame loop until a frame fails.
-fn run(viewer: Shared) {
+fn run(app: Shared) {
     let callback: FrameLoop = Rc::new(RefCell::new(None));
     let next = Rc::clone(&callback);
-    *callback.borrow_mut() = Some(Closure::new(move || match viewer.borrow_mut().frame() {
+    *callback.borrow_mut() = Some(Closure::new(move || match app.borrow_mut().frame() {
         Ok(()) => request_frame(next.borrow().as_ref().expect("the loop holds its closure")),
         Err(message) => page::show_error(&message),
     }));
@@ -108,15 +114,15 @@ fn request_frame(f: &Closure<dyn FnMut()>) {
 
 /// Adds an event listener that lives as long as the page.
 fn on<E: JsCast + 'static>(
-    target: &web_sys::EventTarget,
+    target: &EventTarget,
     kind: &str,
-    viewer: &Shared,
-    handler: impl Fn(&mut Viewer, E) + 'static,
+    app: &Shared,
+    handler: impl Fn(&mut App, E) + 'static,
 ) -> Result<(), JsValue> {
-    let viewer = Rc::clone(viewer);
-    let closure = Closure::<dyn FnMut(web_sys::Event)>::new(move |event: web_sys::Event| {
+    let app = Rc::clone(app);
+    let closure = Closure::<dyn FnMut(Event)>::new(move |event: Event| {
         if let Ok(event) = event.dyn_into::<E>() {
-            handler(&mut viewer.borrow_mut(), event);
+            handler(&mut app.borrow_mut(), event);
         }
     });
     let options = web_sys::AddEventListenerOptions::new();
@@ -130,50 +136,111 @@ fn on<E: JsCast + 'static>(
     Ok(())
 }
 
-/// Pointer, wheel and double-click on the canvas; the download button.
-fn listen(viewer: &Shared) -> Result<(), JsValue> {
-    let canvas: web_sys::EventTarget = viewer.borrow().canvas().clone().into();
-    on(&canvas, "pointerdown", viewer, |v, e: PointerEvent| {
+/// A click on the element with this id.
+fn on_click(id: &str, app: &Shared, handler: impl Fn(&mut App) + 'static) -> Result<(), JsValue> {
+    match page::element(id) {
+        Some(e) => on(&e.into(), "click", app, move |a, _: Event| handler(a)),
+        None => Ok(()),
+    }
+}
+
+/// Whether a key press belongs to a form field rather than to the page's shortcuts.
+fn typing(e: &KeyboardEvent) -> bool {
+    let tag = e
+        .target()
+        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+        .map(|t| t.tag_name().to_ascii_lowercase())
+        .unwrap_or_default();
+    matches!(
+        tag.as_str(),
+        "input" | "select" | "textarea" | "button" | "summary" | "a"
+    )
+}
+
+fn listen(app: &Shared) -> Result<(), JsValue> {
+    let window: EventTarget = web_sys::window().ok_or("no window")?.into();
+    on(&window, "hashchange", app, |a, _: Event| a.route())?;
+    if let Some(query) =
+        web_sys::window().and_then(|w| w.match_media("(prefers-color-scheme: dark)").ok().flatten())
+    {
+        on(&query.into(), "change", app, |a, _: Event| {
+            a.theme_changed()
+        })?;
+    }
+    let canvas: EventTarget = canvas("shell")?.into();
+    on(&canvas, "pointerdown", app, |a, e: PointerEvent| {
+        let v = a.viewer();
         // Capture keeps the drag alive outside the canvas; failing that, it ends at the edge.
         let _ = v.canvas().set_pointer_capture(e.pointer_id());
         v.pointers
             .press(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
     })?;
-    on(&canvas, "pointermove", viewer, |v, e: PointerEvent| {
-        v.pointer_moved(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
+    on(&canvas, "pointermove", app, |a, e: PointerEvent| {
+        a.viewer()
+            .pointer_moved(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
     })?;
     for kind in ["pointerup", "pointercancel"] {
-        on(&canvas, kind, viewer, |v, e: PointerEvent| {
-            v.pointers.release(e.pointer_id())
+        on(&canvas, kind, app, |a, e: PointerEvent| {
+            a.viewer().pointers.release(e.pointer_id())
         })?;
     }
-    on(&canvas, "wheel", viewer, |v, e: WheelEvent| {
+    on(&canvas, "wheel", app, |a, e: WheelEvent| {
         e.prevent_default();
-        v.wheel(e.delta_y());
+        a.viewer().wheel(e.delta_y());
     })?;
-    on(&canvas, "dblclick", viewer, |v, _: web_sys::MouseEvent| {
-        if let Some(camera) = v.camera_mut() {
-            camera.reset();
+    on(&canvas, "dblclick", app, |a, _: Event| a.reset_camera())?;
+    on_click("play", app, App::toggle_playing)?;
+    on_click("restart", app, App::restart)?;
+    on_click("step", app, App::step)?;
+    on_click("reset-camera", app, App::reset_camera)?;
+    on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
+    on_click("copy-link", app, App::copy_link)?;
+    for what in ["picture", "pattern", "obj", "stl"] {
+        on_click(&format!("download-{what}"), app, move |a| a.download(what))?;
+    }
+    on_click("panel-toggle", app, |_| {
+        if let (Some(panel), Some(button)) = (page::element("panel"), page::element("panel-toggle"))
+        {
+            let open = panel.class_list().toggle("open").unwrap_or(false);
+            dom::attr(
+                &button,
+                "aria-expanded",
+                if open { "true" } else { "false" },
+            );
         }
     })?;
-    if let Some(button) = page::element("download-pattern") {
-        on(
-            &button.into(),
-            "click",
-            viewer,
-            |v, _: web_sys::MouseEvent| {
-                let Some(g) = v.growing() else { return };
-                let Some(p) = g.generator.pattern() else {
-                    return;
-                };
-                let png = export::png::encode(p.cells(), p.rows(), p.rgba());
-                if let Err(e) =
-                    download::offer(&format!("{}-pattern.png", g.preset.id), "image/png", &png)
-                {
-                    page::show_message(&format!("The pattern could not be downloaded: {e}."));
-                }
-            },
-        )?;
+    if let Some(speed) = page::element("speed") {
+        on(&speed.into(), "change", app, |a, e: Event| {
+            let value = e
+                .target()
+                .and_then(|t| t.dyn_into::<HtmlInputElement>().ok())
+                .map(|i| i.value());
+            if let Some(v) = value.and_then(|v| v.parse::<f64>().ok()) {
+                a.set_speed(v);
+            }
+        })?;
     }
+    let document: EventTarget = page::document().into();
+    on(&document, "keydown", app, |a, e: KeyboardEvent| {
+        if typing(&e)
+            || e.ctrl_key()
+            || e.meta_key()
+            || e.alt_key()
+            || a.viewer().growing().is_none()
+        {
+            return;
+        }
+        match e.key().as_str() {
+            " " => a.toggle_playing(),
+            "r" => a.restart(),
+            "s" | "ArrowRight" => a.step(),
+            "c" => a.reset_camera(),
+            "f" => a.toggle_fullscreen(),
+            "+" | "=" => a.set_speed(a.speed() * 1.5),
+            "-" => a.set_speed(a.speed() / 1.5),
+            _ => return,
+        }
+        e.prevent_default();
+    })?;
     Ok(())
 }

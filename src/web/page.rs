@@ -40,6 +40,14 @@ pub fn show_message(text: &str) {
     }
 }
 
+/// Hides the alert area.
+pub fn hide_message() {
+    if let Some(e) = element("message") {
+        e.set_hidden(true);
+        e.set_text_content(None);
+    }
+}
+
 /// Shows an error that stops the shell from being drawn, and marks the page as failed.
 pub fn show_error(text: &str) {
     show_message(text);

@@ -1,21 +1,23 @@
 //! The planar representation beside the shell (the left halves of Fowler et al.'s figures
-//! 11–14): a 2D canvas one pixel per cell and row, written a few rows at a time.
+//! 11–14): a 2D canvas one pixel per cell and row, written a few rows at a time, scrolled so
+//! that the newest rows stay in sight.
 
 use wasm_bindgen::{Clamped, JsCast};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement, ImageData};
 
 pub struct Planar {
+    canvas: HtmlCanvasElement,
     context: CanvasRenderingContext2d,
     cells: u32,
 }
 
 impl Planar {
-    /// Sizes the canvas for a cells × rows pattern, or hides it when there is none.
+    /// Sizes the canvas for a cells × rows pattern, or hides its figure when there is none.
     pub fn new(canvas: HtmlCanvasElement, pattern: Option<(u32, u32)>) -> Option<Self> {
-        let figure = canvas.parent_element();
+        let figure = canvas.closest("figure").ok().flatten();
         let Some((cells, rows)) = pattern else {
             if let Some(f) = figure {
-                // Hiding an element cannot fail.
+                // Setting a plain attribute cannot fail.
                 let _ = f.set_attribute("hidden", "");
             }
             return None;
@@ -26,7 +28,14 @@ impl Planar {
         canvas.set_width(cells);
         canvas.set_height(rows);
         let context = canvas.get_context("2d").ok()??.dyn_into().ok()?;
-        Some(Self { context, cells })
+        if let Some(scroller) = canvas.parent_element() {
+            scroller.set_scroll_top(0);
+        }
+        Some(Self {
+            canvas,
+            context,
+            cells,
+        })
     }
 
     /// Draws rows `first..` from `rgba` (`cells × 4` bytes a row).
@@ -40,6 +49,20 @@ impl Planar {
         {
             // Drawing into our own canvas cannot fail for in-range coordinates.
             let _ = self.context.put_image_data(&image, 0.0, f64::from(first));
+        }
+        self.follow(first + rows);
+    }
+
+    /// Scrolls the view so that row `row` stays in sight.
+    fn follow(&self, row: u32) {
+        let Some(scroller) = self.canvas.parent_element() else {
+            return;
+        };
+        let scale = f64::from(self.canvas.client_height()) / f64::from(self.canvas.height().max(1));
+        let bottom = f64::from(row) * scale;
+        let view = f64::from(scroller.client_height());
+        if bottom > f64::from(scroller.scroll_top()) + view {
+            scroller.set_scroll_top((bottom - view * 0.8).max(0.0) as i32);
         }
     }
 }

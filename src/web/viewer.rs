@@ -1,8 +1,7 @@
-//! The viewer: one canvas and its renderer, the shell growing on it, its planar pattern beside
-//! it, and the camera the pointer turns. Loading another spec restarts growth without
-//! reloading the page.
+//! A viewer: one canvas and its renderer, a shell growing on it, optionally its planar pattern,
+//! and the camera the pointer turns. Loading another spec restarts growth without reloading the
+//! page. The page's main view is one viewer; the gallery's pictures are drawn by another.
 
-use super::page;
 use super::planar::Planar;
 use crate::camera::OrbitCamera;
 use crate::generator::{Advance, Generator};
@@ -12,9 +11,6 @@ use crate::spec::ShellSpec;
 use crate::species::Preset;
 use crate::texture_layout::TextureLayout;
 use web_sys::HtmlCanvasElement;
-
-/// Milliseconds of a frame that growth may take, so that no speed can freeze the tab.
-const GROWTH_BUDGET_MS: f64 = 12.0;
 
 /// A shell being grown.
 pub struct Growing {
@@ -27,7 +23,7 @@ pub struct Growing {
 pub struct Viewer {
     renderer: Renderer,
     canvas: HtmlCanvasElement,
-    planar_canvas: HtmlCanvasElement,
+    planar_canvas: Option<HtmlCanvasElement>,
     pub pointers: Pointers,
     growing: Option<Growing>,
     /// Whether growth advances each frame.
@@ -38,7 +34,8 @@ pub struct Viewer {
     dirty: bool,
 }
 
-fn now() -> f64 {
+/// Milliseconds since the page started.
+pub fn now() -> f64 {
     web_sys::window()
         .and_then(|w| w.performance())
         .map_or(0.0, |p| p.now())
@@ -47,10 +44,11 @@ fn now() -> f64 {
 impl Viewer {
     pub async fn new(
         canvas: HtmlCanvasElement,
-        planar_canvas: HtmlCanvasElement,
+        planar_canvas: Option<HtmlCanvasElement>,
+        background: [u8; 3],
     ) -> Result<Self, String> {
         let mut renderer = Renderer::new(canvas.clone()).await?;
-        renderer.set_background(page::background());
+        renderer.set_background(background);
         Ok(Self {
             renderer,
             canvas,
@@ -74,10 +72,16 @@ impl Viewer {
         self.growing.as_ref()
     }
 
+    /// Follows a change of the page's theme.
+    pub fn set_background(&mut self, srgb: [u8; 3]) {
+        self.renderer.set_background(srgb);
+        self.dirty = true;
+    }
+
     /// Starts growing `spec` from its apex.
-    pub fn load(&mut self, preset: &'static Preset, spec: ShellSpec) -> Result<(), String> {
+    pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) -> Result<(), String> {
         let generator =
-            Generator::new(&spec).map_err(|e| format!("This shell cannot be built: {e}"))?;
+            Generator::new(spec).map_err(|e| format!("This shell cannot be built: {e}"))?;
         let pattern = generator
             .pattern()
             .map(|p| (p.cells() as u32, spec.growth.rows));
@@ -94,7 +98,10 @@ impl Viewer {
             preset.view.yaw.to_radians(),
             preset.view.pitch.to_radians(),
         );
-        let planar = Planar::new(self.planar_canvas.clone(), pattern);
+        let planar = self
+            .planar_canvas
+            .clone()
+            .and_then(|c| Planar::new(c, pattern));
         self.speed = spec.growth.speed;
         self.carry = 0.0;
         self.growing = Some(Growing {
@@ -110,7 +117,6 @@ impl Viewer {
             .unwrap_or_default();
         self.upload(&grown);
         self.dirty = true;
-        page::signal("state", "loading");
         Ok(())
     }
 
@@ -125,13 +131,12 @@ impl Viewer {
         if let Some(planar) = &g.planar {
             planar.draw_rows(advance.rows.start as u32, rgba);
         }
-        page::signal("rows", &g.generator.rows_done().to_string());
     }
 
-    /// Grows up to `rows` rows now (within the frame's budget).
-    pub fn grow(&mut self, rows: usize) {
+    /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
+    pub fn grow(&mut self, rows: usize, budget_ms: f64) {
         let Some(g) = &mut self.growing else { return };
-        let deadline = now() + GROWTH_BUDGET_MS;
+        let deadline = now() + budget_ms;
         let advance = g.generator.advance_while(rows, || now() < deadline);
         self.upload(&advance);
         self.dirty = true;
@@ -151,8 +156,9 @@ impl Viewer {
         }
     }
 
-    /// One animation frame: grow at the current speed, draw if anything changed.
-    pub fn frame(&mut self) -> Result<(), String> {
+    /// One animation frame: grow at the current speed within `budget_ms`, draw if anything
+    /// changed. Returns whether a frame was drawn.
+    pub fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
         }
@@ -166,32 +172,21 @@ impl Viewer {
             let rows = self.carry.floor();
             self.carry -= rows;
             if rows > 0.0 {
-                self.grow(rows as usize);
+                self.grow(rows as usize, budget_ms);
             }
         }
         if !self.dirty {
-            return Ok(());
+            return Ok(false);
         }
         let Some(g) = &self.growing else {
-            return Ok(());
+            return Ok(false);
         };
         self.renderer.draw(&g.camera)?;
         self.dirty = false;
-        if let Some(failure) = g.generator.failure() {
-            page::show_message(failure);
-            page::signal("state", "stopped");
-        } else if g.generator.is_done() {
-            if let Some(p) = g.generator.pattern() {
-                page::signal("patternHash", &format!("{:016x}", p.hash()));
-            }
-            page::signal("state", "grown");
-        } else {
-            page::signal("state", "growing");
-        }
-        Ok(())
+        Ok(true)
     }
 
-    /// The camera of the shell being grown, for the pointer and keyboard.
+    /// The camera of the shell being grown.
     pub fn camera_mut(&mut self) -> Option<&mut OrbitCamera> {
         self.dirty = true;
         self.growing.as_mut().map(|g| &mut g.camera)
@@ -212,6 +207,17 @@ impl Viewer {
         if let Some(camera) = self.camera_mut() {
             camera.zoom_by(wheel_zoom(delta));
         }
+    }
+
+    /// Draws now and returns the canvas as a PNG data URL (read before the browser clears it).
+    pub fn picture(&mut self) -> Result<String, String> {
+        let Some(g) = &self.growing else {
+            return Err("nothing is drawn yet".into());
+        };
+        self.renderer.draw(&g.camera)?;
+        self.canvas
+            .to_data_url_with_type("image/png")
+            .map_err(|_| "the browser refused to read the canvas".to_string())
     }
 
     pub fn canvas(&self) -> &HtmlCanvasElement {

@@ -1,0 +1,349 @@
+//! The page as a whole: the gallery or the viewer, chosen by the URL fragment (empty: the
+//! gallery; a link: that shell), the controls and the panel around the viewer, and the signals
+//! on <body> that tests read: `data-view`, `data-state` (loading, growing, grown, stopped,
+//! error), `data-rows`, `data-playing`, `data-pattern-hash`.
+
+use super::download;
+use super::gallery::Pictures;
+use super::page::{self, element, set_text, show_message, signal};
+use super::panel::{OnChange, Panel};
+use super::viewer::{Viewer, now};
+use crate::export::{self, MeshFormat};
+use crate::spec::ShellSpec;
+use crate::spec::link::{self, Decoded, Problem};
+use crate::species::Preset;
+use wasm_bindgen::JsCast;
+use web_sys::{HtmlInputElement, HtmlProgressElement};
+
+/// Milliseconds of a frame that the viewer's growth may take, so no speed freezes the tab.
+const GROWTH_BUDGET_MS: f64 = 12.0;
+/// Milliseconds of a frame for drawing the gallery's pictures.
+const PICTURE_BUDGET_MS: f64 = 10.0;
+/// Quiet time after an edit before the address bar is updated.
+const URL_DELAY_MS: f64 = 300.0;
+
+pub struct App {
+    viewer: Viewer,
+    pictures: Pictures,
+    current: Option<(&'static Preset, ShellSpec)>,
+    panel: Option<Panel>,
+    on_change: Option<OnChange>,
+    in_gallery: bool,
+    url_due: Option<f64>,
+}
+
+fn say(problems: &[Problem]) {
+    if problems.is_empty() {
+        page::hide_message();
+    } else {
+        let list: Vec<String> = problems.iter().map(ToString::to_string).collect();
+        show_message(&format!(
+            "Parts of this link could not be used as given: {}.",
+            list.join("; ")
+        ));
+    }
+}
+
+fn location_hash() -> String {
+    web_sys::window()
+        .and_then(|w| w.location().hash().ok())
+        .unwrap_or_default()
+}
+
+impl App {
+    pub fn new(viewer: Viewer, pictures: Pictures) -> Self {
+        signal("backend", viewer.backend());
+        set_text("backend", &format!("Drawn with {}", viewer.backend()));
+        Self {
+            viewer,
+            pictures,
+            current: None,
+            panel: None,
+            on_change: None,
+            in_gallery: false,
+            url_due: None,
+        }
+    }
+
+    /// The panel's callback, which needs the shared handle of the app itself.
+    pub fn set_on_change(&mut self, on_change: OnChange) {
+        self.on_change = Some(on_change);
+    }
+
+    pub fn viewer(&mut self) -> &mut Viewer {
+        &mut self.viewer
+    }
+
+    /// Follows the URL fragment.
+    pub fn route(&mut self) {
+        let fragment = location_hash();
+        if fragment.trim_start_matches('#').is_empty() {
+            self.show(true);
+            page::hide_message();
+            signal("state", "gallery");
+            return;
+        }
+        let Decoded {
+            preset,
+            spec,
+            problems,
+        } = link::decode(&fragment);
+        say(&problems);
+        self.show(false);
+        let same = self
+            .current
+            .as_ref()
+            .is_some_and(|(p, s)| p.id == preset.id && *s == spec);
+        if !same {
+            self.load(preset, spec);
+        }
+    }
+
+    fn show(&mut self, gallery: bool) {
+        self.in_gallery = gallery;
+        if let (Some(g), Some(v)) = (element("gallery"), element("viewer")) {
+            g.set_hidden(!gallery);
+            v.set_hidden(gallery);
+        }
+        signal("view", if gallery { "gallery" } else { "viewer" });
+        let title = match (&self.current, gallery) {
+            (Some((p, _)), false) => format!("{} — Seashells", p.name),
+            _ => "Seashells".to_string(),
+        };
+        page::document().set_title(&title);
+    }
+
+    fn load(&mut self, preset: &'static Preset, spec: ShellSpec) {
+        signal("state", "loading");
+        signal("patternHash", "");
+        if let Err(message) = self.viewer.load(preset, &spec) {
+            page::show_error(&message);
+            return;
+        }
+        set_text("title", &preset.name);
+        set_text("source", &preset.source);
+        page::document().set_title(&format!("{} — Seashells", preset.name));
+        if let Some(speed) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
+            speed.set_value(&crate::spec::fields::display(spec.growth.speed));
+        }
+        match (&self.panel, &self.on_change, element("panel-fields")) {
+            (Some(panel), _, _) if panel.fits(&spec) => panel.refresh(&spec),
+            (_, Some(on_change), Some(container)) => {
+                self.panel = Some(Panel::build(&container, &spec, on_change))
+            }
+            _ => {}
+        }
+        self.current = Some((preset, spec));
+        self.set_playing(true);
+    }
+
+    /// A value changed in the panel: read it as a link's value, restart growth with the result.
+    pub fn edit(&mut self, key: &str, value: String) {
+        let Some((preset, spec)) = &self.current else {
+            return;
+        };
+        let Decoded {
+            preset,
+            spec: next,
+            problems,
+        } = link::with(preset, spec, key, &value);
+        say(&problems);
+        if self.current.as_ref().is_some_and(|(_, s)| *s == next) {
+            if let (Some(panel), Some((_, s))) = (&self.panel, &self.current) {
+                panel.refresh(s);
+            }
+            return;
+        }
+        self.load(preset, next);
+        self.url_due = Some(now() + URL_DELAY_MS);
+    }
+
+    /// The link of what is shown.
+    fn fragment(&self) -> Option<String> {
+        self.current
+            .as_ref()
+            .map(|(p, s)| format!("#{}", link::encode(p, s)))
+    }
+
+    fn update_url(&mut self) {
+        self.url_due = None;
+        let Some(fragment) = self.fragment() else {
+            return;
+        };
+        if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
+            // Replacing the current entry keeps Back for leaving the viewer.
+            let _ =
+                history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&fragment));
+        }
+    }
+
+    pub fn set_playing(&mut self, playing: bool) {
+        self.viewer.playing = playing;
+        signal("playing", if playing { "true" } else { "false" });
+        set_text("play", if playing { "Pause" } else { "Play" });
+    }
+
+    pub fn toggle_playing(&mut self) {
+        self.set_playing(!self.viewer.playing);
+    }
+
+    pub fn restart(&mut self) {
+        if let Some((preset, spec)) = self.current.clone() {
+            self.load(preset, spec);
+        }
+    }
+
+    /// Grows one row, paused.
+    pub fn step(&mut self) {
+        self.set_playing(false);
+        self.viewer.grow(1, GROWTH_BUDGET_MS);
+    }
+
+    /// Sets the growth speed in rows per frame (part of the link; growth goes on).
+    pub fn set_speed(&mut self, speed: f64) {
+        let Some((_, spec)) = &mut self.current else {
+            return;
+        };
+        let field = crate::spec::fields::field("growth.speed").map(|f| f.kind);
+        let speed = match field {
+            Some(crate::spec::fields::Kind::Real { min, max, .. }) => speed.clamp(min, max),
+            _ => speed,
+        };
+        spec.growth.speed = speed;
+        self.viewer.speed = speed;
+        if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
+            input.set_value(&crate::spec::fields::display(speed));
+        }
+        self.url_due = Some(now() + URL_DELAY_MS);
+    }
+
+    pub fn speed(&self) -> f64 {
+        self.viewer.speed
+    }
+
+    pub fn reset_camera(&mut self) {
+        if let Some(camera) = self.viewer.camera_mut() {
+            camera.reset();
+        }
+    }
+
+    /// Full screen for the viewer, or back.
+    pub fn toggle_fullscreen(&self) {
+        let document = page::document();
+        if document.fullscreen_element().is_some() {
+            document.exit_fullscreen();
+        } else if let Some(v) = element("viewer") {
+            // A refusal (no user gesture, or not allowed) leaves the page as it is.
+            let _ = v.request_fullscreen();
+        }
+    }
+
+    /// Copies the link to the clipboard, saying so.
+    pub fn copy_link(&mut self) {
+        self.update_url();
+        let Some(window) = web_sys::window() else {
+            return;
+        };
+        let url = window.location().href().unwrap_or_default();
+        let promise = window.navigator().clipboard().write_text(&url);
+        wasm_bindgen_futures::spawn_local(async move {
+            let done = wasm_bindgen_futures::JsFuture::from(promise).await.is_ok();
+            set_text(
+                "copy-status",
+                &if done {
+                    "Link copied".to_string()
+                } else {
+                    format!("Copy this link: {url}")
+                },
+            );
+        });
+    }
+
+    /// Offers a download: "picture", "pattern", "obj" or "stl".
+    pub fn download(&mut self, what: &str) {
+        let Some(g) = self.viewer.growing() else {
+            return;
+        };
+        let id = g.preset.id;
+        let result = match what {
+            "pattern" => match g.generator.pattern() {
+                Some(p) => download::offer(
+                    &format!("{id}-pattern.png"),
+                    "image/png",
+                    &export::png::encode(p.cells(), p.rows(), p.rgba()),
+                ),
+                None => Err("this shell has no pattern".into()),
+            },
+            "obj" | "stl" => {
+                let format = if what == "obj" {
+                    MeshFormat::Obj
+                } else {
+                    MeshFormat::Stl
+                };
+                let bytes = format.write(&g.generator.snapshot());
+                download::offer(&format!("{id}.{what}"), "application/octet-stream", &bytes)
+            }
+            _ => self
+                .viewer
+                .picture()
+                .and_then(|url| download::offer_url(&format!("{id}.png"), &url)),
+        };
+        if let Err(e) = result {
+            show_message(&format!("The download could not be made: {e}."));
+        }
+    }
+
+    /// One animation frame.
+    pub fn frame(&mut self) -> Result<(), String> {
+        if self.in_gallery {
+            if !self.pictures.finished() {
+                self.pictures.work(PICTURE_BUDGET_MS);
+                signal(
+                    "pictures",
+                    if self.pictures.finished() {
+                        "done"
+                    } else {
+                        "drawing"
+                    },
+                );
+            }
+            return Ok(());
+        }
+        if self.url_due.is_some_and(|due| now() >= due) {
+            self.update_url();
+        }
+        if !self.viewer.frame(GROWTH_BUDGET_MS)? {
+            return Ok(());
+        }
+        let Some(g) = self.viewer.growing() else {
+            return Ok(());
+        };
+        let (done, total) = (g.generator.rows_done(), g.generator.rows());
+        signal("rows", &done.to_string());
+        if let Some(bar) =
+            element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
+        {
+            bar.set_max(total as f64);
+            bar.set_value(done as f64);
+        }
+        set_text("progress-text", &format!("{done} of {total} rows"));
+        if let Some(failure) = g.generator.failure() {
+            show_message(failure);
+            signal("state", "stopped");
+        } else if g.generator.is_done() {
+            if let Some(p) = g.generator.pattern() {
+                signal("patternHash", &format!("{:016x}", p.hash()));
+            }
+            signal("state", "grown");
+        } else {
+            signal("state", "growing");
+        }
+        Ok(())
+    }
+
+    /// Follows a change of the page's light or dark theme.
+    pub fn theme_changed(&mut self) {
+        self.viewer.set_background(page::background());
+        self.pictures.set_background(page::background());
+    }
+}

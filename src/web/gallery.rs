@@ -1,0 +1,108 @@
+//! The gallery: every preset in species/, grouped by where it comes from, each a card with its
+//! name, the figure it reproduces, a line of description and a picture of the shell. The cards
+//! are plain links to the preset's fragment, so the browser's history does the navigation; the
+//! pictures are drawn one by one by a second viewer on a small off-screen canvas.
+
+use super::dom::{append, attr, element, typed};
+use super::viewer::Viewer;
+use crate::species::{Preset, presets};
+use std::collections::VecDeque;
+use web_sys::{Element, HtmlImageElement};
+
+/// A card's link target.
+pub fn fragment(preset: &Preset) -> String {
+    format!("#v={}&preset={}", crate::spec::link::VERSION, preset.id)
+}
+
+/// Fills `container` with one section per group and one card per preset.
+pub fn build(container: &Element) {
+    let mut group = None;
+    let mut grid: Option<Element> = None;
+    for preset in presets() {
+        if group != Some(preset.group) {
+            group = Some(preset.group);
+            let section = element("section", "group", None);
+            let heading = element("h2", "", Some(preset.group.title()));
+            let cards = element("div", "cards", None);
+            append(&section, &[&heading, &cards]);
+            append(container, &[&section]);
+            grid = Some(cards.into());
+        }
+        let card = element("a", "card", None);
+        attr(&card, "href", &fragment(preset));
+        attr(&card, "data-preset", preset.id);
+        let picture: HtmlImageElement = typed("img", "picture");
+        picture.set_alt(&format!("{}, grown from the model", preset.name));
+        picture.set_width(256);
+        picture.set_height(256);
+        let name = element("h3", "", Some(&preset.name));
+        let source = element("p", "source", Some(&preset.source));
+        let description = element("p", "description", Some(&preset.description));
+        append(&card, &[&picture, &name, &source, &description]);
+        if let Some(g) = &grid {
+            append(g, &[&card]);
+        }
+    }
+}
+
+/// Draws the cards' pictures, a few milliseconds a frame.
+pub struct Pictures {
+    viewer: Viewer,
+    queue: VecDeque<&'static Preset>,
+    current: Option<&'static Preset>,
+}
+
+impl Pictures {
+    pub fn new(viewer: Viewer) -> Self {
+        Self {
+            viewer,
+            queue: presets().iter().collect(),
+            current: None,
+        }
+    }
+
+    /// Works on the pictures for at most `budget_ms`.
+    pub fn work(&mut self, budget_ms: f64) {
+        let preset = match self.current {
+            Some(p) => p,
+            None => {
+                let Some(next) = self.queue.pop_front() else {
+                    return;
+                };
+                if self.viewer.load(next, &next.spec).is_err() {
+                    return;
+                }
+                self.current = Some(next);
+                next
+            }
+        };
+        let done = self.viewer.growing().is_none_or(|g| g.generator.is_done());
+        if !done {
+            self.viewer.grow(usize::MAX, budget_ms);
+            return;
+        }
+        self.current = None;
+        let Ok(url) = self.viewer.picture() else {
+            return;
+        };
+        let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
+        let image = super::page::document()
+            .query_selector(&selector)
+            .ok()
+            .flatten()
+            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+        if let Some(img) = image {
+            img.set_src(&url);
+        }
+    }
+
+    /// Follows a change of the page's theme (pictures already drawn keep theirs).
+    pub fn set_background(&mut self, srgb: [u8; 3]) {
+        self.viewer.set_background(srgb);
+    }
+
+    /// Whether every picture is drawn.
+    pub fn finished(&self) -> bool {
+        self.queue.is_empty() && self.current.is_none()
+    }
+}
