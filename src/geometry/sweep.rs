@@ -327,10 +327,4 @@ impl Sweep {
         };
         self.rim(at, (self.ln_xi_c * t).exp())
     }
-
-    /// The greatest sculpture displacement relative to the curve's size.
-    pub fn max_relief(&self) -> f64 {
-        let s = &self.sculpture;
-        s.growth_ribs.amplitude.abs() + s.curve_ribs.amplitude.abs()
-    }
 }

@@ -49,11 +49,6 @@ impl SweepMesh {
         })
     }
 
-    /// The swept surface being grown.
-    pub fn sweep(&self) -> &Sweep {
-        &self.sweep
-    }
-
     fn mirror(&self, p: DVec3) -> DVec3 {
         if self.sweep.is_sinistral() {
             DVec3::new(p.x, -p.y, p.z)

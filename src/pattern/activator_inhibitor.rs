@@ -39,10 +39,7 @@ impl ActivatorInhibitor {
             )));
         }
         let grid = Grid::new(spec);
-        let mut noise = Noise::new(seed, 1);
-        let rho = (0..grid.cells)
-            .map(|_| p.rho * (1.0 + p.rho_noise * noise.signed()))
-            .collect();
+        let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
         let mut a = vec![p.a_init; grid.cells];
         starts::place(
             &mut a,
@@ -62,16 +59,6 @@ impl ActivatorInhibitor {
             rho,
             grid,
         })
-    }
-
-    /// The hormone concentration c.
-    pub fn hormone(&self) -> f64 {
-        self.c
-    }
-
-    /// The inhibitor concentrations.
-    pub fn inhibitor(&self) -> &[f64] {
-        &self.h
     }
 
     fn step(&mut self) {

@@ -11,7 +11,7 @@
 use super::diffusion::laplacian;
 use super::grid::Grid;
 use super::noise::Noise;
-use super::{EdgeModel, PatternError, check_finite};
+use super::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use crate::spec::pattern::{ActivatorSubstrate as Params, PatternSpec};
 use std::f64::consts::TAU;
 
@@ -29,10 +29,7 @@ pub struct ActivatorSubstrate {
 impl ActivatorSubstrate {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let mut noise = Noise::new(seed, 1);
-        let rho = (0..grid.cells)
-            .map(|_| p.rho * (1.0 + p.rho_noise * noise.signed()))
-            .collect();
+        let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
         let sigma = (0..grid.cells)
             .map(|i| {
                 let phase = TAU * grid.position(i) / p.sigma_period;
@@ -49,11 +46,6 @@ impl ActivatorSubstrate {
             sigma,
             grid,
         })
-    }
-
-    /// The substrate concentrations (for tests and inspection).
-    pub fn substrate(&self) -> &[f64] {
-        &self.s
     }
 
     fn step(&mut self) {
@@ -79,12 +71,11 @@ impl EdgeModel for ActivatorSubstrate {
         let hint = "the autocatalysis outran its decay; raise κ (saturation) or μ, or lower ρ";
         check_finite("activator", &self.a, hint)?;
         check_finite("substrate", &self.s, hint)?;
-        if let Some(i) = self.s.iter().position(|&s| s < -1e-9) {
-            return Err(PatternError(format!(
-                "the substrate became negative in cell {i}: one time step consumes more than there is; lower ρ or raise κ"
-            )));
-        }
-        Ok(())
+        check_nonnegative(
+            "substrate",
+            &self.s,
+            "one time step consumes more than there is; lower ρ or raise κ",
+        )
     }
 
     fn recorded(&self) -> &[f64] {

@@ -28,7 +28,7 @@ use super::diffusion::laplacian;
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
-use super::{EdgeModel, PatternError, check_finite};
+use super::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use crate::spec::pattern::{Coupled as Params, PatternSpec};
 
 pub struct Coupled {
@@ -45,10 +45,7 @@ pub struct Coupled {
 impl Coupled {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let mut noise = Noise::new(seed, 1);
-        let rho = (0..grid.cells)
-            .map(|_| p.rho * (1.0 + p.rho_noise * noise.signed()))
-            .collect();
+        let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
         let mut a = vec![0.0; grid.cells];
         starts::place(
             &mut a,
@@ -68,11 +65,6 @@ impl Coupled {
             rho,
             grid,
         })
-    }
-
-    /// The extinguisher's concentrations.
-    pub fn extinguisher(&self) -> &[f64] {
-        &self.e
     }
 
     fn step(&mut self) {
@@ -105,12 +97,7 @@ impl EdgeModel for Coupled {
         let hint = "lower ρ or ρₑ, or raise κ, μ or μₑ";
         check_finite("reaction", &self.a, hint)?;
         check_finite("extinguisher", &self.e, hint)?;
-        if let Some(i) = self.f.iter().position(|&f| f < -1e-9) {
-            return Err(PatternError(format!(
-                "the extinguisher's substrate became negative in cell {i}: lower ε_f or ρₑ"
-            )));
-        }
-        Ok(())
+        check_nonnegative("extinguisher's substrate", &self.f, "lower ε_f or ρₑ")
     }
 
     fn recorded(&self) -> &[f64] {

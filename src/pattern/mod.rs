@@ -145,6 +145,16 @@ pub fn build(spec: &PatternSpec, seed: u64) -> Result<Option<Box<dyn EdgeModel>>
     })
 }
 
+/// Refuses concentrations that explicit Euler drove below zero.
+pub fn check_nonnegative(name: &str, values: &[f64], hint: &str) -> Result<(), PatternError> {
+    match values.iter().position(|&v| v < -1e-9) {
+        None => Ok(()),
+        Some(i) => Err(PatternError(format!(
+            "the {name} became negative in cell {i}: {hint}"
+        ))),
+    }
+}
+
 /// Refuses concentrations that are no longer numbers, or that left any sensible range.
 pub fn check_finite(name: &str, values: &[f64], hint: &str) -> Result<(), PatternError> {
     match values.iter().position(|v| !v.is_finite() || v.abs() > 1e12) {

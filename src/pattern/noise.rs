@@ -25,6 +25,14 @@ impl Noise {
         2.0 * self.unit() - 1.0
     }
 
+    /// `count` values `mean` · (1 ± `fraction`), uniform: a parameter that fluctuates from cell
+    /// to cell (ρ ± 2.5 % in the paper's figures).
+    pub fn fluctuating(&mut self, mean: f64, fraction: f64, count: usize) -> Vec<f64> {
+        (0..count)
+            .map(|_| mean * (1.0 + fraction * self.signed()))
+            .collect()
+    }
+
     /// Uniform integer in [0, n).
     pub fn below(&mut self, n: usize) -> usize {
         ((self.unit() * n as f64) as usize).min(n.saturating_sub(1))

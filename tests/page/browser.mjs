@@ -2,6 +2,7 @@
 // graphics backend on these machines (see ../shared/TOOLCHAIN.md), and helpers that read the
 // page's own signals and its pixels.
 import { chromium } from 'playwright-core';
+import { serve } from './serve.mjs';
 
 const COMMON = [
   '--no-sandbox', '--no-first-run', '--disable-background-networking',
@@ -72,4 +73,18 @@ export async function measureCanvas(page, file) {
     }
     return { share: differing / (data.length / 4), shades: shades.size, width: bitmap.width, height: bitmap.height };
   }, [...png]);
+}
+
+/** Serves www/ and launches Chromium for `backend`: what a test file shares across its tests. */
+export async function session(backend = 'WebGL2') {
+  const server = await serve(new URL('../../www/', import.meta.url).pathname);
+  const browser = await launch(backend);
+  return {
+    base: `http://127.0.0.1:${server.address().port}/`,
+    browser,
+    close: async () => {
+      await browser.close();
+      server.close();
+    },
+  };
 }

@@ -5,26 +5,20 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readdirSync, readFileSync } from 'node:fs';
-import { serve } from './serve.mjs';
-import { launch, open, waitForState } from './browser.mjs';
+import { open, session, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
 const IDS = readdirSync(`${ROOT}species`).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
-let server;
 let browser;
 let base;
+let close;
 
 before(async () => {
-  server = await serve(`${ROOT}www`);
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await launch('WebGL2');
+  ({ browser, base, close } = await session());
 });
-after(async () => {
-  await browser.close();
-  server.close();
-});
+after(() => close());
 
 const dataset = (page) => page.evaluate(() => ({ ...document.body.dataset }));
 

@@ -4,25 +4,19 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { serve } from './serve.mjs';
-import { launch, open, waitForState } from './browser.mjs';
+import { open, session, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
-let server;
 let browser;
 let base;
+let close;
 
 before(async () => {
-  server = await serve(`${ROOT}www`);
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await launch('WebGL2');
+  ({ browser, base, close } = await session());
 });
-after(async () => {
-  await browser.close();
-  server.close();
-});
+after(() => close());
 
 /** The hash the native command line reports for a link. */
 function nativeHash(fragment) {

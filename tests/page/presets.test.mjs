@@ -3,27 +3,21 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readdirSync } from 'node:fs';
-import { serve } from './serve.mjs';
-import { launch, open, waitForState, measureCanvas } from './browser.mjs';
+import { open, session, waitForState, measureCanvas } from './browser.mjs';
 
 const SHOTS = new URL('./screenshots/presets/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
 const IDS = readdirSync(new URL('../../species/', import.meta.url))
   .filter((f) => f.endsWith('.json'))
   .map((f) => f.slice(0, -5));
-let server;
 let browser;
 let base;
+let close;
 
 before(async () => {
-  server = await serve(new URL('../../www/', import.meta.url).pathname);
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await launch('WebGL2');
+  ({ browser, base, close } = await session());
 });
-after(async () => {
-  await browser.close();
-  server.close();
-});
+after(() => close());
 
 for (const id of IDS) {
   test(`preset ${id} grows into a shell`, async () => {
