@@ -58,3 +58,18 @@ test('without WebGPU or WebGL2 the page says so in words', async () => {
     await browser.close();
   }
 });
+
+test('a lost graphics device is said in words', async () => {
+  const browser = await launch('WebGL2');
+  try {
+    const { page } = await open(browser, `${base}#v=1&preset=turbinate`);
+    await waitForState(page, ['growing', 'grown']);
+    await page.evaluate(() => document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext());
+    const state = await waitForState(page, ['error']);
+    assert.equal(state.state, 'error');
+    assert.match(await page.textContent('#message'), /graphics device was lost/);
+    assert.ok(await page.isVisible('#message'));
+  } finally {
+    await browser.close();
+  }
+});
