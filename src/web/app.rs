@@ -1,7 +1,7 @@
 //! The page as a whole: the gallery or the viewer, chosen by the URL fragment (empty: the
 //! gallery; a link: that shell), the controls and the panel around the viewer, and the signals
-//! on <body> that tests read: `data-view`, `data-state` (loading, growing, grown, stopped,
-//! error), `data-rows`, `data-playing`, `data-pattern-hash`.
+//! on <body> that tests read: `data-view`, `data-state` (gallery, loading, growing, grown,
+//! stopped, error), `data-rows`, `data-playing`, `data-pattern-hash`, `data-pictures`.
 
 use super::download;
 use super::gallery::Pictures;

@@ -5,7 +5,7 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlElement};
 
 /// A new element with a class (may be empty) and optional text.
-pub fn element(tag: &str, class: &str, text: Option<&str>) -> HtmlElement {
+pub fn create(tag: &str, class: &str, text: Option<&str>) -> HtmlElement {
     let e: HtmlElement = document()
         .create_element(tag)
         .expect("creating an element of a known tag cannot fail")
@@ -22,7 +22,7 @@ pub fn element(tag: &str, class: &str, text: Option<&str>) -> HtmlElement {
 
 /// A new element of a specific type.
 pub fn typed<T: JsCast>(tag: &str, class: &str) -> T {
-    element(tag, class, None)
+    create(tag, class, None)
         .dyn_into()
         .expect("the tag makes this element type")
 }

@@ -3,16 +3,12 @@
 //! are plain links to the preset's fragment, so the browser's history does the navigation; the
 //! pictures are drawn one by one by a second viewer on a small off-screen canvas.
 
-use super::dom::{append, attr, element, typed};
+use super::dom::{append, attr, create, typed};
 use super::viewer::Viewer;
+use crate::spec::link;
 use crate::species::{Preset, presets};
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
-
-/// A card's link target.
-pub fn fragment(preset: &Preset) -> String {
-    format!("#v={}&preset={}", crate::spec::link::VERSION, preset.id)
-}
 
 /// Fills `container` with one section per group and one card per preset.
 pub fn build(container: &Element) {
@@ -21,23 +17,27 @@ pub fn build(container: &Element) {
     for preset in presets() {
         if group != Some(preset.group) {
             group = Some(preset.group);
-            let section = element("section", "group", None);
-            let heading = element("h2", "", Some(preset.group.title()));
-            let cards = element("div", "cards", None);
+            let section = create("section", "group", None);
+            let heading = create("h2", "", Some(preset.group.title()));
+            let cards = create("div", "cards", None);
             append(&section, &[&heading, &cards]);
             append(container, &[&section]);
             grid = Some(cards.into());
         }
-        let card = element("a", "card", None);
-        attr(&card, "href", &fragment(preset));
+        let card = create("a", "card", None);
+        attr(
+            &card,
+            "href",
+            &format!("#{}", link::encode(preset, &preset.spec)),
+        );
         attr(&card, "data-preset", preset.id);
         let picture: HtmlImageElement = typed("img", "picture");
         picture.set_alt(&format!("{}, grown from the model", preset.name));
         picture.set_width(256);
         picture.set_height(256);
-        let name = element("h3", "", Some(&preset.name));
-        let source = element("p", "source", Some(&preset.source));
-        let description = element("p", "description", Some(&preset.description));
+        let name = create("h3", "", Some(&preset.name));
+        let source = create("p", "source", Some(&preset.source));
+        let description = create("p", "description", Some(&preset.description));
         append(&card, &[&picture, &name, &source, &description]);
         if let Some(g) = &grid {
             append(g, &[&card]);

@@ -3,7 +3,7 @@
 //! control with the paper's symbol and name, its range, and a number beside each slider. Every
 //! change is handed back as `key=value` text and read exactly as a link's value would be.
 
-use super::dom::{append, attr, clear, element, typed};
+use super::dom::{append, attr, clear, create, typed};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{FIELDS, Field, Group, Kind, display};
 use crate::spec::link::{flatten, format_value};
@@ -139,19 +139,19 @@ impl Panel {
         let mut group: Option<(Group, Element)> = None;
         for field in fields {
             if group.as_ref().map(|g| g.0) != Some(field.group) {
-                let details = element("details", "params", None);
+                let details = create("details", "params", None);
                 attr(&details, "open", "");
                 append(
                     &details,
-                    &[&element("summary", "", Some(field.group.title()))],
+                    &[&create("summary", "", Some(field.group.title()))],
                 );
                 append(container, &[&details]);
                 group = Some((field.group, details.into()));
             }
-            let row = element("div", "field", None);
+            let row = create("div", "field", None);
             attr(&row, "data-key", field.key);
             let id = format!("field-{}", field.key);
-            let name = element("label", "", Some(&label(field)));
+            let name = create("label", "", Some(&label(field)));
             attr(&name, "for", &id);
             let control = Self::control(field, &id, &row, on_change);
             append(&row, &[&name]);
