@@ -30,6 +30,8 @@ pub struct App {
     on_change: Option<OnChange>,
     in_gallery: bool,
     url_due: Option<f64>,
+    /// Why the page cannot go on (the graphics device was lost): the next frame stops on it.
+    failure: Option<String>,
 }
 
 fn say(problems: &[Problem]) {
@@ -62,6 +64,7 @@ impl App {
             on_change: None,
             in_gallery: false,
             url_due: None,
+            failure: None,
         }
     }
 
@@ -117,6 +120,8 @@ impl App {
         signal("state", "loading");
         signal("patternHash", "");
         if let Err(message) = self.viewer.load(preset, &spec) {
+            self.viewer.unload();
+            self.current = None;
             page::show_error(&message);
             return;
         }
@@ -293,8 +298,16 @@ impl App {
         }
     }
 
+    /// Stops the page on a failure it cannot recover from; the frame loop says why.
+    pub fn fail(&mut self, message: &str) {
+        self.failure = Some(message.to_string());
+    }
+
     /// One animation frame.
     pub fn frame(&mut self) -> Result<(), String> {
+        if let Some(failure) = &self.failure {
+            return Err(failure.clone());
+        }
         if self.in_gallery {
             if !self.pictures.finished() {
                 self.pictures.work(PICTURE_BUDGET_MS);

@@ -189,10 +189,8 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
         a.viewer().wheel(e.delta_y());
     })?;
     on(&canvas, "dblclick", app, |a, _: Event| a.reset_camera())?;
-    on(&canvas, "webglcontextlost", app, |_, _: Event| {
-        page::show_error(
-            "The graphics device was lost: the browser took WebGL away from this page. Reload the page to continue.",
-        );
+    on(&canvas, "webglcontextlost", app, |a, _: Event| {
+        a.fail("The graphics device was lost: the browser took WebGL away from this page. Reload the page to continue.");
     })?;
     on_click("play", app, App::toggle_playing)?;
     on_click("restart", app, App::restart)?;

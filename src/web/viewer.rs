@@ -78,6 +78,11 @@ impl Viewer {
         self.dirty = true;
     }
 
+    /// Drops the shell (after one that could not be built): nothing is drawn or grown.
+    pub fn unload(&mut self) {
+        self.growing = None;
+    }
+
     /// Starts growing `spec` from its apex.
     pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) -> Result<(), String> {
         let generator =
