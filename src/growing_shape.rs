@@ -3,11 +3,15 @@
 //! mesh that closes its current growing edge (the lip of a thick wall). A step's cost depends
 //! only on what it adds, never on how much has grown already.
 
-use crate::geometry::sweep::GeometryError;
 use crate::geometry::sweep_mesh::SweepMesh;
+use crate::growth::chamber_mesh::ChamberMesh;
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::form::Form;
 use glam::DVec3;
+
+/// Why a shape cannot be built from its spec, in words that name the key concerned.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GeometryError(pub String);
 
 /// A shape grown step by step.
 pub trait GrowingShape {
@@ -33,5 +37,6 @@ pub trait GrowingShape {
 pub fn shape_for(form: &Form, rows: usize) -> Result<Box<dyn GrowingShape>, GeometryError> {
     match form {
         Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),
+        Form::Chambers(chambers) => Ok(Box::new(ChamberMesh::new(chambers, rows)?)),
     }
 }

@@ -8,6 +8,7 @@ pub mod generator;
 pub mod geometry;
 pub mod gestures;
 pub mod growing_shape;
+pub mod growth;
 pub mod mesh;
 pub mod pattern;
 pub mod spec;

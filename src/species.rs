@@ -20,6 +20,8 @@ pub enum Group {
     Pigmentation,
     /// Pigmentation by the vector cellular automaton.
     Automaton,
+    /// Kawaguchi's GROWTH (1982): accumulated chambers, later branching.
+    Kawaguchi,
 }
 
 impl Group {
@@ -29,6 +31,7 @@ impl Group {
             Group::Shapes => "Shell shapes",
             Group::Pigmentation => "Pigmentation patterns",
             Group::Automaton => "Cellular automaton",
+            Group::Kawaguchi => "Kawaguchi's GROWTH",
         }
     }
 }

@@ -3,14 +3,15 @@
 //! mirror symmetry of dextral and sinistral shells, and watertight solids.
 #![cfg(not(target_arch = "wasm32"))]
 
-use glam::{DQuat, DVec3};
+use glam::DQuat;
 use proptest::prelude::*;
+mod common;
+
 use seashells_core::export::{obj, stl};
 use seashells_core::generator::Generator;
 use seashells_core::geometry::frame::{Frame, FrameMode};
 use seashells_core::geometry::helico_spiral::HelicoSpiral;
 use seashells_core::geometry::sweep::Sweep;
-use seashells_core::mesh::Mesh;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::{Form, Handedness, RibSpec, SweepSpec};
 use seashells_core::species::preset;
@@ -23,6 +24,7 @@ fn turbinate() -> ShellSpec {
 fn sweep_of(spec: &mut ShellSpec) -> &mut SweepSpec {
     match &mut spec.form {
         Form::Sweep(s) => s,
+        _ => unreachable!("a sweep preset"),
     }
 }
 
@@ -180,41 +182,10 @@ fn sinistral_shells_mirror_dextral_ones() {
     }
 }
 
-/// Directed edges by welded position; a closed, consistently oriented surface has each edge
-/// exactly once in each direction.
-fn directed_edges(mesh: &Mesh) -> HashMap<([u32; 3], [u32; 3]), usize> {
-    let key = |i: u32| mesh.vertices[i as usize].position.map(f32::to_bits);
-    let mut edges = HashMap::new();
-    for t in mesh.indices.chunks_exact(3) {
-        for (a, b) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
-            *edges.entry((key(a), key(b))).or_insert(0) += 1;
-        }
-    }
-    edges
-}
-
-fn signed_volume(mesh: &Mesh) -> f64 {
-    let p = |i: u32| DVec3::from(mesh.vertices[i as usize].position.map(f64::from));
-    mesh.indices
-        .chunks_exact(3)
-        .map(|t| p(t[0]).dot(p(t[1]).cross(p(t[2]))) / 6.0)
-        .sum()
-}
-
 fn assert_closed_and_outward(spec: &ShellSpec, what: &str) {
     let mut g = Generator::new(spec).unwrap();
     g.finish();
-    let mesh = g.snapshot();
-    let edges = directed_edges(&mesh);
-    for (&(a, b), &count) in &edges {
-        assert_eq!(count, 1, "{what}: edge used {count} times in one direction");
-        assert_eq!(
-            edges.get(&(b, a)),
-            Some(&1),
-            "{what}: an edge has no opposite (a hole)"
-        );
-    }
-    assert!(signed_volume(&mesh) > 0.0, "{what}: triangles face inwards");
+    common::assert_closed_and_outward(&g.snapshot(), what);
 }
 
 #[test]
@@ -309,7 +280,9 @@ fn the_generator_hands_out_each_rim_once_whatever_the_chunks() {
     assert_eq!(whole.mesh().indices.len(), capacity.indices);
     assert_eq!(whole.edge().vertices.len(), edge_capacity.vertices);
     assert_eq!(whole.edge().indices.len(), edge_capacity.indices);
-    let Form::Sweep(s) = &spec.form;
+    let Form::Sweep(s) = &spec.form else {
+        unreachable!("turbinate is a sweep")
+    };
     let rims = (s.spiral.whorls * 360.0 / s.spiral.delta_theta * f64::from(s.spiral.subdivisions))
         .round() as usize
         + 1;
@@ -325,19 +298,7 @@ fn the_generator_hands_out_each_rim_once_whatever_the_chunks() {
 fn normals_are_unit_and_agree_with_the_triangles() {
     let mut g = Generator::new(&turbinate()).unwrap();
     g.finish();
-    let mesh = g.snapshot();
-    let mut agree = 0;
-    for t in mesh.indices.chunks_exact(3) {
-        let v = |k: usize| mesh.vertices[t[k] as usize];
-        let p = |k: usize| DVec3::from(v(k).position.map(f64::from));
-        let face = (p(1) - p(0)).cross(p(2) - p(0));
-        let n = DVec3::from(v(0).normal.map(f64::from));
-        assert!((n.length() - 1.0).abs() < 1e-5);
-        if face.dot(n) > 0.0 {
-            agree += 1;
-        }
-    }
-    let share = agree as f64 / mesh.triangle_count() as f64;
+    let share = common::share_of_normals_agreeing(&g.snapshot());
     assert!(
         share > 0.99,
         "only {share} of triangles agree with their vertex normals"

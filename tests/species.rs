@@ -62,7 +62,9 @@ fn figure_2_uses_the_papers_numbers() {
         ("spherical", 1.5, 1.03),
         ("diskoid", 1.4, 1.014),
     ] {
-        let Form::Sweep(s) = &preset(id).unwrap().spec.form;
+        let Form::Sweep(s) = &preset(id).unwrap().spec.form else {
+            panic!("{id} is not a sweep")
+        };
         assert_eq!(
             (s.spiral.z0, s.spiral.lambda_r, s.spiral.lambda_z),
             (z0, lambda, lambda),

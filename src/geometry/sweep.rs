@@ -16,6 +16,7 @@ use super::bezier_curve::BezierCurve;
 use super::frame::{CurveAxes, Frame, FrameMode};
 use super::helico_spiral::{HelicoSpiral, SpiralPoint};
 use super::sculpture;
+use crate::growing_shape::GeometryError;
 use crate::spec::form::{Handedness, SculptureSpec, SweepSpec, WallSpec};
 use glam::DVec3;
 use std::f64::consts::TAU;
@@ -98,10 +99,6 @@ pub struct Sweep {
     orientation: f64,
     sinistral: bool,
 }
-
-/// Why a sweep cannot be built.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct GeometryError(pub String);
 
 impl Sweep {
     pub fn new(spec: &SweepSpec) -> Result<Self, GeometryError> {

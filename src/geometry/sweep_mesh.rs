@@ -8,8 +8,8 @@
 //! from 0 to 1 while the solid stays watertight.
 
 use super::helico_spiral::SpiralWalk;
-use super::sweep::{GeometryError, Rim, Sweep};
-use crate::growing_shape::GrowingShape;
+use super::sweep::{Rim, Sweep};
+use crate::growing_shape::{GeometryError, GrowingShape};
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::spec::form::SweepSpec;
 use glam::DVec3;

@@ -7,6 +7,8 @@
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Group {
     Shape,
+    Mouth,
+    Chamber,
     Curve,
     Orientation,
     Sculpture,
@@ -21,6 +23,8 @@ impl Group {
     pub fn title(self) -> &'static str {
         match self {
             Group::Shape => "Shape",
+            Group::Mouth => "Mouth polygon",
+            Group::Chamber => "Chamber to chamber",
             Group::Curve => "Generating curve",
             Group::Orientation => "Orientation",
             Group::Sculpture => "Sculpture",
@@ -169,7 +173,23 @@ pub const MAX_DIFFUSION: f64 = 0.5;
 /// Every field of every form and model.
 #[rustfmt::skip]
 pub const FIELDS: &[Field] = &[
-    f("form.kind", Shape, "", "surface model", Kind::Choice(&["sweep"])),
+    f("form.kind", Shape, "", "surface model", Kind::Choice(&["sweep", "chambers"])),
+    f("form.chambers", Shape, "", "chambers (the age of the shell)", int(1, 2000)),
+    f("form.handedness", Shape, "", "twist", Kind::Choice(&["dextral", "sinistral"])),
+    f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
+    f("form.septa", Shape, "", "mark the septa (suture lines)", Kind::Flag),
+    f("form.mouth.apexes", Mouth, "N", "apexes of the polygon", int(3, 256)),
+    f("form.mouth.radius_a", Mouth, "D₀/2", "long radius", log(0.01, 100.0)),
+    f("form.mouth.radius_b", Mouth, "", "short radius", log(0.01, 100.0)),
+    f("form.mouth.protuberances", Mouth, "", "protuberances: radial offsets around the ellipse (fractions)", Kind::List { width: 1, integer: false }),
+    f("form.chamber.ratio", Chamber, "r", "growth ratio D₀′/D₀ per chamber", log(0.5, 2.0)),
+    f("form.chamber.width", Chamber, "H", "width between bottom and top base", log(0.001, 100.0)),
+    f("form.chamber.inclination.x", Chamber, "Qx", "inclination about x (degrees)", real(-90.0, 90.0)),
+    f("form.chamber.inclination.y", Chamber, "Qy", "inclination about y (degrees)", real(-90.0, 90.0)),
+    f("form.chamber.inclination.z", Chamber, "Qz", "inclination about z (degrees)", real(-90.0, 90.0)),
+    f("form.chamber.translation.x", Chamber, "Tx", "shift of the next chamber along x", real(-10.0, 10.0)),
+    f("form.chamber.translation.y", Chamber, "Ty", "shift of the next chamber along y", real(-10.0, 10.0)),
+    f("form.chamber.translation.z", Chamber, "Tz", "shift of the next chamber along z", real(0.0, 10.0)),
     f("form.spiral.delta_theta", Shape, "Δθ", "angular step (degrees)", real(0.5, 90.0)),
     f("form.spiral.lambda_r", Shape, "λᵣ", "radial growth per step", log(0.8, 3.0)),
     f("form.spiral.lambda_z", Shape, "λ_z", "axial growth per step", log(0.8, 3.0)),

@@ -1,7 +1,8 @@
 //! The shape part of a [`ShellSpec`](super::ShellSpec): which model builds the surface, and its
-//! parameters. Only the swept surface of Fowler et al. 1992 §2 exists so far; the implicit
-//! (BlobTree) and accumulated-chamber forms join this enum as further variants.
+//! parameters: the swept surface of Fowler et al. 1992 §2, and Kawaguchi's accumulated
+//! chambers (1982). The implicit (BlobTree) form joins this enum as a further variant.
 
+use super::chambers::ChambersSpec;
 use crate::geometry::frame::FrameMode;
 use serde::{Deserialize, Serialize};
 
@@ -11,6 +12,8 @@ use serde::{Deserialize, Serialize};
 pub enum Form {
     /// A generating curve swept along a helico-spiral (Fowler et al. 1992, §2).
     Sweep(SweepSpec),
+    /// A stack of similar chambers (Kawaguchi 1982, "Shells' growth model").
+    Chambers(ChambersSpec),
 }
 
 /// Parameters of the swept surface.

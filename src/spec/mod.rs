@@ -1,6 +1,7 @@
 //! The whole shareable parameter set of a shell: one type, [`ShellSpec`], read from preset files
 //! and links, validated before anything is built from it.
 
+pub mod chambers;
 pub mod colour;
 pub mod fields;
 pub mod form;
@@ -55,6 +56,11 @@ impl ShellSpec {
     pub fn rows_per_whorl(&self) -> f64 {
         match &self.form {
             Form::Sweep(s) => f64::from(self.growth.rows) / s.spiral.whorls.max(1e-3),
+            Form::Chambers(c) => {
+                let turn = crate::growth::chamber_stack::turn_per_chamber(&c.chamber);
+                let whorls = f64::from(c.chambers) * turn / std::f64::consts::TAU;
+                f64::from(self.growth.rows) / whorls.max(1e-3)
+            }
         }
     }
 }

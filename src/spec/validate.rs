@@ -3,11 +3,17 @@
 //! values) and reported as a [`Problem`] naming the key, the cap and what was used.
 
 use super::ShellSpec;
+use super::chambers::ChambersSpec;
 use super::form::{CurveSpec, Form, SweepSpec};
 use super::link::Problem;
 use super::pattern::{Automaton, Model, PatternSpec};
+use crate::growing_shape::GeometryError;
+use crate::growth::chamber_mesh::mesh_capacity;
+use crate::growth::chamber_stack::ChamberStack;
+use crate::growth::mouth::mouth_polygon;
 use crate::pattern::automaton::rule_of;
 use crate::pattern::diffusions;
+use crate::species;
 use crate::texture_layout::TextureLayout;
 
 /// Most vertices a shell's mesh may have (72 MB of vertex data).
@@ -34,10 +40,73 @@ fn curve_fits(curve: &CurveSpec) -> bool {
     }
 }
 
+/// The form to repair `form` from: `fallback`'s when it is of the same kind, else that of the
+/// first preset of the kind (a link that switched kinds starts from that preset too).
+fn same_kind<'a>(form: &Form, fallback: &'a Form) -> &'a Form {
+    let kind = std::mem::discriminant(form);
+    if std::mem::discriminant(fallback) == kind {
+        return fallback;
+    }
+    species::presets()
+        .iter()
+        .map(|p| &p.spec.form)
+        .find(|f| std::mem::discriminant(*f) == kind)
+        .expect("every form kind has a preset")
+}
+
+/// A shape error ("key: what") as a problem, saying what was used instead.
+fn shape_problem(error: GeometryError, used: &str) -> Problem {
+    let (key, message) = error.0.split_once(": ").unwrap_or(("form", &error.0));
+    Problem::new(key, format!("{message}; used {used}"))
+}
+
 /// Repairs every cross-field violation of `spec` from `fallback` and says what was done.
 pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
     let mut problems = Vec::new();
-    let (Form::Sweep(s), Form::Sweep(f)) = (&mut spec.form, &fallback.form);
+    let fallback_form = same_kind(&spec.form, &fallback.form);
+    match (&mut spec.form, fallback_form) {
+        (Form::Sweep(s), Form::Sweep(f)) => repair_sweep(s, f, &mut problems),
+        (Form::Chambers(c), Form::Chambers(f)) => repair_chambers(c, f, &mut problems),
+        _ => unreachable!("same_kind gives a fallback of the form's kind"),
+    }
+    repair_pattern(spec, fallback, &mut problems);
+    problems
+}
+
+/// A chamber stack must build (a mouth that does not fold over itself, chambers whose top
+/// base stays above their bottom base) and fit the vertex cap.
+fn repair_chambers(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<Problem>) {
+    if let Err(e) = mouth_polygon(&c.mouth) {
+        problems.push(shape_problem(e, "the preset's protuberances"));
+        c.mouth.protuberances = f.mouth.protuberances.clone();
+        if mouth_polygon(&c.mouth).is_err() {
+            c.mouth = f.mouth.clone();
+        }
+    }
+    if let Err(e) = ChamberStack::new(c) {
+        problems.push(shape_problem(e, "the preset's chamber"));
+        c.chamber = f.chamber.clone();
+        if ChamberStack::new(c).is_err() {
+            *c = f.clone();
+        }
+    }
+    let vertices = mesh_capacity(c).0.vertices as u64;
+    if vertices > MAX_VERTICES {
+        problems.push(Problem::new(
+            "form.chambers",
+            format!(
+                "{} chambers of {} apexes would make {vertices} vertices, more than the cap of {MAX_VERTICES}; used the preset's {} chambers of {} apexes",
+                c.chambers, c.mouth.apexes, f.chambers, f.mouth.apexes
+            ),
+        ));
+        c.chambers = f.chambers;
+        c.mouth.apexes = f.mouth.apexes;
+    }
+}
+
+/// A sweep's curve must have the control points its closedness needs, and its mesh fit the
+/// vertex cap.
+fn repair_sweep(s: &mut SweepSpec, f: &SweepSpec, problems: &mut Vec<Problem>) {
     if !curve_fits(&s.curve) {
         let n = s.curve.points.len();
         let need = if s.curve.closed {
@@ -68,6 +137,11 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
             ),
         ));
     }
+}
+
+/// The pattern must fit its texture and the cell-update cap, diffuse stably, and (for the
+/// automaton) have a rule that parses.
+fn repair_pattern(spec: &mut ShellSpec, fallback: &ShellSpec, problems: &mut Vec<Problem>) {
     if spec.pattern.model != Model::None {
         let most = crate::texture_layout::MAX_SIDE / spec.pattern.refinement.max(1);
         if spec.pattern.cells > most {
@@ -128,7 +202,6 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
             spec.pattern.high = fallback.pattern.high;
         }
     }
-    problems
 }
 
 /// The automaton's rule must parse, its starting cells lie on the edge, and, being discrete,

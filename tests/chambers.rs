@@ -1,0 +1,340 @@
+//! Properties of Kawaguchi's accumulated chambers (1982) that must hold for any parameters:
+//! one similarity carries each chamber onto the next, vertex distances from the centre of
+//! similitude form a geometric progression, chambers adjoin exactly when T = 0, the mesh is a
+//! closed outward-facing solid at every stage of growth, handedness mirrors, growth is
+//! deterministic, and bad parameters get messages that name them.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use glam::DVec3;
+use proptest::prelude::*;
+use seashells_core::generator::Generator;
+use seashells_core::growth::chamber_stack::{ChamberStack, RingKind};
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::chambers::{ChambersSpec, Look, Triple};
+use seashells_core::spec::form::{Form, Handedness};
+use seashells_core::spec::link::decode;
+use seashells_core::species::preset;
+
+fn spec_of(id: &str) -> ShellSpec {
+    preset(id).expect("preset").spec.clone()
+}
+
+fn chambers_of(spec: &mut ShellSpec) -> &mut ChambersSpec {
+    match &mut spec.form {
+        Form::Chambers(c) => c,
+        _ => unreachable!("a chamber preset"),
+    }
+}
+
+fn stack(spec: &ChambersSpec) -> ChamberStack {
+    ChamberStack::new(spec).expect("a valid stack")
+}
+
+/// A chamber spec from proptest's numbers, with the width raised until the top base clears the
+/// bottom base.
+fn arbitrary(ratio: f64, q: [f64; 3], t: [f64; 3], apexes: u32) -> ChambersSpec {
+    let mut c = match spec_of("kawaguchi-shell").form {
+        Form::Chambers(c) => c,
+        _ => unreachable!(),
+    };
+    c.mouth.apexes = apexes;
+    c.chamber.ratio = ratio;
+    c.chamber.inclination = Triple {
+        x: q[0],
+        y: q[1],
+        z: q[2],
+    };
+    c.chamber.translation = Triple {
+        x: t[0],
+        y: t[1],
+        z: t[2],
+    };
+    let tilt = q[0].to_radians().abs().max(q[1].to_radians().abs());
+    c.chamber.width = 0.05 + 1.2 * ratio * tilt.sin() * c.mouth.radius_a.max(c.mouth.radius_b);
+    c.chambers = 12;
+    c
+}
+
+fn close(a: DVec3, b: DVec3, scale: f64) -> bool {
+    (a - b).length() <= 1e-9 * scale.max(1.0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn one_similarity_of_ratio_r_carries_each_chamber_onto_the_next(
+        ratio in 0.8f64..1.25,
+        q in prop::array::uniform3(-25.0f64..25.0),
+        t in prop::array::uniform3(0.0f64..0.5),
+        shifted in any::<bool>(),
+        sinistral in any::<bool>(),
+    ) {
+        let mut c = arbitrary(ratio, q, if shifted { t } else { [0.0; 3] }, 9);
+        if sinistral {
+            c.handedness = Handedness::Sinistral;
+        }
+        let s = stack(&c);
+        let similarity = s.similarity();
+        let shown = |frame, kind| -> Vec<DVec3> {
+            s.ring(&frame, kind).into_iter().map(|p| s.mirror(p)).collect()
+        };
+        for k in 0..c.chambers as usize - 1 {
+            for kind in [RingKind::Bottom, RingKind::Top] {
+                let now = shown(s.frame(k), kind);
+                let next = shown(s.frame(k + 1), kind);
+                let scale = now.iter().map(|p| p.length()).fold(1.0, f64::max);
+                for (p, q) in now.iter().zip(&next) {
+                    prop_assert!(close(similarity.transform_point3(*p), *q, scale * 2.0));
+                }
+                // Its ratio is r: every distance scales by it.
+                let (a, b) = (now[0] - now[3], next[0] - next[3]);
+                prop_assert!((b.length() - ratio * a.length()).abs() <= 1e-9 * scale);
+            }
+        }
+    }
+
+    #[test]
+    fn distances_from_the_centre_of_similitude_form_a_geometric_progression(
+        ratio in prop_oneof![0.8f64..0.98, 1.02f64..1.25],
+        q in prop::array::uniform3(-25.0f64..25.0),
+        t in prop::array::uniform3(0.0f64..0.5),
+    ) {
+        // The centre of similitude is shell space's origin by construction.
+        let c = arbitrary(ratio, q, t, 7);
+        let s = stack(&c);
+        let first = s.ring(&s.frame(0), RingKind::Top);
+        for k in 1..c.chambers as usize {
+            let ring = s.ring(&s.frame(k), RingKind::Top);
+            for (p0, pk) in first.iter().zip(&ring) {
+                let expected = p0.length() * ratio.powi(k as i32);
+                prop_assert!((pk.length() - expected).abs() <= 1e-9 * expected.max(1e-3));
+            }
+        }
+    }
+}
+
+#[test]
+fn chambers_share_their_bases_without_a_shift_and_separate_with_one() {
+    let base = arbitrary(1.08, [0.0, 14.0, 4.0], [0.0; 3], 10);
+    let s = stack(&base);
+    assert!(s.adjoining());
+    for k in 0..base.chambers as usize - 1 {
+        let top = s.ring(&s.frame(k), RingKind::Top);
+        let next = s.ring(&s.frame(k + 1), RingKind::Bottom);
+        for (a, b) in top.iter().zip(&next) {
+            assert!(close(*a, *b, a.length()), "chamber {k}: {a} and {b}");
+        }
+    }
+    let t = [0.1, 0.2, 0.15];
+    let shifted = arbitrary(1.08, [0.0, 14.0, 4.0], t, 10);
+    let s = stack(&shifted);
+    assert!(!s.adjoining());
+    let shift = DVec3::from(t).length();
+    for k in 0..shifted.chambers as usize - 1 {
+        let top = s.ring(&s.frame(k), RingKind::Top);
+        let next = s.ring(&s.frame(k + 1), RingKind::Bottom);
+        // The gap is T in the top base's frame, scaled like the chamber: r^(k+1) |T|.
+        let expected = 1.08f64.powi(k as i32 + 1) * shift;
+        for (a, b) in top.iter().zip(&next) {
+            assert!(((*b - *a).length() - expected).abs() < 1e-9 * expected);
+        }
+    }
+}
+
+/// Every combination of look, handedness, shift, septa and protuberances.
+fn variants() -> Vec<(String, ShellSpec)> {
+    let mut out = Vec::new();
+    for look in [Look::Faceted, Look::Smooth] {
+        for sinistral in [false, true] {
+            for shifted in [false, true] {
+                for septa in [false, true] {
+                    let mut spec = spec_of("kawaguchi-shell");
+                    let c = chambers_of(&mut spec);
+                    c.look = look;
+                    c.septa = septa;
+                    c.chambers = 30;
+                    c.mouth.protuberances = vec![0.2, -0.1, 0.0, 0.3, -0.2];
+                    if sinistral {
+                        c.handedness = Handedness::Sinistral;
+                    }
+                    if shifted {
+                        c.chamber.translation = Triple {
+                            x: 0.1,
+                            y: 0.2,
+                            z: 0.1,
+                        };
+                    }
+                    spec.growth.rows = 31;
+                    let what = format!(
+                        "{look:?}, sinistral {sinistral}, shifted {shifted}, septa {septa}"
+                    );
+                    out.push((what, spec));
+                }
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_stack_is_a_closed_outward_solid_at_every_stage_of_growth() {
+    for (what, spec) in variants() {
+        let mut g = Generator::new(&spec).unwrap();
+        assert_eq!(
+            g.snapshot().triangle_count(),
+            0,
+            "{what}: the apex base alone shows nothing"
+        );
+        while !g.is_done() {
+            g.advance(3);
+            let rows = g.rows_done();
+            common::assert_closed_and_outward(&g.snapshot(), &format!("{what}, row {rows}"));
+        }
+        let mesh = g.snapshot();
+        let share = common::share_of_normals_agreeing(&mesh);
+        assert!(share > 0.97, "{what}: only {share} of normals agree");
+        let (capacity, edge) = g.capacity();
+        assert_eq!(g.mesh().vertices.len(), capacity.vertices, "{what}");
+        assert_eq!(g.mesh().indices.len(), capacity.indices, "{what}");
+        assert_eq!(g.edge().vertices.len(), edge.vertices, "{what}");
+    }
+}
+
+#[test]
+fn every_chamber_preset_exports_a_closed_solid() {
+    for id in [
+        "kawaguchi-shell",
+        "kawaguchi-ammonite",
+        "kawaguchi-horn",
+        "kawaguchi-tusk",
+        "kawaguchi-claw",
+        "kawaguchi-painted",
+    ] {
+        let mut g = Generator::new(&spec_of(id)).unwrap();
+        g.finish();
+        common::assert_closed_and_outward(&g.snapshot(), id);
+    }
+}
+
+#[test]
+fn sinistral_stacks_mirror_dextral_ones() {
+    let mut spec = spec_of("kawaguchi-horn");
+    let mut right = Generator::new(&spec).unwrap();
+    right.finish();
+    chambers_of(&mut spec).handedness = Handedness::Sinistral;
+    let mut left = Generator::new(&spec).unwrap();
+    left.finish();
+    let (a, b) = (right.snapshot(), left.snapshot());
+    assert_eq!(a.vertices.len(), b.vertices.len());
+    for (p, q) in a.vertices.iter().zip(&b.vertices) {
+        assert_eq!([p.position[0], -p.position[1], p.position[2]], q.position);
+        assert_eq!([p.normal[0], -p.normal[1], p.normal[2]], q.normal);
+    }
+    for (s, t) in a.indices.chunks(3).zip(b.indices.chunks(3)) {
+        assert_eq!([s[0], s[2], s[1]], [t[0], t[1], t[2]]);
+    }
+}
+
+#[test]
+fn growth_is_deterministic_whatever_the_chunks() {
+    let spec = spec_of("kawaguchi-painted");
+    let mut whole = Generator::new(&spec).unwrap();
+    whole.finish();
+    let mut pieces = Generator::new(&spec).unwrap();
+    let mut step = 1;
+    while !pieces.is_done() {
+        pieces.advance(step);
+        step = step % 5 + 1;
+    }
+    assert_eq!(pieces.mesh(), whole.mesh());
+    assert_eq!(pieces.edge(), whole.edge());
+    assert_eq!(
+        pieces.pattern().unwrap().hash(),
+        whole.pattern().unwrap().hash()
+    );
+}
+
+#[test]
+fn each_chamber_is_a_row_and_each_apex_a_cell_of_the_pattern() {
+    let spec = spec_of("kawaguchi-painted");
+    let c = match &spec.form {
+        Form::Chambers(c) => c.clone(),
+        _ => unreachable!(),
+    };
+    assert_eq!(spec.pattern.cells, c.mouth.apexes, "one cell per apex");
+    assert_eq!(spec.growth.rows, c.chambers + 1, "one row per chamber");
+    let mut g = Generator::new(&spec).unwrap();
+    g.finish();
+    let rows: std::collections::BTreeSet<u32> = g
+        .mesh()
+        .vertices
+        .iter()
+        .map(|v| {
+            assert!((0.0..=1.0).contains(&v.pattern[0]));
+            v.pattern[1] as u32
+        })
+        .collect();
+    assert_eq!(rows.len(), c.chambers as usize + 1, "a row per base");
+    assert_eq!(*rows.last().unwrap(), c.chambers);
+}
+
+#[test]
+fn bad_parameters_get_messages_that_name_them() {
+    let cases: [(&str, &str); 6] = [
+        ("form.mouth.apexes=2", "outside the range 3 to 256"),
+        ("form.chamber.ratio=0", "outside the range 0.5 to 2"),
+        ("form.chamber.ratio=-1", "outside the range 0.5 to 2"),
+        (
+            "form.mouth.protuberances=0,-1.5,0",
+            "fold the mouth polygon over itself",
+        ),
+        ("form.chambers=5000", "outside the range 1 to 2000"),
+        (
+            "form.mouth.apexes=256&form.chambers=2000&form.septa=true",
+            "more than the cap of 2000000",
+        ),
+    ];
+    for (change, expected) in cases {
+        let link = format!("v=1&preset=kawaguchi-shell&{change}");
+        let decoded = decode(&link);
+        let said: Vec<String> = decoded.problems.iter().map(ToString::to_string).collect();
+        assert!(
+            said.iter().any(|p| p.contains(expected)),
+            "{change}: {said:?}"
+        );
+        Generator::new(&decoded.spec).unwrap_or_else(|e| panic!("{change}: {e}"));
+    }
+    let inverted = decode("v=1&preset=kawaguchi-shell&form.chamber.width=0.01");
+    assert!(
+        inverted.problems[0]
+            .to_string()
+            .starts_with("form.chamber.inclination: the top base crosses the bottom base"),
+        "{:?}",
+        inverted.problems
+    );
+    // A spec that skips validation still gets a message, never a broken mesh.
+    let mut spec = spec_of("kawaguchi-shell");
+    chambers_of(&mut spec).chamber.ratio = 0.0;
+    let e = Generator::new(&spec).err().expect("refused");
+    assert!(e.0.contains("growth ratio r must be above 0"), "{e}");
+}
+
+#[test]
+fn a_link_switches_a_sweep_to_chambers_and_back() {
+    let decoded = decode("v=1&preset=turbinate&form.kind=chambers");
+    assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+    assert!(matches!(decoded.spec.form, Form::Chambers(_)));
+    let decoded = decode("v=1&preset=kawaguchi-horn&form.kind=sweep&form.curve.points=1,2,3");
+    assert!(matches!(decoded.spec.form, Form::Sweep(_)));
+    assert!(
+        decoded.problems[0]
+            .to_string()
+            .contains("used the preset's curve"),
+        "{:?}",
+        decoded.problems
+    );
+    Generator::new(&decoded.spec).unwrap();
+}

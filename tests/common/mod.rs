@@ -1,0 +1,64 @@
+//! Checks of meshes shared by the tests of every form.
+#![allow(dead_code)]
+
+use glam::DVec3;
+use seashells_core::mesh::Mesh;
+use std::collections::HashMap;
+
+/// Directed edges by welded position; a closed, consistently oriented surface has each edge
+/// exactly once in each direction.
+pub fn directed_edges(mesh: &Mesh) -> HashMap<([u32; 3], [u32; 3]), usize> {
+    let key = |i: u32| mesh.vertices[i as usize].position.map(f32::to_bits);
+    let mut edges = HashMap::new();
+    for t in mesh.indices.chunks_exact(3) {
+        for (a, b) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+            *edges.entry((key(a), key(b))).or_insert(0) += 1;
+        }
+    }
+    edges
+}
+
+/// Volume enclosed by the triangles (divergence theorem): positive when they face outwards.
+pub fn signed_volume(mesh: &Mesh) -> f64 {
+    let p = |i: u32| DVec3::from(mesh.vertices[i as usize].position.map(f64::from));
+    mesh.indices
+        .chunks_exact(3)
+        .map(|t| p(t[0]).dot(p(t[1]).cross(p(t[2]))) / 6.0)
+        .sum()
+}
+
+/// Every edge is used once in each direction (closed, manifold, consistently wound) and the
+/// enclosed volume is positive (outward-facing).
+pub fn assert_closed_and_outward(mesh: &Mesh, what: &str) {
+    let edges = directed_edges(mesh);
+    for (&(a, b), &count) in &edges {
+        assert_eq!(count, 1, "{what}: edge used {count} times in one direction");
+        assert_eq!(
+            edges.get(&(b, a)),
+            Some(&1),
+            "{what}: an edge has no opposite (a hole)"
+        );
+    }
+    assert!(signed_volume(mesh) > 0.0, "{what}: triangles face inwards");
+}
+
+/// The share of triangles whose first vertex's normal lies on the side their winding faces;
+/// every normal must be of unit length.
+pub fn share_of_normals_agreeing(mesh: &Mesh) -> f64 {
+    let mut agree = 0;
+    for t in mesh.indices.chunks_exact(3) {
+        let v = |k: usize| mesh.vertices[t[k] as usize];
+        let p = |k: usize| DVec3::from(v(k).position.map(f64::from));
+        let face = (p(1) - p(0)).cross(p(2) - p(0));
+        let n = DVec3::from(v(0).normal.map(f64::from));
+        assert!(
+            (n.length() - 1.0).abs() < 1e-5,
+            "a normal of length {}",
+            n.length()
+        );
+        if face.dot(n) > 0.0 {
+            agree += 1;
+        }
+    }
+    agree as f64 / mesh.triangle_count() as f64
+}
