@@ -37,6 +37,33 @@ fn mesh_writes_each_format_by_extension() {
 }
 
 #[test]
+fn a_chamber_horn_exports_as_a_watertight_stl() {
+    let out = temp("horn.stl");
+    let result = run(&["mesh", "--preset", "kawaguchi-horn", "--out", &out]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    let bytes = std::fs::read(&out).unwrap();
+    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
+    assert!(count > 1000 && bytes.len() == 84 + 50 * count);
+    let mut edges = std::collections::HashMap::new();
+    for tri in bytes[84..].chunks_exact(50) {
+        let corner = |k: usize| tri[12 + 12 * k..24 + 12 * k].to_vec();
+        for (p, q) in [(0, 1), (1, 2), (2, 0)].map(|(a, b)| (corner(a), corner(b))) {
+            *edges
+                .entry(if p < q { (p, q) } else { (q, p) })
+                .or_insert(0) += 1;
+        }
+    }
+    assert!(
+        edges.values().all(|&n| n == 2),
+        "every edge joins two triangles"
+    );
+}
+
+#[test]
 fn mesh_takes_a_link_in_place_of_a_preset() {
     let out = temp("linked.stl");
     let result = run(&[
@@ -89,6 +116,13 @@ fn bad_input_gets_one_line_and_a_non_zero_exit() {
             "turbinate",
             "--out",
             "/no/such/folder/shell.stl",
+        ],
+        &[
+            "mesh",
+            "--link",
+            "v=1&preset=kawaguchi-horn&form.mouth.protuberances=0,-3",
+            "--out",
+            &out,
         ],
         &["mesh", "--colour", "red"],
         &["grow"],

@@ -212,7 +212,7 @@ impl ChamberMesh {
         while let Some(ring) = rings.next() {
             let below = self.last.take().expect("the apex ring is grown first");
             let surface = match (below.kind, ring.kind) {
-                (RingKind::Bottom, RingKind::Suture) => Surface::Edge,
+                (_, RingKind::Suture) => Surface::Edge,
                 _ => Surface::Outer,
             };
             {

@@ -36,7 +36,7 @@ test('the gallery lists every preset in its group, each with a picture of its sh
       assert.match(names, new RegExp(species));
     }
     const groups = await page.$$eval('.group h2', (hs) => hs.map((h) => h.textContent));
-    assert.deepEqual(groups, ['Shell shapes', 'Pigmentation patterns', 'Cellular automaton']);
+    assert.deepEqual(groups, ['Shell shapes', 'Pigmentation patterns', 'Cellular automaton', "Kawaguchi's GROWTH"]);
     await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 240_000 });
     const pictures = await page.$$eval('a.card img', (imgs) => imgs.map((i) => i.src));
     assert.ok(pictures.every((src) => src.startsWith('data:image/png')), 'every card has its picture');
@@ -108,6 +108,10 @@ const BAD_LINKS = [
   ['#v=1&preset=ca-waves&pattern.model.rule=1/6-8', 'not of the form a/b-c/d'],
   ['#v=1&preset=%3Cimg%20src=x%20onerror=alert(1)%3E', 'no preset'],
   [`#v=1&preset=turbinate&seed=${'9'.repeat(20000)}`, 'more than the 16384'],
+  ['#v=1&preset=kawaguchi-shell&form.mouth.protuberances=0,-1.5', 'fold the mouth polygon over itself'],
+  ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=2', 'outside the range 3 to 256'],
+  ['#v=1&preset=kawaguchi-shell&form.chamber.ratio=0', 'outside the range 0.5 to 2'],
+  ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true', 'cap of 2000000'],
 ];
 
 test('bad links each get a specific message and still a working page', async () => {

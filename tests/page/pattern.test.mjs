@@ -28,6 +28,7 @@ const LINKS = [
   'v=1&preset=oliva-porphyria',
   'v=1&preset=conus-marmoreus',
   'v=1&preset=amoria-undulata&pattern.model.d_a=0.006&seed=9',
+  'v=1&preset=kawaguchi-painted',
 ];
 
 for (const fragment of LINKS) {

@@ -1,0 +1,99 @@
+// Kawaguchi's accumulated chambers in the page: a chamber shell grows chamber by chamber on
+// both backends, every chamber preset grows on WebGPU too (WebGL2: presets.test.mjs), the
+// panel shows the chamber's own fields and a slider reshapes it, and the panel's form switch
+// turns a swept shell into a chamber stack.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readdirSync } from 'node:fs';
+import { open, session, waitForState, measureCanvas } from './browser.mjs';
+
+const SHOTS = new URL('./screenshots/chambers/', import.meta.url).pathname;
+mkdirSync(SHOTS, { recursive: true });
+const CHAMBER_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
+  .filter((f) => f.startsWith('kawaguchi-') && f.endsWith('.json'))
+  .map((f) => f.slice(0, -5));
+
+for (const backend of ['WebGL2', 'WebGPU']) {
+  test(`a chamber shell grows chamber by chamber on ${backend}`, async () => {
+    const { browser, base, close } = await session(backend);
+    try {
+      const { page, errors } = await open(browser, `${base}#v=1&preset=kawaguchi-shell&growth.speed=0.5`);
+      const ready = await waitForState(page, ['growing', 'grown', 'error']);
+      assert.equal(ready.state, 'growing', `the page reported ${ready.state}`);
+      assert.equal(ready.backend, backend);
+      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 45);
+      const early = await measureCanvas(page, `${SHOTS}shell-${backend}-early.png`);
+      await waitForState(page, ['grown']);
+      const late = await measureCanvas(page, `${SHOTS}shell-${backend}-grown.png`);
+      assert.ok(early.share > 0.005, `half-way the shell covers only ${early.share}`);
+      assert.ok(late.share > early.share * 1.3, `the shell did not grow: ${early.share} then ${late.share}`);
+      assert.ok(late.shades > 30, `only ${late.shades} shades: not a lit surface`);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+test('every chamber preset grows into a shell on WebGPU', async () => {
+  const { browser, base, close } = await session('WebGPU');
+  try {
+    for (const id of CHAMBER_PRESETS) {
+      const { page, errors } = await open(browser, `${base}#v=1&preset=${id}&growth.speed=200`, { width: 480, height: 480 });
+      try {
+        const state = await waitForState(page, ['grown', 'error']);
+        assert.equal(state.state, 'grown', id);
+        assert.equal(state.backend, 'WebGPU');
+        const shot = await measureCanvas(page, `${SHOTS}${id}-WebGPU.png`);
+        assert.ok(shot.share > 0.03, `${id} covers only ${shot.share} of the canvas`);
+        assert.ok(shot.shades > 30, `${id} has only ${shot.shades} shades`);
+        assert.equal(await page.isVisible('#message'), false, await page.textContent('#message'));
+        assert.deepEqual(errors, []);
+      } finally {
+        await page.close();
+      }
+    }
+  } finally {
+    await close();
+  }
+});
+
+test("the panel shows the chamber's fields, and a slider reshapes the shell", async () => {
+  const { browser, base, close } = await session();
+  try {
+    const { page, errors } = await open(browser, `${base}#v=1&preset=kawaguchi-horn&growth.speed=200`);
+    await waitForState(page, ['grown']);
+    const groups = await page.$$eval('details.params summary', (s) => s.map((x) => x.textContent));
+    for (const g of ['Mouth polygon', 'Chamber to chamber']) assert.ok(groups.includes(g), `${g} in ${groups}`);
+    assert.equal(await page.locator('[data-key="form.spiral.whorls"]').count(), 0, 'no sweep fields');
+    const before = await measureCanvas(page, `${SHOTS}horn-before.png`);
+    const slider = page.locator('[data-key="form.chamber.translation.y"] input.slider');
+    await slider.fill('600');
+    await page.waitForFunction(() => location.hash.includes('form.chamber.translation.y='));
+    assert.match(await page.evaluate(() => location.hash), /form\.chamber\.translation\.y=2(&|$)/);
+    await waitForState(page, ['grown']);
+    const after = await measureCanvas(page, `${SHOTS}horn-after.png`);
+    assert.notEqual(after.share, before.share, 'a wider shift opens the horn further');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the form switch turns a swept shell into a stack of chambers', async () => {
+  const { browser, base, close } = await session();
+  try {
+    const { page, errors } = await open(browser, `${base}#v=1&preset=turbinate&growth.speed=200`);
+    await waitForState(page, ['grown']);
+    await page.selectOption('[data-key="form.kind"] select', 'chambers');
+    await page.waitForFunction(() => location.hash.includes('form.kind=chambers'));
+    await waitForState(page, ['grown']);
+    assert.equal(await page.locator('[data-key="form.mouth.apexes"]').count(), 1);
+    const shot = await measureCanvas(page, `${SHOTS}turbinate-as-chambers.png`);
+    assert.ok(shot.share > 0.03);
+    assert.equal(await page.isVisible('#message'), false, await page.textContent('#message'));
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
