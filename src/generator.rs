@@ -47,7 +47,7 @@ impl std::fmt::Display for BuildError {
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
         let rows = spec.growth.rows.max(2) as usize;
-        let shape = shape_for(&spec.form, rows).map_err(|e| BuildError(e.0))?;
+        let shape = shape_for(spec, rows).map_err(|e| BuildError(e.0))?;
         let pattern = PatternRun::new(spec)
             .map_err(|e| BuildError(format!("the pattern cannot be computed: {e}")))?;
         let mut generator = Self {

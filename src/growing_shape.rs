@@ -4,8 +4,10 @@
 //! only on what it adds, never on how much has grown already.
 
 use crate::geometry::sweep_mesh::SweepMesh;
+use crate::growth::branching_mesh::BranchingMesh;
 use crate::growth::chamber_mesh::ChamberMesh;
 use crate::mesh::{Bounds, Capacity, Mesh};
+use crate::spec::ShellSpec;
 use crate::spec::form::Form;
 use glam::DVec3;
 
@@ -32,11 +34,13 @@ pub trait GrowingShape {
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh);
 }
 
-/// The growing shape a form describes; `rows` (at least 2) is the length of the pattern in
-/// rows: the first step lies on row 0, the last on row `rows − 1`.
-pub fn shape_for(form: &Form, rows: usize) -> Result<Box<dyn GrowingShape>, GeometryError> {
-    match form {
+/// The growing shape a spec's form describes; `rows` (at least 2) is the length of the pattern
+/// in rows: the first step lies on row 0, the last on row `rows − 1`. Random choices of the
+/// form come from the spec's seed.
+pub fn shape_for(spec: &ShellSpec, rows: usize) -> Result<Box<dyn GrowingShape>, GeometryError> {
+    match &spec.form {
         Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),
         Form::Chambers(chambers) => Ok(Box::new(ChamberMesh::new(chambers, rows)?)),
+        Form::Branching(branching) => Ok(Box::new(BranchingMesh::new(branching, spec.seed, rows)?)),
     }
 }

@@ -64,6 +64,20 @@ fn a_chamber_horn_exports_as_a_watertight_stl() {
 }
 
 #[test]
+fn a_coral_exports_as_an_stl_of_closed_tubes() {
+    let out = temp("coral.stl");
+    let result = run(&["mesh", "--preset", "kawaguchi-coral", "--out", &out]);
+    let said = String::from_utf8_lossy(&result.stdout);
+    assert!(
+        result.status.success() && said.contains("triangles"),
+        "{said}"
+    );
+    let bytes = std::fs::read(&out).unwrap();
+    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
+    assert!(count > 10_000 && bytes.len() == 84 + 50 * count);
+}
+
+#[test]
 fn mesh_takes_a_link_in_place_of_a_preset() {
     let out = temp("linked.stl");
     let result = run(&[
@@ -121,6 +135,13 @@ fn bad_input_gets_one_line_and_a_non_zero_exit() {
             "mesh",
             "--link",
             "v=1&preset=kawaguchi-horn&form.mouth.protuberances=0,-3",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--link",
+            "v=1&preset=kawaguchi-coral&form.knot.k0=40",
             "--out",
             &out,
         ],

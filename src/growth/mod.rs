@@ -1,6 +1,10 @@
 //! Kawaguchi's GROWTH (*A morphological study of the form of nature*, SIGGRAPH 1982): shells,
-//! horns, tusks and claws as stacks of similar chambers.
+//! horns, tusks and claws as stacks of similar chambers; plants, tendrils, corals and
+//! tentacles grown by branching.
 
+pub mod branching_mesh;
+pub mod branching_tree;
 pub mod chamber_mesh;
 pub mod chamber_stack;
 pub mod mouth;
+pub mod tendril;

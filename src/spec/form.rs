@@ -1,7 +1,9 @@
 //! The shape part of a [`ShellSpec`](super::ShellSpec): which model builds the surface, and its
 //! parameters: the swept surface of Fowler et al. 1992 §2, and Kawaguchi's accumulated
-//! chambers (1982). The implicit (BlobTree) form joins this enum as a further variant.
+//! chambers and branching forms (1982). The implicit (BlobTree) form joins this enum as a
+//! further variant.
 
+use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
 use crate::geometry::frame::FrameMode;
 use serde::{Deserialize, Serialize};
@@ -14,6 +16,8 @@ pub enum Form {
     Sweep(SweepSpec),
     /// A stack of similar chambers (Kawaguchi 1982, "Shells' growth model").
     Chambers(ChambersSpec),
+    /// Trunks, knots and branches (Kawaguchi 1982, "Growth model by branching").
+    Branching(BranchingSpec),
 }
 
 /// Parameters of the swept surface.

@@ -1,6 +1,7 @@
 //! The whole shareable parameter set of a shell: one type, [`ShellSpec`], read from preset files
 //! and links, validated before anything is built from it.
 
+pub mod branching;
 pub mod chambers;
 pub mod colour;
 pub mod fields;
@@ -61,6 +62,8 @@ impl ShellSpec {
                 let whorls = f64::from(c.chambers) * turn / std::f64::consts::TAU;
                 f64::from(self.growth.rows) / whorls.max(1e-3)
             }
+            // No whorls: the whole growth counts as one.
+            Form::Branching(_) => f64::from(self.growth.rows),
         }
     }
 }

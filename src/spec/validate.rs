@@ -3,11 +3,13 @@
 //! values) and reported as a [`Problem`] naming the key, the cap and what was used.
 
 use super::ShellSpec;
+use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
 use super::form::{CurveSpec, Form, SweepSpec};
 use super::link::Problem;
 use super::pattern::{Automaton, Model, PatternSpec};
 use crate::growing_shape::GeometryError;
+use crate::growth::branching_mesh::BranchingMesh;
 use crate::growth::chamber_mesh::mesh_capacity;
 use crate::growth::chamber_stack::ChamberStack;
 use crate::growth::mouth::mouth_polygon;
@@ -67,6 +69,9 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
     match (&mut spec.form, fallback_form) {
         (Form::Sweep(s), Form::Sweep(f)) => repair_sweep(s, f, &mut problems),
         (Form::Chambers(c), Form::Chambers(f)) => repair_chambers(c, f, &mut problems),
+        (Form::Branching(b), Form::Branching(f)) => {
+            repair_branching(b, f, spec.seed, &mut problems)
+        }
         _ => unreachable!("same_kind gives a fallback of the form's kind"),
     }
     repair_pattern(spec, fallback, &mut problems);
@@ -101,6 +106,45 @@ fn repair_chambers(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<Pr
         ));
         c.chambers = f.chambers;
         c.mouth.apexes = f.mouth.apexes;
+    }
+}
+
+/// A branching form must build (limits in order, the count of trunks within its cap) and fit
+/// the vertex cap.
+fn repair_branching(
+    b: &mut BranchingSpec,
+    f: &BranchingSpec,
+    seed: u64,
+    problems: &mut Vec<Problem>,
+) {
+    if b.knot.k0 >= b.knot.k1 {
+        problems.push(Problem::new(
+            "form.knot.k0",
+            format!(
+                "the lower limit k₀ ({}°) must be below the upper limit k₁ ({}°); used the preset's {}° and {}°",
+                b.knot.k0, b.knot.k1, f.knot.k0, f.knot.k1
+            ),
+        ));
+        b.knot.k0 = f.knot.k0;
+        b.knot.k1 = f.knot.k1;
+    }
+    let vertices = match BranchingMesh::new(b, seed, 2) {
+        Ok(mesh) => mesh.total_capacity().vertices as u64,
+        Err(e) => {
+            problems.push(shape_problem(e, "the preset's form"));
+            *b = f.clone();
+            return;
+        }
+    };
+    if vertices > MAX_VERTICES {
+        problems.push(Problem::new(
+            "form.trunk.sides",
+            format!(
+                "{} sides would make {vertices} vertices, more than the cap of {MAX_VERTICES}; used the preset's form",
+                b.trunk.sides
+            ),
+        ));
+        *b = f.clone();
     }
 }
 

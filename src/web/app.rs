@@ -1,7 +1,8 @@
 //! The page as a whole: the gallery or the viewer, chosen by the URL fragment (empty: the
 //! gallery; a link: that shell), the controls and the panel around the viewer, and the signals
 //! on <body> that tests read: `data-view`, `data-state` (gallery, loading, growing, grown,
-//! stopped, error), `data-rows`, `data-playing`, `data-pattern-hash`, `data-pictures`.
+//! stopped, error), `data-rows`, `data-playing`, `data-pattern-hash`, `data-mesh` (the grown
+//! mesh's vertex and triangle counts, as the command line prints them), `data-pictures`.
 
 use super::download;
 use super::gallery::Pictures;
@@ -119,6 +120,7 @@ impl App {
     fn load(&mut self, preset: &'static Preset, spec: ShellSpec) {
         signal("state", "loading");
         signal("patternHash", "");
+        signal("mesh", "");
         if let Err(message) = self.viewer.load(preset, &spec) {
             self.viewer.unload();
             self.current = None;
@@ -347,6 +349,15 @@ impl App {
             if let Some(p) = g.generator.pattern() {
                 signal("patternHash", &format!("{:016x}", p.hash()));
             }
+            let (mesh, edge) = (g.generator.mesh(), g.generator.edge());
+            signal(
+                "mesh",
+                &format!(
+                    "{} vertices, {} triangles",
+                    mesh.vertices.len() + edge.vertices.len(),
+                    mesh.triangle_count() + edge.triangle_count()
+                ),
+            );
             signal("state", "grown");
         } else {
             signal("state", "growing");

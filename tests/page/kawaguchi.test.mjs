@@ -1,15 +1,17 @@
-// Kawaguchi's accumulated chambers in the page: a chamber shell grows chamber by chamber on
-// both backends, every chamber preset grows on WebGPU too (WebGL2: presets.test.mjs), the
-// panel shows the chamber's own fields and a slider reshapes it, and the panel's form switch
-// turns a swept shell into a chamber stack.
+// Kawaguchi's GROWTH in the page: a chamber shell grows chamber by chamber on both backends,
+// every Kawaguchi preset (chambers and branching) grows on WebGPU too (WebGL2:
+// presets.test.mjs), the panel shows the chamber's own fields and a slider reshapes it, the
+// panel's form switch turns a swept shell into a chamber stack, and a branching form grows in
+// wasm into the same mesh, segment for segment, as natively.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { mkdirSync, readdirSync } from 'node:fs';
 import { open, session, waitForState, measureCanvas } from './browser.mjs';
 
-const SHOTS = new URL('./screenshots/chambers/', import.meta.url).pathname;
+const SHOTS = new URL('./screenshots/kawaguchi/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
-const CHAMBER_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
+const KAWAGUCHI_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
   .filter((f) => f.startsWith('kawaguchi-') && f.endsWith('.json'))
   .map((f) => f.slice(0, -5));
 
@@ -35,10 +37,10 @@ for (const backend of ['WebGL2', 'WebGPU']) {
   });
 }
 
-test('every chamber preset grows into a shell on WebGPU', async () => {
+test('every Kawaguchi preset grows on WebGPU', async () => {
   const { browser, base, close } = await session('WebGPU');
   try {
-    for (const id of CHAMBER_PRESETS) {
+    for (const id of KAWAGUCHI_PRESETS) {
       const { page, errors } = await open(browser, `${base}#v=1&preset=${id}&growth.speed=200`, { width: 480, height: 480 });
       try {
         const state = await waitForState(page, ['grown', 'error']);
@@ -93,6 +95,23 @@ test('the form switch turns a swept shell into a stack of chambers', async () =>
     assert.ok(shot.share > 0.03);
     assert.equal(await page.isVisible('#message'), false, await page.textContent('#message'));
     assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a branching form grows in wasm into the mesh the command line writes', async () => {
+  const { browser, base, close } = await session();
+  try {
+    for (const link of ['v=1&preset=kawaguchi-coral', 'v=1&preset=kawaguchi-tendril&seed=5']) {
+      const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
+      const grown = await waitForState(page, ['grown']);
+      const out = execFileSync(new URL('../../target/release/seashells', import.meta.url).pathname,
+        ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
+      assert.match(out, new RegExp(`: ${grown.mesh}$`, 'm'), `${link}: wasm ${grown.mesh}, native ${out}`);
+      assert.deepEqual(errors, []);
+      await page.close();
+    }
   } finally {
     await close();
   }

@@ -1,0 +1,82 @@
+//! The parameters of Kawaguchi's growth by branching (*A morphological study of the form of
+//! nature*, SIGGRAPH 1982, "Growth model by branching", rules 1–8, "Tendril plants and their
+//! modification" and "Extension of generating model", steps 1–6): trunks joined by knots,
+//! branches that start at knots, tendrils that correct their own rolling.
+
+use serde::{Deserialize, Serialize};
+
+/// A plant, coral or cluster of tentacles grown from one trunk.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BranchingSpec {
+    pub trunk: TrunkSpec,
+    pub knot: KnotSpec,
+    pub branches: BranchesSpec,
+    /// Most trunks one branch may have (a branch that never thins must still end).
+    pub knots: u32,
+    /// Most generations of branches on branches.
+    pub depth: u32,
+    /// Rule 8: a branch stops when its next trunk's height would fall below this fraction of
+    /// the first trunk's height (Kawaguchi's "smaller than one pixel").
+    pub stop: f64,
+    /// Random turn of every knot's roll and every branch's angle, up to ± this many degrees,
+    /// drawn from the spec's seed (0: none).
+    pub jitter: f64,
+}
+
+/// Rule 1: trunks of diameter D and height H with H/D = S.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TrunkSpec {
+    /// D₀: the first trunk's diameter.
+    pub diameter: f64,
+    /// S = H/D, the same for every trunk and branch.
+    pub slenderness: f64,
+    /// Ratio of a trunk's diameter to the one before it along the same branch.
+    pub taper: f64,
+    /// Sides of the polygon that stands for a trunk's round section.
+    pub sides: u32,
+}
+
+/// Rules 3–5 and the tendril's self-adjustment (steps 2–5): the knot angle α between the bases
+/// of a knot, which touch at one point K.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct KnotSpec {
+    /// α at a branch's first knot, degrees (its sign: which side the branch bends to).
+    pub angle: f64,
+    /// θ: the change of α from one knot to the next, degrees (step 2).
+    pub roll: f64,
+    /// k₀: the lower limit of α, degrees (step 4).
+    pub k0: f64,
+    /// k₁: the upper limit of α, degrees.
+    pub k1: f64,
+    /// β: the self-adjusting force that pushes α back inside (k₀, k₁), degrees (step 3); 0: no
+    /// force, and α rolls on.
+    pub beta: f64,
+    /// Turn of the bending side about the trunk's axis per knot, degrees: 0 keeps a branch in
+    /// one plane, other values coil it in space.
+    pub twist: f64,
+}
+
+/// Rules 6–7 and the spiral plant's series: where branches start and how big they are.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BranchesSpec {
+    /// A knot bears branches every this many knots; 0: only where the self-adjusting force
+    /// turns the tendril (step 5).
+    pub every: u32,
+    /// Branches at a branching knot, spread evenly around the trunk.
+    pub count: u32,
+    /// Added to the count at each later branching knot of the same branch (the spiral plant's
+    /// series).
+    pub count_step: f64,
+    /// Angle of a branch to its parent's axis, degrees.
+    pub angle: f64,
+    /// Added to that angle at each later branching knot, degrees.
+    pub angle_step: f64,
+    /// Rule 7: a branch's diameter is this multiple of the height of its knot.
+    pub scale: f64,
+    /// Factor on that multiple at each later branching knot (the series of lengths).
+    pub scale_growth: f64,
+}

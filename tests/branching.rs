@@ -1,0 +1,282 @@
+//! Kawaguchi's growth by branching (1982, rules 1–8 and the tendril's self-adjustment): every
+//! trunk keeps H/D = S, a branch's diameter follows its knot's height, growth stops at the
+//! threshold and nowhere else, the self-adjusting force keeps α within bounds and turns it,
+//! narrower limits give more and shorter branches, every segment is a closed outward tube,
+//! growth is deterministic, and bad parameters get messages that name them.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use proptest::prelude::*;
+use seashells_core::generator::Generator;
+use seashells_core::growing_shape::GrowingShape;
+use seashells_core::growth::branching_mesh::BranchingMesh;
+use seashells_core::growth::branching_tree::{BranchingTree, MAX_SEGMENTS};
+use seashells_core::growth::tendril::Tendril;
+use seashells_core::mesh::Mesh;
+use seashells_core::spec::branching::{BranchingSpec, KnotSpec};
+use seashells_core::spec::form::Form;
+use seashells_core::spec::link::decode;
+use seashells_core::species::preset;
+
+const PRESETS: [&str; 5] = [
+    "kawaguchi-spiral-plant",
+    "kawaguchi-tendril",
+    "kawaguchi-leaves",
+    "kawaguchi-coral",
+    "kawaguchi-tentacles",
+];
+
+fn form(id: &str) -> (BranchingSpec, u64) {
+    let spec = &preset(id).expect("preset").spec;
+    match &spec.form {
+        Form::Branching(b) => (b.clone(), spec.seed),
+        _ => unreachable!("a branching preset"),
+    }
+}
+
+fn tree(id: &str) -> (BranchingSpec, BranchingTree) {
+    let (spec, seed) = form(id);
+    let tree = BranchingTree::new(&spec, seed).expect("a valid form");
+    (spec, tree)
+}
+
+#[test]
+fn every_trunk_keeps_h_over_d_equal_to_s() {
+    for id in PRESETS {
+        let (spec, tree) = tree(id);
+        assert!(tree.segments.len() > 20, "{id}: {}", tree.segments.len());
+        for s in &tree.segments {
+            let ratio = s.height / s.base.diameter;
+            assert!(
+                (ratio - spec.trunk.slenderness).abs() < 1e-12,
+                "{id}: H/D = {ratio}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_branchs_diameter_follows_the_height_of_its_knot() {
+    for id in PRESETS {
+        let (spec, tree) = tree(id);
+        let mut branches = 0;
+        for s in &tree.segments {
+            let Some((k, series)) = s.parent else {
+                continue;
+            };
+            branches += 1;
+            let parent = &tree.segments[k];
+            // The knot's height, from its geometry: across it on the side opposite K.
+            let top = parent.base.lifted(parent.height);
+            let next = parent.next.expect("branches start only at knots");
+            let side = tree.rolls[k];
+            let far = top.centre - side * top.diameter / 2.0;
+            let turn = next.axes * top.axes.transpose();
+            let across = next.centre - turn * side * next.diameter / 2.0;
+            let height = (across - far).length();
+            let b = &spec.branches;
+            let expected = b.scale * b.scale_growth.powi(series as i32) * height;
+            assert!(
+                (s.base.diameter - expected).abs() < 1e-9 * expected,
+                "{id}: a branch of diameter {} from a knot of height {height}",
+                s.base.diameter
+            );
+        }
+        assert!(branches > 0, "{id} has branches");
+    }
+}
+
+#[test]
+fn growth_stops_at_the_threshold_and_nowhere_else() {
+    for id in PRESETS {
+        let (spec, tree) = tree(id);
+        let s = spec.trunk.slenderness;
+        let threshold = spec.stop * s * spec.trunk.diameter;
+        for seg in &tree.segments {
+            assert!(
+                seg.height >= threshold,
+                "{id}: a trunk below the threshold grew"
+            );
+            let would_be = s * seg.base.diameter * spec.trunk.taper;
+            match seg.next {
+                Some(next) => assert!(s * next.diameter >= threshold),
+                None => assert!(
+                    would_be < threshold || seg.index + 1 == spec.knots,
+                    "{id}: a branch stopped at height {would_be} above the threshold {threshold}"
+                ),
+            }
+        }
+    }
+}
+
+fn knot(roll: f64, k0: f64, k1: f64, beta: f64) -> KnotSpec {
+    KnotSpec {
+        angle: (k0 + k1) / 2.0,
+        roll,
+        k0,
+        k1,
+        beta,
+        twist: 0.0,
+    }
+}
+
+proptest! {
+    #[test]
+    fn the_self_adjusting_force_keeps_alpha_within_bounds_and_turns_it(
+        roll in 0.5f64..10.0,
+        k0 in -60.0f64..0.0,
+        width in 5.0f64..60.0,
+        force in 0.05f64..1.0,
+    ) {
+        let k1 = k0 + width;
+        let spec = knot(roll, k0, k1, force * width);
+        let mut t = Tendril::start(&spec);
+        let mut turns = 0;
+        for _ in 0..1000 {
+            let (next, turned) = t.next(&spec);
+            prop_assert!(next.alpha >= k0 - roll - 1e-9 && next.alpha <= k1 + roll + 1e-9);
+            turns += usize::from(turned);
+            t = next;
+        }
+        prop_assert!(turns >= 2, "α turned {} times", turns);
+    }
+
+    #[test]
+    fn without_the_force_alpha_rolls_on_and_never_turns(roll in 0.5f64..10.0) {
+        let spec = knot(roll, -10.0, 10.0, 0.0);
+        let mut t = Tendril::start(&spec);
+        for _ in 0..100 {
+            let (next, turned) = t.next(&spec);
+            prop_assert!(!turned && next.alpha > t.alpha);
+            t = next;
+        }
+        prop_assert!((t.alpha - 100.0 * roll).abs() < 1e-9 && t.alpha > 10.0, "α = {}", t.alpha);
+    }
+}
+
+/// Branches and their mean length in trunks.
+fn branch_statistics(tree: &BranchingTree) -> (usize, f64) {
+    let starts = tree.segments.iter().filter(|s| s.parent.is_some()).count();
+    let trunks = tree.segments.iter().filter(|s| s.depth > 0).count();
+    (starts, trunks as f64 / starts.max(1) as f64)
+}
+
+#[test]
+fn narrower_limits_give_more_and_shorter_branches() {
+    let (mut spec, seed) = form("kawaguchi-tendril");
+    // A fine stop size, so that the thin branches of narrow knots are not cut by rule 8.
+    spec.stop = 0.01;
+    let wide = BranchingTree::new(&spec, seed).unwrap();
+    (spec.knot.k0, spec.knot.k1) = (-5.0, 5.0);
+    spec.knot.beta = 3.0;
+    let narrow = BranchingTree::new(&spec, seed).unwrap();
+    let (wide_count, wide_length) = branch_statistics(&wide);
+    let (narrow_count, narrow_length) = branch_statistics(&narrow);
+    assert!(
+        narrow_count > wide_count,
+        "{narrow_count} branches against {wide_count}"
+    );
+    assert!(
+        narrow_length < wide_length,
+        "{narrow_length} trunks a branch against {wide_length}"
+    );
+}
+
+/// Each step's mesh on its own.
+fn segment_meshes(id: &str) -> Vec<Mesh> {
+    let (spec, seed) = form(id);
+    let mut shape = BranchingMesh::new(&spec, seed, 200).unwrap();
+    let mut meshes = Vec::new();
+    while shape.steps_done() < shape.steps() {
+        let (mut mesh, mut edge) = (Mesh::default(), Mesh::default());
+        shape.grow(&mut mesh, &mut edge);
+        assert_eq!(edge.triangle_count(), 0, "no transient edge");
+        meshes.push(mesh);
+    }
+    meshes
+}
+
+#[test]
+fn every_segment_is_a_closed_outward_tube() {
+    for id in PRESETS {
+        for (k, mesh) in segment_meshes(id).iter().enumerate() {
+            common::assert_closed_and_outward(mesh, &format!("{id}, segment {k}"));
+        }
+    }
+    let mut g = Generator::new(&preset("kawaguchi-coral").unwrap().spec).unwrap();
+    g.finish();
+    let share = common::share_of_normals_agreeing(&g.snapshot());
+    assert!(share > 0.99, "only {share} of normals agree");
+    let (capacity, _) = g.capacity();
+    assert_eq!(g.mesh().vertices.len(), capacity.vertices);
+    assert!(g.mesh().indices.len() <= capacity.indices);
+}
+
+#[test]
+fn growth_is_deterministic_and_the_seed_moves_only_what_is_random() {
+    let grown = |link: &str| {
+        let decoded = decode(link);
+        assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+        let mut g = Generator::new(&decoded.spec).unwrap();
+        g.finish();
+        g.snapshot()
+    };
+    let coral = grown("v=1&preset=kawaguchi-coral");
+    assert_eq!(coral, grown("v=1&preset=kawaguchi-coral"));
+    assert_ne!(
+        coral,
+        grown("v=1&preset=kawaguchi-coral&seed=2"),
+        "jitter follows the seed"
+    );
+    let tendril = grown("v=1&preset=kawaguchi-tendril");
+    assert_eq!(
+        tendril,
+        grown("v=1&preset=kawaguchi-tendril&seed=2"),
+        "no jitter, no randomness"
+    );
+}
+
+#[test]
+fn bad_parameters_get_messages_that_name_them() {
+    let cases = [
+        (
+            "form.trunk.slenderness=0",
+            "form.trunk.slenderness: 0 is outside the range 0.05 to 20".to_string(),
+        ),
+        (
+            "form.trunk.slenderness=-1",
+            "is outside the range 0.05 to 20".to_string(),
+        ),
+        (
+            "form.knot.k0=20&form.knot.k1=10",
+            "form.knot.k0: the lower limit k₀ (20°) must be below the upper limit k₁ (10°)"
+                .to_string(),
+        ),
+        (
+            "form.stop=0",
+            "form.stop: 0 is outside the range 0.001 to 1".to_string(),
+        ),
+        (
+            "form.knots=400&form.depth=12&form.branches.every=1&form.branches.count=24&form.stop=0.001",
+            format!("cap of {MAX_SEGMENTS} trunks"),
+        ),
+    ];
+    for (change, expected) in cases {
+        let decoded = decode(&format!("v=1&preset=kawaguchi-coral&{change}"));
+        let said: Vec<String> = decoded.problems.iter().map(ToString::to_string).collect();
+        assert!(
+            said.iter().any(|p| p.contains(&expected)),
+            "{change}: {said:?}"
+        );
+        Generator::new(&decoded.spec).unwrap_or_else(|e| panic!("{change}: {e}"));
+    }
+    let (mut spec, seed) = form("kawaguchi-coral");
+    spec.stop = 0.0;
+    let e = BranchingTree::new(&spec, seed).err().expect("refused");
+    assert!(
+        e.0.contains("form.stop: the stop size must be above 0"),
+        "{}",
+        e.0
+    );
+}
