@@ -1,5 +1,11 @@
 //! The orbit camera: pure arithmetic, so that the renderer only uploads its matrices.
 //!
+//! While a shell grows the camera follows it: it frames what has grown so far, easing towards
+//! it as the shell gets larger, so that the first rows already fill the view (a logarithmic
+//! spiral puts most of its size in the last whorl, and a view framed for the final shell shows
+//! a speck for most of the growth). Once the user orbits or zooms, their view stays until they
+//! reset it.
+//!
 //! Shells are modelled with their axis along z and the apex towards −z (the helico-spiral
 //! grows towards +z). They are shown apex up: the display turns shell space by 90° about x so
 //! that −z becomes up, then the camera orbits the shell's centre.
@@ -14,6 +20,11 @@ const FOV_Y: f32 = 0.6;
 const ZOOM_RANGE: (f32, f32) = (0.15, 6.0);
 /// How far above the horizon the camera looks at first, radians.
 const DEFAULT_PITCH: f32 = 0.2;
+/// Time constant of the easing towards the grown part, seconds: smooth, yet close behind.
+const FOLLOW_TIME: f32 = 0.35;
+/// The smallest framing while following, as a fraction of the final one (the first rims of a
+/// shell can be a point).
+const SMALLEST_FRAME: f32 = 0.02;
 
 /// Turns shell space into display space (apex up).
 pub fn display_from_shell() -> Mat4 {
@@ -25,6 +36,10 @@ pub fn display_from_shell() -> Mat4 {
 pub struct OrbitCamera {
     target: Vec3,
     radius: f32,
+    /// The framing of the fully grown shell.
+    whole: (Vec3, f32),
+    /// Whether the camera follows the growing shell (until the user moves it).
+    following: bool,
     default_yaw: f32,
     default_pitch: f32,
     /// Angle around the vertical axis.
@@ -48,9 +63,12 @@ impl OrbitCamera {
             f.x.atan2(f.z)
         };
         let default_pitch = (DEFAULT_PITCH + pitch).clamp(-1.48, 1.48);
+        let radius = (bounds.radius() as f32).max(1e-6);
         Self {
             target,
-            radius: (bounds.radius() as f32).max(1e-6),
+            radius,
+            whole: (target, radius),
+            following: false,
             default_yaw: facing + yaw,
             default_pitch,
             yaw: facing + yaw,
@@ -59,15 +77,56 @@ impl OrbitCamera {
         }
     }
 
-    /// Back to the first view.
-    pub fn reset(&mut self) {
+    /// The same view, following the growing shell from `grown`, the part grown so far.
+    pub fn following(mut self, grown: &Bounds) -> Self {
+        (self.target, self.radius) = self.framing_of(grown);
+        self.following = true;
+        self
+    }
+
+    /// Whether the camera follows the growing shell.
+    pub fn is_following(&self) -> bool {
+        self.following
+    }
+
+    /// The centre and radius that frame `grown`, in display space.
+    fn framing_of(&self, grown: &Bounds) -> (Vec3, f32) {
+        if grown.min.x > grown.max.x {
+            return self.whole;
+        }
+        let target = display_from_shell().transform_point3(grown.center().as_vec3());
+        let radius = (grown.radius() as f32).max(self.whole.1 * SMALLEST_FRAME);
+        (target, radius)
+    }
+
+    /// Eases the framing towards `grown` over `dt` seconds; returns whether the view changed.
+    /// Does nothing once the user has moved the camera.
+    pub fn follow(&mut self, grown: &Bounds, dt: f32) -> bool {
+        if !self.following {
+            return false;
+        }
+        let (target, radius) = self.framing_of(grown);
+        let k = 1.0 - (-dt.max(0.0) / FOLLOW_TIME).exp();
+        let (t0, r0) = (self.target, self.radius);
+        self.target += (target - self.target) * k;
+        self.radius += (radius - self.radius) * k;
+        self.target != t0 || self.radius != r0
+    }
+
+    /// Back to the first view; a camera that followed the growth follows it again.
+    pub fn reset(&mut self, follow: bool) {
         self.yaw = self.default_yaw;
         self.pitch = self.default_pitch;
         self.zoom = 1.0;
+        self.following = follow;
+        if !follow {
+            (self.target, self.radius) = self.whole;
+        }
     }
 
     /// Turns the orbit by a drag of (dx, dy) in fractions of the view's height.
     pub fn orbit(&mut self, dx: f32, dy: f32) {
+        self.following = false;
         self.yaw -= dx * std::f32::consts::PI;
         self.pitch = (self.pitch + dy * std::f32::consts::PI).clamp(-1.48, 1.48);
     }
@@ -75,6 +134,7 @@ impl OrbitCamera {
     /// Zooms by `factor` (> 1 moves closer).
     pub fn zoom_by(&mut self, factor: f32) {
         if factor.is_finite() && factor > 0.0 {
+            self.following = false;
             self.zoom = (self.zoom / factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
         }
     }
@@ -164,7 +224,63 @@ mod tests {
         assert!(cam.zoom >= 0.15);
         cam.zoom_by(f32::NAN);
         assert!(cam.zoom.is_finite());
-        cam.reset();
+        cam.reset(false);
         assert_eq!(cam.zoom, 1.0);
+    }
+
+    fn grown(size: f64) -> Bounds {
+        Bounds {
+            min: DVec3::new(-size, -size, 0.0),
+            max: DVec3::new(size, size, 2.0 * size),
+        }
+    }
+
+    #[test]
+    fn following_frames_what_has_grown_and_eases_without_overshoot() {
+        let whole = grown(2.0);
+        let mut cam = OrbitCamera::framing(&whole, DVec3::X, 0.0, 0.0).following(&grown(0.1));
+        let first = cam.eye();
+        // The small part grown so far fills the view: the eye is close to it.
+        assert!(
+            first.length()
+                < OrbitCamera::framing(&whole, DVec3::X, 0.0, 0.0)
+                    .eye()
+                    .length()
+                    / 5.0
+        );
+        let mut last = cam.radius;
+        for frame in 0..240 {
+            let size = 0.1 + 1.9 * f64::from(frame) / 239.0;
+            cam.follow(&grown(size), 1.0 / 60.0);
+            assert!(cam.radius >= last, "the framing never shrinks back");
+            assert!(
+                cam.radius <= grown(size).radius() as f32 + 1e-6,
+                "nor overshoots"
+            );
+            last = cam.radius;
+        }
+        for _ in 0..120 {
+            cam.follow(&whole, 1.0 / 60.0);
+        }
+        assert!(
+            (cam.radius - whole.radius() as f32).abs() < 1e-3,
+            "it settles on the whole"
+        );
+    }
+
+    #[test]
+    fn the_users_view_wins_until_reset() {
+        let whole = grown(2.0);
+        let mut cam = OrbitCamera::framing(&whole, DVec3::X, 0.0, 0.0).following(&grown(0.1));
+        cam.orbit(0.1, 0.0);
+        let held = cam.radius;
+        assert!(!cam.follow(&whole, 1.0) && cam.radius == held);
+        cam.reset(true);
+        assert!(cam.follow(&whole, 1.0) && cam.radius > held);
+        let mut still = OrbitCamera::framing(&whole, DVec3::X, 0.0, 0.0);
+        assert!(
+            !still.follow(&grown(0.1), 1.0),
+            "a camera made without following stays framed on the whole"
+        );
     }
 }

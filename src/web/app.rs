@@ -229,9 +229,7 @@ impl App {
     }
 
     pub fn reset_camera(&mut self) {
-        if let Some(camera) = self.viewer.camera_mut() {
-            camera.reset();
-        }
+        self.viewer.reset_camera();
     }
 
     /// Full screen for the viewer, or back.

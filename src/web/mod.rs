@@ -58,8 +58,8 @@ pub async fn start() -> Result<(), JsValue> {
     }
     let background = page::background();
     let viewers = async {
-        let main = Viewer::new(canvas("shell")?, Some(canvas("planar")?), background).await?;
-        let pictures = Viewer::new(canvas("picture-canvas")?, None, background).await?;
+        let main = Viewer::new(canvas("shell")?, Some(canvas("planar")?), background, true).await?;
+        let pictures = Viewer::new(canvas("picture-canvas")?, None, background, false).await?;
         Ok::<_, String>((main, pictures))
     };
     let (main, pictures) = match viewers.await {

@@ -1,11 +1,13 @@
 //! A viewer: one canvas and its renderer, a shell growing on it, optionally its planar pattern,
 //! and the camera the pointer turns. Loading another spec restarts growth without reloading the
-//! page. The page's main view is one viewer; the gallery's pictures are drawn by another.
+//! page. The page's main view is one viewer, whose camera follows the growing shell; the
+//! gallery's pictures are drawn by another, framed on the whole shell.
 
 use super::planar::Planar;
 use crate::camera::OrbitCamera;
 use crate::generator::{Advance, Generator};
 use crate::gestures::{Pointers, wheel_zoom};
+use crate::mesh::{Bounds, Mesh};
 use crate::render::{Renderer, ShellLook};
 use crate::spec::ShellSpec;
 use crate::species::Preset;
@@ -18,6 +20,15 @@ pub struct Growing {
     pub generator: Generator,
     camera: OrbitCamera,
     planar: Option<Planar>,
+    /// Bounds of what has grown so far, edge included.
+    grown: Bounds,
+}
+
+/// Bounds of a range of a mesh's vertices.
+fn include(bounds: &mut Bounds, mesh: &Mesh, range: std::ops::Range<usize>) {
+    for v in &mesh.vertices[range] {
+        bounds.include(glam::DVec3::from(v.position.map(f64::from)));
+    }
 }
 
 pub struct Viewer {
@@ -32,6 +43,10 @@ pub struct Viewer {
     pub speed: f64,
     carry: f64,
     dirty: bool,
+    /// Whether the camera follows the growing shell (else it frames the whole).
+    follows: bool,
+    /// When the last frame was drawn, milliseconds.
+    last_frame: f64,
 }
 
 /// Milliseconds since the page started.
@@ -46,6 +61,7 @@ impl Viewer {
         canvas: HtmlCanvasElement,
         planar_canvas: Option<HtmlCanvasElement>,
         background: [u8; 3],
+        follows: bool,
     ) -> Result<Self, String> {
         let mut renderer = Renderer::new(canvas.clone()).await?;
         renderer.set_background(background);
@@ -59,6 +75,8 @@ impl Viewer {
             speed: 1.0,
             carry: 0.0,
             dirty: true,
+            follows,
+            last_frame: now(),
         })
     }
 
@@ -97,12 +115,26 @@ impl Viewer {
             ShellLook::new(&spec.colours, spec.rows_per_whorl()),
         );
         let (bounds, front) = generator.framing();
-        let camera = OrbitCamera::framing(
+        let mut grown = Bounds::EMPTY;
+        include(
+            &mut grown,
+            generator.mesh(),
+            0..generator.mesh().vertices.len(),
+        );
+        include(
+            &mut grown,
+            generator.edge(),
+            0..generator.edge().vertices.len(),
+        );
+        let mut camera = OrbitCamera::framing(
             &bounds,
             front,
             preset.view.yaw.to_radians(),
             preset.view.pitch.to_radians(),
         );
+        if self.follows {
+            camera = camera.following(&grown);
+        }
         let planar = self
             .planar_canvas
             .clone()
@@ -114,6 +146,7 @@ impl Viewer {
             generator,
             camera,
             planar,
+            grown,
         });
         let grown = self
             .growing
@@ -126,7 +159,15 @@ impl Viewer {
     }
 
     fn upload(&mut self, advance: &Advance) {
-        let Some(g) = &self.growing else { return };
+        let Some(g) = &mut self.growing else { return };
+        include(&mut g.grown, g.generator.mesh(), advance.vertices.clone());
+        if advance.edge_changed {
+            include(
+                &mut g.grown,
+                g.generator.edge(),
+                0..g.generator.edge().vertices.len(),
+            );
+        }
         let rgba = g.generator.pattern().map_or(&[][..], |p| {
             let row = p.cells() * 4;
             &p.rgba()[advance.rows.start * row..advance.rows.end * row]
@@ -180,6 +221,14 @@ impl Viewer {
                 self.grow(rows as usize, budget_ms);
             }
         }
+        let time = now();
+        let dt = ((time - self.last_frame) / 1000.0).min(0.25) as f32;
+        self.last_frame = time;
+        if let Some(g) = &mut self.growing
+            && g.camera.follow(&g.grown, dt)
+        {
+            self.dirty = true;
+        }
         if !self.dirty {
             return Ok(false);
         }
@@ -189,6 +238,14 @@ impl Viewer {
         self.renderer.draw(&g.camera)?;
         self.dirty = false;
         Ok(true)
+    }
+
+    /// Back to the first view: following the growth again on the main view.
+    pub fn reset_camera(&mut self) {
+        let follows = self.follows;
+        if let Some(camera) = self.camera_mut() {
+            camera.reset(follows);
+        }
     }
 
     /// The camera of the shell being grown.

@@ -1,4 +1,5 @@
-// The page grows a lit shell on either backend, and says so in words when it cannot.
+// The page grows a lit shell on either backend, the camera following it so that a third of the
+// way into growth it already fills the view, and says so in words when it cannot.
 // Screenshots are kept in tests/page/screenshots/ (git-ignored) for people to look at.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -19,20 +20,28 @@ before(async () => {
 after(() => server.close());
 
 for (const backend of ['WebGL2', 'WebGPU']) {
-  test(`a lit shell grows on ${backend}`, async () => {
+  test(`a lit shell grows on ${backend}, framed as it grows`, async () => {
     const browser = await launch(backend);
     try {
       const { page, errors } = await open(browser, `${base}#v=1&preset=turbinate&growth.speed=6`);
       const ready = await waitForState(page, ['growing', 'grown', 'error']);
       assert.equal(ready.state, 'growing', `the page reported ${ready.state}`);
       assert.equal(ready.backend, backend, 'the backend reported matches the flags');
-      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 100);
-      const early = await measureCanvas(page, `${SHOTS}growth-${backend}-early.png`);
+      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 192);
+      // Pause there, and let the camera's easing (a third of a second) catch up.
+      await page.keyboard.press('Space');
+      await page.waitForFunction(() => document.body.dataset.playing === 'false');
+      const rows = Number((await page.evaluate(() => document.body.dataset.rows)));
+      assert.ok(rows < 576 / 2, `paused at row ${rows}`);
+      await page.waitForTimeout(1500);
+      const third = await measureCanvas(page, `${SHOTS}growth-${backend}-third.png`);
+      await page.keyboard.press('Space');
       await waitForState(page, ['grown']);
+      await page.waitForTimeout(1500);
       const late = await measureCanvas(page, `${SHOTS}growth-${backend}-grown.png`);
       assert.ok(late.share > 0.04, `the grown shell covers only ${late.share} of the canvas`);
       assert.ok(late.shades > 40, `only ${late.shades} distinct shades: not a lit surface`);
-      assert.ok(late.share > early.share * 1.3, `the shell did not grow: ${early.share} then ${late.share}`);
+      assert.ok(third.share > 0.5 * late.share, `a third of the way in the shell covers ${third.share}, grown ${late.share}`);
       assert.match(await page.textContent('#backend'), new RegExp(backend));
       assert.deepEqual(errors, []);
     } finally {
