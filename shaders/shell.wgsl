@@ -1,6 +1,10 @@
 // The shell: outer surface painted with the pigmentation pattern, inner surface and edges in
-// the interior colour, lit by a key, a fill and a rim light with Blinn-Phong highlights, both
-// sides of the surface shaded.
+// the interior colour, lit by a key, a fill and a rim light, both sides of the surface shaded.
+// The material (Fowler et al. 1992, §5, "improved rendering") adds polished reflections of a
+// studio environment with Fresnel, highlights stretched along the growth lines (the tangent
+// of the pattern's x, taken from screen-space derivatives), light through the wall where it is
+// lit from behind, and darkening with depth into the opening. The ground quad under the shell
+// is drawn in the background colour, darkened by a soft contact shadow.
 
 struct Globals {
     view_proj: mat4x4<f32>,
@@ -13,6 +17,12 @@ struct Globals {
     pattern: vec4<f32>,
     // x: 1 when the target is not sRGB and the shader must encode, y: rows per whorl.
     options: vec4<f32>,
+    // Gloss, anisotropy, translucency, occlusion, each 0 to 1.
+    material: vec4<f32>,
+    // x: strength of the ground shadow.
+    shadow: vec4<f32>,
+    // The clear colour, linear.
+    background: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> g: Globals;
@@ -71,11 +81,33 @@ fn pigment(at: vec2<f32>) -> vec3<f32> {
     return mix(top, bottom, fy);
 }
 
-fn light(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, colour: vec3<f32>, albedo: vec3<f32>, shine: f32) -> vec3<f32> {
-    let diffuse = max(dot(n, l), 0.0);
+// Isotropic (Blinn-Phong) and anisotropic (Ward-like, stretched along `t`) highlights, mixed
+// by the material's anisotropy; diffuse light, and the light passing through the wall from
+// behind (a wrapped back-light tinted by the shell's colour).
+fn light(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, t: vec3<f32>, colour: vec3<f32>, albedo: vec3<f32>, shine: f32) -> vec3<f32> {
+    let nl = dot(n, l);
+    let diffuse = max(nl, 0.0);
     let h = normalize(l + v);
-    let specular = pow(max(dot(n, h), 0.0), shine) * select(0.0, 1.0, diffuse > 0.0);
-    return colour * (albedo * diffuse + vec3<f32>(0.35) * specular);
+    let lit = select(0.0, 1.0, diffuse > 0.0);
+    let iso = pow(max(dot(n, h), 0.0), shine);
+    let hn = max(dot(h, n), 1e-3);
+    let ht = dot(h, t) / 0.55;
+    let hb = dot(h, cross(n, t)) / 0.09;
+    let aniso = exp(-(ht * ht + hb * hb) / (hn * hn)) * 0.6;
+    let a = g.material.y * select(0.0, 1.0, dot(t, t) > 0.5);
+    let specular = mix(iso, aniso, a) * lit * (0.35 + 0.9 * g.material.x);
+    let behind = max(-nl, 0.0);
+    let through = g.material.z * (0.25 * behind + 0.6 * pow(max(dot(v, -l), 0.0), 4.0)) * behind;
+    let warm = albedo * vec3<f32>(1.0, 0.82, 0.66);
+    return colour * (albedo * diffuse + vec3<f32>(specular) + warm * through);
+}
+
+// A studio around the shell: a warm floor, a cool sky, and two soft boxes (key and strip).
+fn environment(r: vec3<f32>) -> vec3<f32> {
+    let sky = mix(vec3<f32>(0.16, 0.14, 0.12), vec3<f32>(0.52, 0.56, 0.62), smoothstep(-0.25, 0.65, r.y));
+    let key = pow(max(dot(r, normalize(vec3<f32>(-0.45, 0.75, 0.55))), 0.0), 48.0) * 2.6;
+    let strip = pow(max(dot(r, normalize(vec3<f32>(0.75, 0.25, 0.35))), 0.0), 20.0) * 0.9;
+    return sky + vec3<f32>(key + strip);
 }
 
 fn encode_srgb(c: vec3<f32>) -> vec3<f32> {
@@ -86,39 +118,66 @@ fn encode_srgb(c: vec3<f32>) -> vec3<f32> {
 
 @fragment
 fn fs_main(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    // Derivatives first, in uniform control flow: the tangent along the growth lines is where
+    // the pattern's x (the position along the growing edge) increases.
+    let dpx = dpdx(in.world);
+    let dpy = dpdy(in.world);
+    let dux = dpdx(in.pattern);
+    let duy = dpdy(in.pattern);
+    let along = dpx * duy.y - dpy * dux.y;
+    if (in.surface > 2.5) {
+        // The ground: a soft shadow under the shell, seen only from above.
+        if (!front) {
+            discard;
+        }
+        let d = dot(in.pattern, in.pattern);
+        let shade = g.shadow.x * 0.55 * exp(-2.6 * d) * smoothstep(1.0, 0.6, d);
+        var ground = g.background.rgb * (1.0 - shade);
+        if (g.options.x > 0.5) {
+            ground = encode_srgb(clamp(ground, vec3<f32>(0.0), vec3<f32>(1.0)));
+        }
+        return vec4<f32>(ground, 1.0);
+    }
     var n = normalize(in.normal);
     if (!front) {
         n = -n;
     }
     let v = normalize(g.eye.xyz - in.world);
+    var t = along - n * dot(n, along);
+    t = select(vec3<f32>(0.0), normalize(t), dot(t, t) > 1e-20);
     var albedo: vec3<f32>;
     var shine = 48.0;
+    // How far into the opening, in whorls of growth (0 at the growing edge).
+    let depth = max(g.pattern.y - in.pattern.y, 0.0) / max(g.options.y, 1.0);
+    let hollow = mix(1.0, mix(0.12, 1.0, exp(-2.5 * depth)), g.material.w);
     if (in.surface < 0.5) {
         if (g.pattern.w > 0.5) {
             albedo = pigment(in.pattern);
         } else {
             albedo = g.ground.rgb;
         }
-        // The side facing into the shell (seen through a single-surface opening) is paler.
+        // The side facing into the shell (seen through a single-surface opening) is paler,
+        // and darkens with depth like the inside of a wall.
         if (!front) {
-            albedo = mix(albedo, g.interior.rgb, 0.6);
+            albedo = mix(albedo, g.interior.rgb, 0.6) * hollow;
         }
     } else {
         albedo = g.interior.rgb;
         shine = 80.0;
         if (in.surface < 1.5) {
-            // The inside darkens with depth into the opening, measured in whorls of growth.
-            let depth = max(g.pattern.y - in.pattern.y, 0.0) / max(g.options.y, 1.0);
-            albedo = albedo * mix(0.25, 1.0, exp(-2.5 * depth));
+            albedo = albedo * hollow;
         }
     }
-    let key = light(n, v, normalize(vec3<f32>(-0.45, 0.75, 0.55)), vec3<f32>(1.0, 0.97, 0.92), albedo, shine);
-    let fill = light(n, v, normalize(vec3<f32>(0.7, 0.1, 0.45)), vec3<f32>(0.32, 0.36, 0.42), albedo, shine);
-    let rim = light(n, v, normalize(vec3<f32>(0.1, 0.3, -0.9)), vec3<f32>(0.35, 0.33, 0.3), albedo, shine);
+    let key = light(n, v, normalize(vec3<f32>(-0.45, 0.75, 0.55)), t, vec3<f32>(1.0, 0.97, 0.92), albedo, shine);
+    let fill = light(n, v, normalize(vec3<f32>(0.7, 0.1, 0.45)), t, vec3<f32>(0.32, 0.36, 0.42), albedo, shine);
+    let rim = light(n, v, normalize(vec3<f32>(0.1, 0.3, -0.9)), t, vec3<f32>(0.35, 0.33, 0.3), albedo, shine);
     let sky = mix(vec3<f32>(0.10, 0.09, 0.08), vec3<f32>(0.22, 0.24, 0.27), 0.5 + 0.5 * n.y);
+    // Polish: the environment reflected, stronger at grazing angles (Schlick's Fresnel).
+    let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
+    let reflection = environment(reflect(-v, n)) * fresnel * g.material.x * mix(1.0, hollow, 0.8);
     // A soft shoulder (extended Reinhard, white point 1.6) keeps the relief of pale shells
     // in the highlights instead of clipping it.
-    let lit = (key + fill + rim + sky * albedo) * 1.15;
+    let lit = (key + fill + rim + sky * albedo) * 1.15 * (1.0 - 0.5 * fresnel * g.material.x) + reflection;
     var colour = lit * (vec3<f32>(1.0) + lit / 2.56) / (vec3<f32>(1.0) + lit);
     if (g.options.x > 0.5) {
         colour = encode_srgb(clamp(colour, vec3<f32>(0.0), vec3<f32>(1.0)));

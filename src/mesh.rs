@@ -13,6 +13,8 @@ pub enum Surface {
     Inner = 1,
     /// The edges joining outer and inner surfaces: lip, apex and sides of an open curve.
     Edge = 2,
+    /// The ground under the shell, which only the renderer draws (never exported).
+    Ground = 3,
 }
 
 /// One mesh vertex, 36 bytes.

@@ -65,7 +65,11 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
     renderer.load_shell(
         generator.capacity(),
         None,
-        ShellLook::new(&preset.spec.colours, preset.spec.rows_per_whorl()),
+        ShellLook::new(
+            &preset.spec.colours,
+            &preset.spec.material,
+            preset.spec.rows_per_whorl(),
+        ),
     );
     renderer.upload(generator.mesh(), generator.edge(), &generator.grown(), &[]);
     let (bounds, front) = generator.framing();

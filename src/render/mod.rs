@@ -1,15 +1,18 @@
 //! The one renderer: wgpu on WebGPU when the browser has an adapter, WebGL2 otherwise. It only
-//! moves data: the mesh and pattern rows that the generator adds, the camera's matrices.
+//! moves data: the mesh and pattern rows that the generator adds, the camera's matrices, the
+//! material's strengths, and a quad on the ground under what has grown for the contact shadow.
 
 mod pattern_texture;
 mod shell_buffers;
 
 use crate::camera::{OrbitCamera, display_from_shell};
 use crate::generator::Advance;
-use crate::mesh::{Capacity, Mesh, Vertex};
+use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::spec::Colours;
+use crate::spec::material::MaterialSpec;
 use crate::texture_layout::TextureLayout;
 use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
 use pattern_texture::PatternTexture;
 use shell_buffers::MeshBuffers;
 use std::sync::{Arc, Mutex};
@@ -29,6 +32,12 @@ struct Globals {
     interior: [f32; 4],
     pattern: [f32; 4],
     options: [f32; 4],
+    /// Gloss, anisotropy, translucency, occlusion.
+    material: [f32; 4],
+    /// x: strength of the ground shadow.
+    shadow: [f32; 4],
+    /// The clear colour in linear light (the ground is drawn in it).
+    background: [f32; 4],
 }
 
 /// What the shader needs to know about the shell being drawn.
@@ -38,22 +47,46 @@ pub struct ShellLook {
     pub interior: glam::Vec3,
     /// Pattern rows per whorl, for the darkening inside the opening.
     pub rows_per_whorl: f32,
+    /// Gloss, anisotropy, translucency, occlusion.
+    pub material: [f32; 4],
+    pub shadow: f32,
 }
 
 impl ShellLook {
-    pub fn new(colours: &Colours, rows_per_whorl: f64) -> Self {
+    pub fn new(colours: &Colours, material: &MaterialSpec, rows_per_whorl: f64) -> Self {
+        let m = material;
         Self {
             ground: colours.ground.linear().into(),
             interior: colours.interior.linear().into(),
             rows_per_whorl: rows_per_whorl as f32,
+            material: [m.gloss, m.anisotropy, m.translucency, m.occlusion].map(|x| x as f32),
+            shadow: m.shadow as f32,
         }
     }
+}
+
+/// The ground under `grown` (shell space, whose −z is up on screen): a square a little wider
+/// than the shell's footprint, just below its lowest point, facing up; its pattern coordinates
+/// run from −1 to 1 across it, for the shadow's falloff.
+fn ground_quad(grown: &Bounds) -> Mesh {
+    let centre = grown.center();
+    let half = (grown.max - grown.min).truncate().max_element() * 0.5 * 1.6 + 1e-6;
+    let below = grown.max.z + 0.01 * grown.radius();
+    let mut mesh = Mesh::default();
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        let p = DVec3::new(centre.x + x * half, centre.y + y * half, below);
+        mesh.vertices
+            .push(Vertex::new(p, DVec3::NEG_Z, [x, y], Surface::Ground));
+    }
+    mesh.quad([0, 1, 2, 3], true);
+    mesh
 }
 
 /// The buffers of one shell.
 struct Shell {
     mesh: MeshBuffers,
     edge: MeshBuffers,
+    ground: MeshBuffers,
     pattern: Option<PatternTexture>,
     look: ShellLook,
     rows_grown: u32,
@@ -82,6 +115,7 @@ pub struct Renderer {
     targets: Targets,
     shell: Option<Shell>,
     background: wgpu::Color,
+    background_linear: [f32; 3],
     failure: Arc<Mutex<Option<String>>>,
 }
 
@@ -318,6 +352,7 @@ impl Renderer {
             targets,
             shell: None,
             background: wgpu::Color::BLACK,
+            background_linear: [0.0; 3],
             failure,
         })
     }
@@ -340,6 +375,7 @@ impl Renderer {
             crate::spec::colour::Rgb(srgb).linear().map(f64::from)
         };
         self.background = wgpu::Color { r, g, b, a: 1.0 };
+        self.background_linear = crate::spec::colour::Rgb(srgb).linear();
     }
 
     /// Follows the canvas size in device pixels.
@@ -380,6 +416,14 @@ impl Renderer {
         self.shell = Some(Shell {
             mesh: MeshBuffers::new(&self.device, capacity.0, "mesh"),
             edge: MeshBuffers::new(&self.device, capacity.1, "edge"),
+            ground: MeshBuffers::new(
+                &self.device,
+                Capacity {
+                    vertices: 4,
+                    indices: 6,
+                },
+                "ground",
+            ),
             pattern,
             look,
             rows_grown: 0,
@@ -406,6 +450,15 @@ impl Renderer {
             pattern.write_rows(&self.queue, advance.rows.start as u32, rgba);
         }
         shell.rows_grown = advance.rows.end as u32;
+    }
+
+    /// Lays the ground under `grown`, the part of the shell grown so far.
+    pub fn set_ground(&mut self, grown: &Bounds) {
+        if let Some(shell) = self.shell.as_mut()
+            && grown.min.x <= grown.max.x
+        {
+            shell.ground.replace(&self.queue, &ground_quad(grown));
+        }
     }
 
     /// Draws one frame.
@@ -449,6 +502,14 @@ impl Renderer {
                     0.0,
                     0.0,
                 ],
+                material: shell.look.material,
+                shadow: [shell.look.shadow, 0.0, 0.0, 0.0],
+                background: [
+                    self.background_linear[0],
+                    self.background_linear[1],
+                    self.background_linear[2],
+                    1.0,
+                ],
             };
             self.queue
                 .write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&globals));
@@ -491,6 +552,9 @@ impl Renderer {
                 pass.set_bind_group(0, &shell.bind_group, &[]);
                 shell.mesh.draw(&mut pass);
                 shell.edge.draw(&mut pass);
+                if shell.look.shadow > 0.0 {
+                    shell.ground.draw(&mut pass);
+                }
             }
         }
         self.queue.submit([encoder.finish()]);

@@ -18,6 +18,7 @@ pub enum Group {
     Wall,
     Pattern,
     Colours,
+    Material,
     Growth,
     Seed,
 }
@@ -37,6 +38,7 @@ impl Group {
             Group::Wall => "Wall and lip",
             Group::Pattern => "Pattern model",
             Group::Colours => "Colours",
+            Group::Material => "Material and light",
             Group::Growth => "Growth",
             Group::Seed => "Seed",
         }
@@ -297,6 +299,11 @@ pub const FIELDS: &[Field] = &[
     f("colours.ground", Colours, "", "shell ground", Kind::Colour),
     f("colours.pigment", Colours, "", "pigment", Kind::Colour),
     f("colours.interior", Colours, "", "inside of the wall", Kind::Colour),
+    f("material.gloss", Material, "", "polished reflections", real(0.0, 1.0)),
+    f("material.anisotropy", Material, "", "highlights along the growth lines", real(0.0, 1.0)),
+    f("material.translucency", Material, "", "light through the wall", real(0.0, 1.0)),
+    f("material.occlusion", Material, "", "darkness inside the opening", real(0.0, 1.0)),
+    f("material.shadow", Material, "", "shadow on the ground", real(0.0, 1.0)),
     f("growth.rows", Growth, "", "rows from apex to opening", int(2, 20_000)),
     f("growth.speed", Growth, "", "rows per frame", log(0.05, 200.0)),
     f("seed", Seed, "", "seed of the random choices", int(0, u64::MAX)),

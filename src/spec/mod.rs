@@ -7,11 +7,13 @@ pub mod colour;
 pub mod fields;
 pub mod form;
 pub mod link;
+pub mod material;
 pub mod pattern;
 pub mod validate;
 
 use colour::Rgb;
 use form::Form;
+use material::MaterialSpec;
 use pattern::PatternSpec;
 use serde::{Deserialize, Serialize};
 
@@ -25,6 +27,9 @@ pub struct ShellSpec {
     #[serde(default)]
     pub pattern: PatternSpec,
     pub colours: Colours,
+    /// How the surface meets the light.
+    #[serde(default)]
+    pub material: MaterialSpec,
     pub growth: GrowthSpec,
     /// Seed of every random choice (the pattern's fluctuations and starting cells).
     pub seed: u64,

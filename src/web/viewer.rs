@@ -112,7 +112,7 @@ impl Viewer {
         self.renderer.load_shell(
             generator.capacity(),
             layout,
-            ShellLook::new(&spec.colours, spec.rows_per_whorl()),
+            ShellLook::new(&spec.colours, &spec.material, spec.rows_per_whorl()),
         );
         let (bounds, front) = generator.framing();
         let mut grown = Bounds::EMPTY;
@@ -168,6 +168,7 @@ impl Viewer {
                 0..g.generator.edge().vertices.len(),
             );
         }
+        self.renderer.set_ground(&g.grown);
         let rgba = g.generator.pattern().map_or(&[][..], |p| {
             let row = p.cells() * 4;
             &p.rgba()[advance.rows.start * row..advance.rows.end * row]

@@ -75,6 +75,28 @@ export async function measureCanvas(page, file) {
   }, [...png]);
 }
 
+/**
+ * The share of pixels that differ (by more than 24 in the sum of their channels) between two
+ * screenshots of the same size, computed in `page`.
+ */
+export async function differing(page, pngA, pngB) {
+  return page.evaluate(async ([a, b]) => {
+    const pixels = async (bytes) => {
+      const bitmap = await createImageBitmap(new Blob([new Uint8Array(bytes)], { type: 'image/png' }));
+      const c = new OffscreenCanvas(bitmap.width, bitmap.height);
+      const g = c.getContext('2d');
+      g.drawImage(bitmap, 0, 0);
+      return g.getImageData(0, 0, bitmap.width, bitmap.height).data;
+    };
+    const [p, q] = [await pixels(a), await pixels(b)];
+    let count = 0;
+    for (let i = 0; i < p.length; i += 4) {
+      if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) count += 1;
+    }
+    return count / (p.length / 4);
+  }, [[...pngA], [...pngB]]);
+}
+
 /** Serves www/ and launches Chromium for `backend`: what a test file shares across its tests. */
 export async function session(backend = 'WebGL2') {
   const server = await serve(new URL('../../www/', import.meta.url).pathname);

@@ -48,6 +48,25 @@ test('the gallery lists every preset in its group, each with a picture of its sh
   }
 });
 
+test('the page names papers by what they are, never by the files of our copies, and says what each brings', async () => {
+  const { page, errors } = await open(browser, base, { width: 1280, height: 900 });
+  try {
+    await waitForState(page, ['gallery']);
+    const text = await page.evaluate(() => document.body.innerText);
+    assert.doesNotMatch(text, /seed 00\d|\d{3}_[0-9a-f]{16}/i);
+    const papers = await page.$$eval('#about dt', (dts) => dts.map((d) => d.textContent));
+    assert.equal(papers.length, 4);
+    for (const words of ['Modeling seashells', '1/6-8/5', 'A morphological study of the form of nature', 'Murex cabritii']) {
+      assert.ok(papers.some((p) => p.includes(words)), `the About section names ${words}`);
+    }
+    const sources = await page.$$eval('a.card', (cards) => cards.map((c) => c.textContent));
+    for (const s of sources) assert.doesNotMatch(s, /seed 00\d/i);
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
 test('a card opens its shell growing, Back returns to the gallery and Forward to the shell', async () => {
   const { page, errors } = await open(browser, base);
   try {
