@@ -227,15 +227,7 @@ fn sinistral_stacks_mirror_dextral_ones() {
     chambers_of(&mut spec).handedness = Handedness::Sinistral;
     let mut left = Generator::new(&spec).unwrap();
     left.finish();
-    let (a, b) = (right.snapshot(), left.snapshot());
-    assert_eq!(a.vertices.len(), b.vertices.len());
-    for (p, q) in a.vertices.iter().zip(&b.vertices) {
-        assert_eq!([p.position[0], -p.position[1], p.position[2]], q.position);
-        assert_eq!([p.normal[0], -p.normal[1], p.normal[2]], q.normal);
-    }
-    for (s, t) in a.indices.chunks(3).zip(b.indices.chunks(3)) {
-        assert_eq!([s[0], s[2], s[1]], [t[0], t[1], t[2]]);
-    }
+    common::assert_mirrored(&right.snapshot(), &left.snapshot());
 }
 
 #[test]

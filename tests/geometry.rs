@@ -170,16 +170,7 @@ fn sinistral_shells_mirror_dextral_ones() {
     let mut g = Generator::new(&spec).unwrap();
     g.finish();
     right.replace(g);
-    let (a, b) = (left.mesh(), right.unwrap().mesh().clone());
-    assert_eq!(a.vertices.len(), b.vertices.len());
-    for (p, q) in a.vertices.iter().zip(&b.vertices) {
-        assert_eq!([p.position[0], -p.position[1], p.position[2]], q.position);
-        assert_eq!([p.normal[0], -p.normal[1], p.normal[2]], q.normal);
-    }
-    // Mirroring reverses the winding, so the triangles still face outwards.
-    for (s, t) in a.indices.chunks(3).zip(b.indices.chunks(3)) {
-        assert_eq!([s[0], s[2], s[1]], [t[0], t[1], t[2]]);
-    }
+    common::assert_mirrored(left.mesh(), right.unwrap().mesh());
 }
 
 fn assert_closed_and_outward(spec: &ShellSpec, what: &str) {
@@ -231,26 +222,8 @@ fn thick_walls_are_closed_solids_facing_outwards() {
 fn the_exported_stl_of_a_closed_wall_is_watertight() {
     let mut g = Generator::new(&turbinate()).unwrap();
     g.finish();
-    let bytes = stl::write(&g.snapshot());
-    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
-    assert_eq!(bytes.len(), 84 + 50 * count);
-    let mut edges: HashMap<([u32; 3], [u32; 3]), usize> = HashMap::new();
-    for tri in bytes[84..].chunks_exact(50) {
-        let corner = |k: usize| {
-            let at = 12 + 12 * k;
-            [0, 4, 8].map(|o| u32::from_le_bytes(tri[at + o..at + o + 4].try_into().unwrap()))
-        };
-        let [a, b, c] = [corner(0), corner(1), corner(2)];
-        for (p, q) in [(a, b), (b, c), (c, a)] {
-            *edges
-                .entry(if p < q { (p, q) } else { (q, p) })
-                .or_insert(0) += 1;
-        }
-    }
-    assert!(
-        edges.values().all(|&n| n == 2),
-        "every edge of the STL is shared by exactly two triangles"
-    );
+    let count = common::watertight_stl_triangles(&stl::write(&g.snapshot()));
+    assert_eq!(count, g.snapshot().triangle_count());
 }
 
 #[test]

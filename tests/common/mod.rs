@@ -62,3 +62,37 @@ pub fn share_of_normals_agreeing(mesh: &Mesh) -> f64 {
     }
     agree as f64 / mesh.triangle_count() as f64
 }
+
+/// `b` is `a` mirrored in y (positions and normals), its triangles wound the other way so that
+/// they still face outwards.
+pub fn assert_mirrored(a: &Mesh, b: &Mesh) {
+    assert_eq!(a.vertices.len(), b.vertices.len());
+    for (p, q) in a.vertices.iter().zip(&b.vertices) {
+        assert_eq!([p.position[0], -p.position[1], p.position[2]], q.position);
+        assert_eq!([p.normal[0], -p.normal[1], p.normal[2]], q.normal);
+    }
+    for (s, t) in a.indices.chunks(3).zip(b.indices.chunks(3)) {
+        assert_eq!([s[0], s[2], s[1]], [t[0], t[1], t[2]]);
+    }
+}
+
+/// The triangle count of a binary STL whose every edge (by exact corner coordinates) is shared
+/// by exactly two triangles: a watertight file.
+pub fn watertight_stl_triangles(bytes: &[u8]) -> usize {
+    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
+    assert_eq!(bytes.len(), 84 + 50 * count);
+    let mut edges: HashMap<(&[u8], &[u8]), usize> = HashMap::new();
+    for tri in bytes[84..].chunks_exact(50) {
+        let corner = |k: usize| &tri[12 + 12 * k..24 + 12 * k];
+        for (p, q) in [(0, 1), (1, 2), (2, 0)].map(|(a, b)| (corner(a), corner(b))) {
+            *edges
+                .entry(if p < q { (p, q) } else { (q, p) })
+                .or_insert(0) += 1;
+        }
+    }
+    assert!(
+        edges.values().all(|&n| n == 2),
+        "every edge of the STL is shared by exactly two triangles"
+    );
+    count
+}

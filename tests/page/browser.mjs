@@ -1,6 +1,7 @@
 // Headless Chromium (Debian's, driven by playwright-core) with the flags that give each
 // graphics backend on these machines (see ../shared/TOOLCHAIN.md), and helpers that read the
 // page's own signals and its pixels.
+import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
 
@@ -95,6 +96,26 @@ export async function differing(page, pngA, pngB) {
     }
     return count / (p.length / 4);
   }, [[...pngA], [...pngB]]);
+}
+
+/**
+ * Opens preset `id` grown at full speed and checks that it is a visible, lit shell, with no
+ * message and no error; keeps its picture in `file` and returns the page's state.
+ */
+export async function growPreset(browser, base, id, file) {
+  const { page, errors } = await open(browser, `${base}#v=1&preset=${id}&growth.speed=200`, { width: 480, height: 480 });
+  try {
+    const state = await waitForState(page, ['grown', 'error']);
+    assert.equal(state.state, 'grown', id);
+    const shot = await measureCanvas(page, file);
+    assert.ok(shot.share > 0.03, `${id} covers only ${shot.share} of the canvas`);
+    assert.ok(shot.shades > 30, `${id} has only ${shot.shades} shades`);
+    assert.equal(await page.isVisible('#message'), false, await page.textContent('#message'));
+    assert.deepEqual(errors, []);
+    return state;
+  } finally {
+    await page.close();
+  }
 }
 
 /** Serves www/ and launches Chromium for `backend`: what a test file shares across its tests. */
