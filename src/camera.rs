@@ -84,11 +84,6 @@ impl OrbitCamera {
         self
     }
 
-    /// Whether the camera follows the growing shell.
-    pub fn is_following(&self) -> bool {
-        self.following
-    }
-
     /// The centre and radius that frame `grown`, in display space.
     fn framing_of(&self, grown: &Bounds) -> (Vec3, f32) {
         if grown.min.x > grown.max.x {

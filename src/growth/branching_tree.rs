@@ -78,8 +78,6 @@ pub struct Segment {
     pub height: f64,
     /// The next trunk's bottom base across the knot; none where the branch ends.
     pub next: Option<Base>,
-    /// The knot's angle α, degrees.
-    pub alpha: f64,
     /// Trunks from the first trunk of the form to this one, counting along branches.
     pub generation: usize,
     /// 0 on the main trunk, 1 on its branches, and so on.
@@ -89,8 +87,6 @@ pub struct Segment {
     pub parent: Option<(usize, u32)>,
     /// The index of this trunk along its branch.
     pub index: u32,
-    /// Whether the self-adjusting force turned the rolling at this segment's knot.
-    pub turned: bool,
     /// The knot's height: across the knot on the side opposite K, where it is widest (rule 7);
     /// zero where the branch ends.
     pub knot_height: f64,
@@ -177,12 +173,10 @@ impl BranchingTree {
                 base,
                 height,
                 next: grows_on.then_some(next),
-                alpha,
                 generation: tip.generation,
                 depth: tip.depth,
                 parent: tip.parent,
                 index: tip.index,
-                turned: turn,
                 knot_height: if grows_on {
                     (across - far).length()
                 } else {

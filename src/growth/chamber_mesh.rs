@@ -200,7 +200,9 @@ impl ChamberMesh {
             .filter(|&k| !(c == 0 && k == RingKind::Bottom))
             .map(|k| self.ring(&frame, c, k))
             .collect();
-        let following = (c + 1 < self.stack.chambers()).then(|| {
+        // Smooth normals at the last ring look at the next chamber's first ring.
+        let smooth = self.look == Look::Smooth;
+        let following = (smooth && c + 1 < self.stack.chambers()).then(|| {
             let kind = self
                 .stack
                 .rings_of(c + 1)

@@ -153,11 +153,6 @@ impl ChamberStack {
         bottom.into_iter().chain(suture).chain([RingKind::Top])
     }
 
-    /// Rings of the whole stack.
-    pub fn ring_count(&self) -> usize {
-        (0..self.chambers).map(|c| self.rings_of(c).count()).sum()
-    }
-
     /// The first chamber's frame: its bottom base's local coordinates to shell space.
     pub fn first_frame(&self) -> DAffine3 {
         self.placement
