@@ -32,6 +32,8 @@ pub struct Generator {
     rows: usize,
     rows_done: usize,
     failure: Option<String>,
+    /// The content hash of the shell as it stands, once asked for.
+    hash: std::cell::OnceCell<u64>,
 }
 
 /// Why a generator cannot be built from a spec.
@@ -58,6 +60,7 @@ impl Generator {
             rows,
             rows_done: 1,
             failure: None,
+            hash: std::cell::OnceCell::new(),
         };
         generator.grow_shape();
         Ok(generator)
@@ -109,6 +112,16 @@ impl Generator {
         &self.edge
     }
 
+    /// [`Mesh::content_hash`] of the shell as it stands, edge included: the same for the same
+    /// triangles however they were grown.
+    pub fn mesh_hash(&self) -> u64 {
+        *self.hash.get_or_init(|| {
+            self.mesh
+                .content_hash()
+                .wrapping_add(self.edge.content_hash())
+        })
+    }
+
     /// The shell as it stands, edge included: what an export writes.
     pub fn snapshot(&self) -> Mesh {
         let mut mesh = self.mesh.clone();
@@ -116,20 +129,44 @@ impl Generator {
         mesh
     }
 
-    /// Grows the shape up to the step that the current row has reached.
-    fn grow_shape(&mut self) -> bool {
+    /// The shape's step that the current row has reached.
+    fn target_step(&self) -> usize {
         let steps = self.shape.steps();
-        let target = if steps <= 1 {
+        if steps <= 1 {
             steps
         } else {
             ((self.rows_done - 1) * (steps - 1) / (self.rows - 1) + 1).min(steps)
-        };
+        }
+    }
+
+    /// Grows the shape towards the step that the current row has reached, while `keep_going`
+    /// allows (at least one step); says whether the edge mesh was rewritten.
+    fn grow_shape_while(&mut self, mut keep_going: impl FnMut() -> bool) -> bool {
+        self.hash.take();
+        let target = self.target_step();
         let mut changed = false;
-        while self.shape.steps_done() < target {
-            self.shape.grow(&mut self.mesh, &mut self.edge);
-            changed = true;
+        let mut first = true;
+        while self.shape.steps_done() < target && (first || keep_going()) {
+            changed |= self.shape.grow(&mut self.mesh, &mut self.edge);
+            first = false;
         }
         changed
+    }
+
+    /// Grows the shape up to the step that the current row has reached.
+    fn grow_shape(&mut self) -> bool {
+        self.grow_shape_while(|| true)
+    }
+
+    /// Computes pattern rows up to row `target`, stopping at a failure.
+    fn advance_pattern(&mut self, target: usize) {
+        while self.failure.is_none() && self.rows_done < target {
+            if let Some(Err(e)) = self.pattern.as_mut().map(PatternRun::advance) {
+                self.failure = Some(format!("The pattern stopped {e}."));
+                break;
+            }
+            self.rows_done += 1;
+        }
     }
 
     /// Grows by up to `rows` pattern rows.
@@ -139,14 +176,7 @@ impl Generator {
             self.mesh.indices.len(),
             self.rows_done,
         );
-        let target = (self.rows_done + rows).min(self.rows);
-        while self.failure.is_none() && self.rows_done < target {
-            if let Some(Err(e)) = self.pattern.as_mut().map(PatternRun::advance) {
-                self.failure = Some(format!("The pattern stopped {e}."));
-                break;
-            }
-            self.rows_done += 1;
-        }
+        self.advance_pattern((self.rows_done + rows).min(self.rows));
         let edge_changed = self.grow_shape();
         Advance {
             vertices: v0..self.mesh.vertices.len(),
@@ -167,19 +197,23 @@ impl Generator {
     }
 
     /// Grows row by row, up to `rows` rows, while `keep_going` allows (a frame's time budget):
-    /// at least one row is grown when any remains.
+    /// at least one row, or one step of the shape, is grown when any remains. The shape may lag
+    /// behind the rows within a call and catches up in the next.
     pub fn advance_while(&mut self, rows: usize, mut keep_going: impl FnMut() -> bool) -> Advance {
         let (v0, i0, r0) = (
             self.mesh.vertices.len(),
             self.mesh.indices.len(),
             self.rows_done,
         );
-        let mut edge_changed = false;
-        for k in 0..rows {
-            if self.is_done() || (k > 0 && !keep_going()) {
-                break;
+        let lagging = self.shape.steps_done() < self.target_step();
+        let mut edge_changed = self.grow_shape_while(&mut keep_going);
+        let mut grown = 0;
+        while grown < rows && !self.is_done() && ((grown == 0 && !lagging) || keep_going()) {
+            if self.shape.steps_done() >= self.target_step() {
+                self.advance_pattern(self.rows_done + 1);
+                grown += 1;
             }
-            edge_changed |= self.advance(1).edge_changed;
+            edge_changed |= self.grow_shape_while(&mut keep_going);
         }
         Advance {
             vertices: v0..self.mesh.vertices.len(),
@@ -189,8 +223,10 @@ impl Generator {
         }
     }
 
-    /// Grows to the end.
+    /// Grows to the end at once.
     pub fn finish(&mut self) {
-        self.advance(self.rows);
+        self.advance_pattern(self.rows);
+        self.hash.take();
+        self.shape.finish(&mut self.mesh, &mut self.edge);
     }
 }

@@ -6,6 +6,7 @@
 use crate::geometry::sweep_mesh::SweepMesh;
 use crate::growth::branching_mesh::BranchingMesh;
 use crate::growth::chamber_mesh::ChamberMesh;
+use crate::implicit::implicit_mesh::ImplicitMesh;
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;
@@ -29,9 +30,15 @@ pub trait GrowingShape {
     fn bounds(&self) -> Bounds;
     /// The direction the fully grown shape is best seen from (where its opening faces).
     fn front(&self) -> DVec3;
-    /// Grows one step: appends to `mesh`, and replaces `edge` with the geometry that closes the
-    /// new growing edge.
-    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh);
+    /// Grows one step: appends to `mesh`, and may replace `edge` with the geometry that closes
+    /// the new growing edge; says whether it did.
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool;
+    /// Grows every remaining step (a form may know a shorter way to the end than step by step).
+    fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
+        while self.steps_done() < self.steps() {
+            self.grow(mesh, edge);
+        }
+    }
 }
 
 /// The growing shape a spec's form describes; `rows` (at least 2) is the length of the pattern
@@ -42,5 +49,6 @@ pub fn shape_for(spec: &ShellSpec, rows: usize) -> Result<Box<dyn GrowingShape>,
         Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),
         Form::Chambers(chambers) => Ok(Box::new(ChamberMesh::new(chambers, rows)?)),
         Form::Branching(branching) => Ok(Box::new(BranchingMesh::new(branching, spec.seed, rows)?)),
+        Form::Implicit(implicit) => Ok(Box::new(ImplicitMesh::new(implicit, rows)?)),
     }
 }

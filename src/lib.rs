@@ -9,6 +9,7 @@ pub mod geometry;
 pub mod gestures;
 pub mod growing_shape;
 pub mod growth;
+pub mod implicit;
 pub mod mesh;
 pub mod pattern;
 pub mod spec;

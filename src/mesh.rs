@@ -94,6 +94,22 @@ impl Mesh {
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3
     }
+
+    /// A hash of the triangles' vertex data (every bit of position, normal, pattern coordinates
+    /// and surface) that does not depend on the order of the triangles: two meshes made of the
+    /// same triangles in another order hash alike. Used to check that native and wasm builds,
+    /// and growth step by step or all at once, give the same mesh.
+    pub fn content_hash(&self) -> u64 {
+        self.indices.chunks_exact(3).fold(0u64, |sum, t| {
+            let mut h = 0xcbf2_9ce4_8422_2325u64;
+            for &i in t {
+                for b in bytemuck::bytes_of(&self.vertices[i as usize]) {
+                    h = (h ^ u64::from(*b)).wrapping_mul(0x0100_0000_01b3);
+                }
+            }
+            sum.wrapping_add(h)
+        })
+    }
 }
 
 /// Sizes a mesh reaches when fully grown, so buffers can be allocated once.
@@ -123,6 +139,55 @@ impl Bounds {
 
     pub fn center(&self) -> DVec3 {
         (self.min + self.max) * 0.5
+    }
+
+    /// Whether the box holds no point.
+    pub fn is_empty(&self) -> bool {
+        self.min.cmpgt(self.max).any()
+    }
+
+    /// The smallest box holding both.
+    pub fn union(&self, other: &Bounds) -> Bounds {
+        Bounds {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
+    /// The common part (empty when they are apart).
+    pub fn intersection(&self, other: &Bounds) -> Bounds {
+        Bounds {
+            min: self.min.max(other.min),
+            max: self.max.min(other.max),
+        }
+    }
+
+    /// Whether the two boxes share a point.
+    pub fn intersects(&self, other: &Bounds) -> bool {
+        self.min.cmple(other.max).all() && other.min.cmple(self.max).all()
+    }
+
+    pub fn contains(&self, p: DVec3) -> bool {
+        p.cmpge(self.min).all() && p.cmple(self.max).all()
+    }
+
+    /// The box grown by `margin` on every side.
+    pub fn padded(&self, margin: f64) -> Bounds {
+        Bounds {
+            min: self.min - margin,
+            max: self.max + margin,
+        }
+    }
+
+    /// The eight corners.
+    pub fn corners(&self) -> [DVec3; 8] {
+        std::array::from_fn(|i| {
+            DVec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            )
+        })
     }
 
     /// Radius of the sphere around the centre that holds the box.

@@ -22,6 +22,8 @@ pub enum Group {
     Automaton,
     /// Kawaguchi's GROWTH (1982): accumulated chambers, later branching.
     Kawaguchi,
+    /// Implicit surfaces of Galbraith, Prusinkiewicz & Wyvill: BlobTree whorls.
+    Implicit,
 }
 
 impl Group {
@@ -32,6 +34,7 @@ impl Group {
             Group::Pigmentation => "Pigmentation patterns",
             Group::Automaton => "Cellular automaton",
             Group::Kawaguchi => "Kawaguchi's GROWTH",
+            Group::Implicit => "Implicit surfaces",
         }
     }
 }

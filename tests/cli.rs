@@ -66,6 +66,35 @@ fn a_coral_exports_as_an_stl_of_closed_tubes() {
 }
 
 #[test]
+fn an_implicit_whorl_exports_as_a_watertight_stl_at_the_resolution_asked() {
+    let coarse = temp("whorl-48.stl");
+    let fine = temp("whorl.stl");
+    let said = |args: &[&str]| {
+        let result = run(args);
+        assert!(
+            result.status.success(),
+            "{}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+        String::from_utf8_lossy(&result.stdout).into_owned()
+    };
+    said(&[
+        "mesh",
+        "--preset",
+        "implicit-whorl",
+        "--resolution",
+        "48",
+        "--out",
+        &coarse,
+    ]);
+    said(&["mesh", "--preset", "implicit-whorl", "--out", &fine]);
+    let n48 = common::watertight_stl_triangles(&std::fs::read(&coarse).unwrap());
+    let n96 = common::watertight_stl_triangles(&std::fs::read(&fine).unwrap());
+    // Triangles grow with the square of the resolution.
+    assert!(n96 > 3 * n48 && n48 > 10_000, "{n48} then {n96}");
+}
+
+#[test]
 fn mesh_takes_a_link_in_place_of_a_preset() {
     let out = temp("linked.stl");
     let result = run(&[
@@ -130,6 +159,45 @@ fn bad_input_gets_one_line_and_a_non_zero_exit() {
             "mesh",
             "--link",
             "v=1&preset=kawaguchi-coral&form.knot.k0=40",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--preset",
+            "implicit-whorl",
+            "--resolution",
+            "1000",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--preset",
+            "turbinate",
+            "--resolution",
+            "64",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--link",
+            "v=1&preset=implicit-whorl&form.generator.points=0,0,0,-0.5",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--link",
+            "v=1&preset=implicit-canal-whorl&form.generator.pairs=0,3",
+            "--out",
+            &out,
+        ],
+        &[
+            "mesh",
+            "--link",
+            "v=1&preset=implicit-whorl&form.generator.exponent=0",
             "--out",
             &out,
         ],

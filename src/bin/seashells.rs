@@ -1,6 +1,6 @@
 //! `seashells`: the native exporter on the same core as the page.
 //!
-//!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl}
+//!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} [--resolution N]
 //!     seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv}
 //!                       [--cells N] [--rows N] [--iterations N]
 //!     seashells presets
@@ -13,13 +13,14 @@ use seashells_core::generator::Generator;
 use seashells_core::pattern::run::PatternRun;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{self, Kind};
+use seashells_core::spec::form::Form;
 use seashells_core::spec::link;
 use seashells_core::spec::validate::repair;
 use seashells_core::species::{self, presets};
 use std::collections::BTreeMap;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} | \
+const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} [--resolution N] | \
 seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N] | \
 seashells presets | seashells bench";
 
@@ -88,16 +89,24 @@ fn write(path: &str, bytes: &[u8]) -> Result<(), String> {
 }
 
 fn mesh(args: &[String]) -> Result<String, String> {
-    let options = Options::parse(args, &["preset", "link", "out"])?;
+    let options = Options::parse(args, &["preset", "link", "out", "resolution"])?;
     let out = options.required("out")?;
     let format = MeshFormat::from_path(out)?;
-    let generator = grown(&options.spec()?)?;
+    let mut spec = options.spec()?;
+    if let Some(n) = count(&options, "resolution", "form.resolution")? {
+        let Form::Implicit(implicit) = &mut spec.form else {
+            return Err("--resolution applies to implicit shells only".into());
+        };
+        implicit.resolution = n;
+    }
+    let generator = grown(&spec)?;
     let mesh = generator.snapshot();
     write(out, &format.write(&mesh))?;
     Ok(format!(
-        "wrote {out}: {} vertices, {} triangles",
+        "wrote {out}: {} vertices, {} triangles, hash {:016x}",
         mesh.vertices.len(),
-        mesh.triangle_count()
+        mesh.triangle_count(),
+        mesh.content_hash()
     ))
 }
 

@@ -231,9 +231,9 @@ impl GrowingShape for SweepMesh {
         self.mirror(facing)
     }
 
-    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool {
         if self.done >= self.sweep.rims() {
-            return;
+            return false;
         }
         let at = self.walk.next().expect("the walk is endless");
         let rim = self.sweep.rim(at, self.scale);
@@ -285,5 +285,6 @@ impl GrowingShape for SweepMesh {
         }
         self.previous = Some(base);
         self.done += 1;
+        true
     }
 }

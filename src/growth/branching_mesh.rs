@@ -134,9 +134,9 @@ impl GrowingShape for BranchingMesh {
         DVec3::NEG_Y
     }
 
-    fn grow(&mut self, mesh: &mut Mesh, _edge: &mut Mesh) {
+    fn grow(&mut self, mesh: &mut Mesh, _edge: &mut Mesh) -> bool {
         let Some(segment) = self.tree.segments.get(self.done) else {
-            return;
+            return false;
         };
         let row = |level: f64| (segment.generation as f64 + level) * self.rows_per_generation;
         let top = segment.base.lifted(segment.height);
@@ -150,5 +150,6 @@ impl GrowingShape for BranchingMesh {
             None => self.cap(mesh, &top, row(0.5), true),
         }
         self.done += 1;
+        false
     }
 }

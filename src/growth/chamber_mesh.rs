@@ -256,9 +256,9 @@ impl GrowingShape for ChamberMesh {
             .mirror(self.stack.growth_direction(&last, RingKind::Top))
     }
 
-    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool {
         if self.done > self.stack.chambers() {
-            return;
+            return false;
         }
         edge.clear();
         if self.done == 0 {
@@ -274,5 +274,6 @@ impl GrowingShape for ChamberMesh {
             self.cap(edge, mouth, mouth.growth);
         }
         self.done += 1;
+        true
     }
 }

@@ -438,13 +438,14 @@ impl Renderer {
             return;
         };
         shell.mesh.write(
+            &self.device,
             &self.queue,
             mesh,
             advance.vertices.clone(),
             advance.indices.clone(),
         );
         if advance.edge_changed {
-            shell.edge.replace(&self.queue, edge);
+            shell.edge.replace(&self.device, &self.queue, edge);
         }
         if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
             pattern.write_rows(&self.queue, advance.rows.start as u32, rgba);
@@ -457,7 +458,9 @@ impl Renderer {
         if let Some(shell) = self.shell.as_mut()
             && grown.min.x <= grown.max.x
         {
-            shell.ground.replace(&self.queue, &ground_quad(grown));
+            shell
+                .ground
+                .replace(&self.device, &self.queue, &ground_quad(grown));
         }
     }
 

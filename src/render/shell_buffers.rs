@@ -1,4 +1,6 @@
-//! GPU buffers sized once for the fully grown shell; each frame writes only what it adds.
+//! GPU buffers sized once for the fully grown shell; each frame writes only what it adds. Where
+//! a shape could only estimate its final size (an implicit surface), the buffers are
+//! reallocated, half as large again as needed, the first time a mesh outgrows them.
 
 use crate::mesh::{Capacity, Mesh, Vertex};
 use std::ops::Range;
@@ -7,6 +9,8 @@ use std::ops::Range;
 pub struct MeshBuffers {
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
+    capacity: Capacity,
+    label: &'static str,
     index_count: u32,
 }
 
@@ -16,7 +20,7 @@ fn bytes(count: usize, size: usize) -> u64 {
 }
 
 impl MeshBuffers {
-    pub fn new(device: &wgpu::Device, capacity: Capacity, label: &str) -> Self {
+    pub fn new(device: &wgpu::Device, capacity: Capacity, label: &'static str) -> Self {
         let vertices = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some(label),
             size: bytes(capacity.vertices, size_of::<Vertex>()),
@@ -32,18 +36,31 @@ impl MeshBuffers {
         Self {
             vertices,
             indices,
+            capacity,
+            label,
             index_count: 0,
         }
     }
 
-    /// Writes the given ranges of `mesh` at the same places in the buffers.
+    /// Writes the given ranges of `mesh` at the same places in the buffers; when the mesh has
+    /// outgrown them, new buffers take all of it.
     pub fn write(
         &mut self,
+        device: &wgpu::Device,
         queue: &wgpu::Queue,
         mesh: &Mesh,
-        vertices: Range<usize>,
-        indices: Range<usize>,
+        mut vertices: Range<usize>,
+        mut indices: Range<usize>,
     ) {
+        if vertices.end > self.capacity.vertices || indices.end > self.capacity.indices {
+            let grown = Capacity {
+                vertices: self.capacity.vertices.max(vertices.end * 3 / 2),
+                indices: self.capacity.indices.max(indices.end * 3 / 2),
+            };
+            *self = Self::new(device, grown, self.label);
+            vertices = 0..vertices.end;
+            indices = 0..indices.end;
+        }
         if !vertices.is_empty() {
             let offset = (vertices.start * size_of::<Vertex>()) as u64;
             queue.write_buffer(
@@ -63,9 +80,15 @@ impl MeshBuffers {
         }
     }
 
-    /// Replaces the whole content (for the small transient edge mesh).
-    pub fn replace(&mut self, queue: &wgpu::Queue, mesh: &Mesh) {
-        self.write(queue, mesh, 0..mesh.vertices.len(), 0..mesh.indices.len());
+    /// Replaces the whole content (for the transient edge mesh).
+    pub fn replace(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, mesh: &Mesh) {
+        self.write(
+            device,
+            queue,
+            mesh,
+            0..mesh.vertices.len(),
+            0..mesh.indices.len(),
+        );
         self.index_count = mesh.indices.len() as u32;
     }
 

@@ -1,10 +1,11 @@
 //! The shape part of a [`ShellSpec`](super::ShellSpec): which model builds the surface, and its
 //! parameters: the swept surface of Fowler et al. 1992 §2, and Kawaguchi's accumulated
-//! chambers and branching forms (1982). The implicit (BlobTree) form joins this enum as a
-//! further variant.
+//! chambers and branching forms (1982), and the implicit surfaces of Galbraith, Prusinkiewicz &
+//! Wyvill.
 
 use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
+use super::implicit::ImplicitSpec;
 use crate::geometry::frame::FrameMode;
 use serde::{Deserialize, Serialize};
 
@@ -18,6 +19,9 @@ pub enum Form {
     Chambers(ChambersSpec),
     /// Trunks, knots and branches (Kawaguchi 1982, "Growth model by branching").
     Branching(BranchingSpec),
+    /// Generating surfaces of skeletal primitives blended along a helico-spiral (Galbraith,
+    /// Prusinkiewicz & Wyvill, §3.1).
+    Implicit(ImplicitSpec),
 }
 
 /// Parameters of the swept surface.

@@ -6,6 +6,7 @@ pub mod chambers;
 pub mod colour;
 pub mod fields;
 pub mod form;
+pub mod implicit;
 pub mod link;
 pub mod material;
 pub mod pattern;
@@ -65,6 +66,10 @@ impl ShellSpec {
             Form::Chambers(c) => {
                 let turn = crate::growth::chamber_stack::turn_per_chamber(&c.chamber);
                 let whorls = f64::from(c.chambers) * turn / std::f64::consts::TAU;
+                f64::from(self.growth.rows) / whorls.max(1e-3)
+            }
+            Form::Implicit(i) => {
+                let whorls = f64::from(i.whorls) * i.whorl_angle / 360.0;
                 f64::from(self.growth.rows) / whorls.max(1e-3)
             }
             // No whorls: the whole growth counts as one.

@@ -6,6 +6,7 @@ use super::ShellSpec;
 use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
 use super::form::{CurveSpec, Form, SweepSpec};
+use super::implicit::ImplicitSpec;
 use super::link::Problem;
 use super::pattern::{Automaton, Model, PatternSpec};
 use crate::growing_shape::GeometryError;
@@ -13,6 +14,7 @@ use crate::growth::branching_mesh::BranchingMesh;
 use crate::growth::chamber_mesh::mesh_capacity;
 use crate::growth::chamber_stack::ChamberStack;
 use crate::growth::mouth::mouth_polygon;
+use crate::implicit::implicit_whorl;
 use crate::pattern::automaton::rule_of;
 use crate::pattern::diffusions;
 use crate::species;
@@ -72,6 +74,7 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
         (Form::Branching(b), Form::Branching(f)) => {
             repair_branching(b, f, spec.seed, &mut problems)
         }
+        (Form::Implicit(i), Form::Implicit(f)) => repair_implicit(i, f, &mut problems),
         _ => unreachable!("same_kind gives a fallback of the form's kind"),
     }
     repair_pattern(spec, fallback, &mut problems);
@@ -145,6 +148,27 @@ fn repair_branching(
             ),
         ));
         *b = f.clone();
+    }
+}
+
+/// An implicit shell must build: a spiral that grows, positive sizes, bends its cones can
+/// take, parts that its controlled blending names, a resolution within the cap.
+fn repair_implicit(i: &mut ImplicitSpec, f: &ImplicitSpec, problems: &mut Vec<Problem>) {
+    if let Err(e) = implicit_whorl::check(i) {
+        let key = e.0.split_once(": ").map_or("form", |(k, _)| k);
+        let used = if key == "form.resolution" {
+            i.resolution = f.resolution;
+            format!("the preset's resolution {}", f.resolution)
+        } else if key.starts_with("form.generator") {
+            i.generator = f.generator.clone();
+            "the preset's generating surface".into()
+        } else {
+            "the preset's form".into()
+        };
+        problems.push(shape_problem(e, &used));
+        if implicit_whorl::check(i).is_err() {
+            *i = f.clone();
+        }
     }
 }
 

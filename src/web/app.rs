@@ -356,6 +356,7 @@ impl App {
                     mesh.triangle_count() + edge.triangle_count()
                 ),
             );
+            signal("meshHash", &format!("{:016x}", g.generator.mesh_hash()));
             signal("state", "grown");
         } else {
             signal("state", "growing");

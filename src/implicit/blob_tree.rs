@@ -1,0 +1,438 @@
+//! The BlobTree (Wyvill, Guy & Galin 1999; Galbraith, Prusinkiewicz & Wyvill §2.2): skeletal
+//! primitives at the leaves, and as interior nodes the operators union ∪, intersection ∩ and
+//! difference − (CSG), blend + (the sum of fields), superelliptic blend (eqs 4–5), controlled
+//! blend (eq 6), the bend warp, and affine transforms. Every node knows the box outside which
+//! its field is zero, so evaluation skips every subtree a point misses, and [`Node::cull`] cuts
+//! a tree down to the few primitives near a region before it is sampled there. Every node also
+//! carries the growth step it is born at, so one tree describes the shape at every stage of
+//! its growth.
+
+use super::bend::Bend;
+use super::falloff::ISO;
+use super::primitive::Primitive;
+use super::texture_blend::{Paint, Texture};
+use crate::mesh::Bounds;
+use glam::{DAffine3, DMat3, DVec3};
+
+/// An affine map with its inverse (fields are evaluated through the inverse).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Affine {
+    pub forward: DAffine3,
+    inverse: DAffine3,
+    /// A bound on how much the inverse stretches distances (its spectral norm).
+    stretch: f64,
+}
+
+impl Affine {
+    pub fn new(forward: DAffine3) -> Self {
+        let inverse = forward.inverse();
+        Self {
+            forward,
+            inverse,
+            stretch: spectral_norm(inverse.matrix3),
+        }
+    }
+}
+
+/// ‖M‖₂ as the square root of the largest eigenvalue of MᵀM, by power iteration, rounded up by
+/// a hair: a Lipschitz bound must not be too small.
+fn spectral_norm(m: DMat3) -> f64 {
+    let mtm = m.transpose() * m;
+    let mut v = DVec3::new(0.577, 0.578, 0.579);
+    let mut lambda = 0.0;
+    for _ in 0..64 {
+        let w = mtm * v;
+        lambda = w.length();
+        if lambda == 0.0 {
+            return 0.0;
+        }
+        v = w / lambda;
+    }
+    lambda.sqrt() * 1.001
+}
+
+/// What a node does.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Op {
+    Leaf(Primitive, Texture),
+    /// + : the sum of the fields: everything blends with everything.
+    Blend(Vec<Node>),
+    /// ∪ : the largest field.
+    Union(Vec<Node>),
+    /// ∩ : the smallest field.
+    Intersection(Vec<Node>),
+    /// A − B : min(f_A, 2·iso − f_B), never below zero.
+    Difference(Box<Node>, Box<Node>),
+    /// Eq 4: (Σ fᵢⁿ)^(1/n), from the blend (n = 1) towards the union (eq 5, n → ∞).
+    Superelliptic(f64, Vec<Node>),
+    /// Eq 6: only the listed pairs blend; f = max over the pairs of fᵢ + f_k and over the
+    /// children alone of fᵢ, so two children that are not paired meet as in a union.
+    Controlled(Vec<Node>, Vec<[usize; 2]>),
+    /// w : the child seen through a bend.
+    Warp(Bend, Box<Node>),
+    /// t, s, r : the child moved by an affine map.
+    Transform(Affine, Box<Node>),
+}
+
+/// A BlobTree node with what evaluation and culling need to know of it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Node {
+    pub op: Op,
+    /// Outside this box the field is zero.
+    pub bounds: Bounds,
+    /// A bound on the gradient's length (infinite when none is known).
+    pub lipschitz: f64,
+    /// The growth step at which the node appears.
+    pub birth: u32,
+}
+
+fn fold(children: &[Node], f: impl Fn(&Node) -> f64, g: fn(f64, f64) -> f64, zero: f64) -> f64 {
+    children.iter().map(f).fold(zero, g)
+}
+
+impl Node {
+    fn new(op: Op) -> Self {
+        let (bounds, lipschitz, birth) = match &op {
+            Op::Leaf(p, _) => (p.bounds(), p.lipschitz(), 0),
+            Op::Blend(c) | Op::Superelliptic(_, c) => (
+                union_bounds(c),
+                fold(c, |n| n.lipschitz, |a, b| a + b, 0.0),
+                first_birth(c),
+            ),
+            Op::Union(c) => (
+                union_bounds(c),
+                fold(c, |n| n.lipschitz, f64::max, 0.0),
+                first_birth(c),
+            ),
+            Op::Intersection(c) => (
+                c.iter()
+                    .map(|n| n.bounds)
+                    .reduce(|a, b| a.intersection(&b))
+                    .unwrap_or(Bounds::EMPTY),
+                fold(c, |n| n.lipschitz, f64::max, 0.0),
+                c.iter().map(|n| n.birth).max().unwrap_or(0),
+            ),
+            Op::Difference(a, b) => (a.bounds, a.lipschitz.max(b.lipschitz), a.birth),
+            Op::Controlled(c, pairs) => {
+                let single = fold(c, |n| n.lipschitz, f64::max, 0.0);
+                let pair = pairs
+                    .iter()
+                    .map(|[i, k]| c[*i].lipschitz + c[*k].lipschitz)
+                    .fold(0.0, f64::max);
+                (union_bounds(c), single.max(pair), first_birth(c))
+            }
+            Op::Warp(bend, child) => (
+                bend.bounds(&child.bounds),
+                child.lipschitz * bend.stretch(&child.bounds),
+                child.birth,
+            ),
+            Op::Transform(affine, child) => {
+                let mut b = Bounds::EMPTY;
+                for corner in child.bounds.corners() {
+                    b.include(affine.forward.transform_point3(corner));
+                }
+                (b, child.lipschitz * affine.stretch, child.birth)
+            }
+        };
+        Self {
+            op,
+            bounds,
+            lipschitz,
+            birth,
+        }
+    }
+
+    pub fn leaf(primitive: Primitive, texture: Texture) -> Self {
+        Self::new(Op::Leaf(primitive, texture))
+    }
+
+    pub fn blend(children: Vec<Node>) -> Self {
+        Self::new(Op::Blend(children))
+    }
+
+    pub fn union(children: Vec<Node>) -> Self {
+        Self::new(Op::Union(children))
+    }
+
+    pub fn intersection(children: Vec<Node>) -> Self {
+        Self::new(Op::Intersection(children))
+    }
+
+    pub fn difference(a: Node, b: Node) -> Self {
+        Self::new(Op::Difference(Box::new(a), Box::new(b)))
+    }
+
+    /// Eq 4 with exponent `n` ≥ 1.
+    pub fn superelliptic(n: f64, children: Vec<Node>) -> Self {
+        Self::new(Op::Superelliptic(n, children))
+    }
+
+    /// Eq 6: `pairs` index into `children`.
+    pub fn controlled(children: Vec<Node>, pairs: Vec<[usize; 2]>) -> Self {
+        Self::new(Op::Controlled(children, pairs))
+    }
+
+    pub fn warp(bend: Bend, child: Node) -> Self {
+        Self::new(Op::Warp(bend, Box::new(child)))
+    }
+
+    pub fn transform(forward: DAffine3, child: Node) -> Self {
+        Self::new(Op::Transform(Affine::new(forward), Box::new(child)))
+    }
+
+    /// The same subtree, appearing at growth step `step` (every node in it).
+    pub fn born_at(mut self, step: u32) -> Self {
+        self.birth = step;
+        match &mut self.op {
+            Op::Leaf(..) => {}
+            Op::Blend(c)
+            | Op::Union(c)
+            | Op::Intersection(c)
+            | Op::Superelliptic(_, c)
+            | Op::Controlled(c, _) => {
+                for child in c.iter_mut() {
+                    *child = std::mem::replace(child, placeholder()).born_at(step);
+                }
+            }
+            Op::Difference(a, b) => {
+                **a = std::mem::replace(&mut **a, placeholder()).born_at(step);
+                **b = std::mem::replace(&mut **b, placeholder()).born_at(step);
+            }
+            Op::Warp(_, c) | Op::Transform(_, c) => {
+                **c = std::mem::replace(&mut **c, placeholder()).born_at(step);
+            }
+        }
+        self
+    }
+
+    /// The field at `p`.
+    pub fn field(&self, p: DVec3) -> f64 {
+        if !self.bounds.contains(p) {
+            return 0.0;
+        }
+        match &self.op {
+            Op::Leaf(primitive, _) => primitive.field(p),
+            Op::Blend(c) => c.iter().map(|n| n.field(p)).sum(),
+            Op::Union(c) => fold(c, |n| n.field(p), f64::max, 0.0),
+            Op::Intersection(c) => fold(c, |n| n.field(p), f64::min, f64::INFINITY),
+            Op::Difference(a, b) => a.field(p).min(2.0 * ISO - b.field(p)).max(0.0),
+            Op::Superelliptic(n, c) => with_fields(c, p, |fields| superelliptic(*n, fields)),
+            Op::Controlled(c, pairs) => with_fields(c, p, |fields| controlled(fields, pairs).0),
+            Op::Warp(bend, child) => child.field(bend.inverse(p)),
+            Op::Transform(affine, child) => child.field(affine.inverse.transform_point3(p)),
+        }
+    }
+
+    /// The field at `p` and the blended pattern coordinates of the primitives that make it.
+    pub fn paint(&self, p: DVec3) -> (f64, Paint) {
+        if !self.bounds.contains(p) {
+            return (0.0, Paint::default());
+        }
+        match &self.op {
+            Op::Leaf(primitive, texture) => {
+                let f = primitive.field(p);
+                (f, Paint::of(texture, p, f))
+            }
+            Op::Blend(c) | Op::Superelliptic(_, c) => {
+                let parts: Vec<(f64, Paint)> = c.iter().map(|n| n.paint(p)).collect();
+                let paint = parts
+                    .iter()
+                    .fold(Paint::default(), |sum, (_, paint)| sum + *paint);
+                let fields: Vec<f64> = parts.iter().map(|(f, _)| *f).collect();
+                let f = match &self.op {
+                    Op::Superelliptic(n, _) => superelliptic(*n, &fields),
+                    _ => fields.iter().sum(),
+                };
+                (f, paint)
+            }
+            Op::Union(c) => strongest(c.iter().map(|n| n.paint(p)), |a, b| a > b),
+            Op::Intersection(c) => strongest(c.iter().map(|n| n.paint(p)), |a, b| a < b),
+            Op::Difference(a, b) => {
+                let (fa, pa) = a.paint(p);
+                let (fb, pb) = b.paint(p);
+                let carved = 2.0 * ISO - fb;
+                if fa <= carved {
+                    (fa.max(0.0), pa)
+                } else {
+                    (carved.max(0.0), pb.carved())
+                }
+            }
+            Op::Controlled(c, pairs) => {
+                let parts: Vec<(f64, Paint)> = c.iter().map(|n| n.paint(p)).collect();
+                let fields: Vec<f64> = parts.iter().map(|(f, _)| *f).collect();
+                let (f, [i, k]) = controlled(&fields, pairs);
+                let paint = if i == k {
+                    parts[i].1
+                } else {
+                    parts[i].1 + parts[k].1
+                };
+                (f, paint)
+            }
+            Op::Warp(bend, child) => child.paint(bend.inverse(p)),
+            Op::Transform(affine, child) => child.paint(affine.inverse.transform_point3(p)),
+        }
+    }
+
+    /// The field's gradient at `p`, by central differences of step `h`.
+    pub fn gradient(&self, p: DVec3, h: f64) -> DVec3 {
+        let d = |e: DVec3| self.field(p + e * h) - self.field(p - e * h);
+        DVec3::new(d(DVec3::X), d(DVec3::Y), d(DVec3::Z)) / (2.0 * h)
+    }
+
+    /// The part of the tree that matters inside `region` at growth step `step`: subtrees born
+    /// later or whose boxes miss the region are dropped, and so are operators left with one
+    /// child. `None` when the field is zero throughout the region.
+    pub fn cull(&self, region: &Bounds, step: u32) -> Option<Node> {
+        if self.birth > step || !self.bounds.intersects(region) {
+            return None;
+        }
+        let many = |c: &[Node], make: &dyn Fn(Vec<Node>) -> Node| {
+            let mut kept: Vec<Node> = c.iter().filter_map(|n| n.cull(region, step)).collect();
+            match kept.len() {
+                0 => None,
+                1 => kept.pop(),
+                _ => Some(make(kept)),
+            }
+        };
+        match &self.op {
+            Op::Leaf(..) => Some(self.clone()),
+            Op::Blend(c) => many(c, &Node::blend),
+            Op::Union(c) => many(c, &Node::union),
+            Op::Superelliptic(n, c) => many(c, &|kept| Node::superelliptic(*n, kept)),
+            Op::Intersection(c) => c
+                .iter()
+                .map(|n| n.cull(region, step))
+                .collect::<Option<Vec<Node>>>()
+                .map(Node::intersection),
+            Op::Difference(a, b) => {
+                let a = a.cull(region, step)?;
+                Some(match b.cull(region, step) {
+                    Some(b) => Node::difference(a, b),
+                    None => a,
+                })
+            }
+            Op::Controlled(c, pairs) => {
+                let mut index = vec![usize::MAX; c.len()];
+                let mut kept = Vec::new();
+                for (i, child) in c.iter().enumerate() {
+                    if let Some(child) = child.cull(region, step) {
+                        index[i] = kept.len();
+                        kept.push(child);
+                    }
+                }
+                let pairs: Vec<[usize; 2]> = pairs
+                    .iter()
+                    .map(|[i, k]| [index[*i], index[*k]])
+                    .filter(|[i, k]| *i != usize::MAX && *k != usize::MAX)
+                    .collect();
+                match kept.len() {
+                    0 => None,
+                    1 => kept.pop(),
+                    _ if pairs.is_empty() => Some(Node::union(kept)),
+                    _ => Some(Node::controlled(kept, pairs)),
+                }
+            }
+            Op::Warp(bend, child) => {
+                // The region cannot be carried through the bend exactly: keep the whole child.
+                let child = child.cull(&child.bounds, step)?;
+                Some(Node::warp(*bend, child))
+            }
+            Op::Transform(affine, child) => {
+                let mut local = Bounds::EMPTY;
+                for corner in region.intersection(&self.bounds).corners() {
+                    local.include(affine.inverse.transform_point3(corner));
+                }
+                let child = child.cull(&local, step)?;
+                Some(Node::new(Op::Transform(*affine, Box::new(child))))
+            }
+        }
+    }
+
+    /// Leaves in the tree.
+    pub fn primitives(&self) -> usize {
+        match &self.op {
+            Op::Leaf(..) => 1,
+            Op::Blend(c)
+            | Op::Union(c)
+            | Op::Intersection(c)
+            | Op::Superelliptic(_, c)
+            | Op::Controlled(c, _) => c.iter().map(Node::primitives).sum(),
+            Op::Difference(a, b) => a.primitives() + b.primitives(),
+            Op::Warp(_, c) | Op::Transform(_, c) => c.primitives(),
+        }
+    }
+}
+
+/// Calls `f` with the children's fields at `p`, kept on the stack for the few children a
+/// culled tree has.
+fn with_fields(children: &[Node], p: DVec3, f: impl FnOnce(&[f64]) -> f64) -> f64 {
+    const FEW: usize = 16;
+    if children.len() <= FEW {
+        let mut fields = [0.0; FEW];
+        for (slot, child) in fields.iter_mut().zip(children) {
+            *slot = child.field(p);
+        }
+        f(&fields[..children.len()])
+    } else {
+        f(&children.iter().map(|c| c.field(p)).collect::<Vec<f64>>())
+    }
+}
+
+/// A stand-in moved out of a node for a moment while its children are rebuilt.
+fn placeholder() -> Node {
+    Node {
+        op: Op::Blend(Vec::new()),
+        bounds: Bounds::EMPTY,
+        lipschitz: 0.0,
+        birth: 0,
+    }
+}
+
+fn union_bounds(children: &[Node]) -> Bounds {
+    children
+        .iter()
+        .fold(Bounds::EMPTY, |b, n| b.union(&n.bounds))
+}
+
+fn first_birth(children: &[Node]) -> u32 {
+    children.iter().map(|n| n.birth).min().unwrap_or(0)
+}
+
+/// The child whose field wins the comparison `better`, with its paint.
+fn strongest(
+    parts: impl Iterator<Item = (f64, Paint)>,
+    better: fn(f64, f64) -> bool,
+) -> (f64, Paint) {
+    parts
+        .reduce(|a, b| if better(b.0, a.0) { b } else { a })
+        .unwrap_or_default()
+}
+
+/// Eq 4, computed as m·(Σ (fᵢ/m)ⁿ)^(1/n) with m the largest field, so that n = 400 neither
+/// overflows nor underflows.
+pub fn superelliptic(n: f64, fields: &[f64]) -> f64 {
+    let m = fields.iter().copied().fold(0.0, f64::max);
+    if m <= 0.0 {
+        return 0.0;
+    }
+    let sum: f64 = fields.iter().map(|f| libm::pow(f / m, n)).sum();
+    m * libm::pow(sum, 1.0 / n)
+}
+
+/// Eq 6: the largest of the paired sums and the single fields, with the pair that gives it
+/// ([i, i] for a single).
+fn controlled(fields: &[f64], pairs: &[[usize; 2]]) -> (f64, [usize; 2]) {
+    let mut best = (0.0, [0, 0]);
+    for (i, &f) in fields.iter().enumerate() {
+        if f > best.0 {
+            best = (f, [i, i]);
+        }
+    }
+    for &[i, k] in pairs {
+        let f = fields[i] + fields[k];
+        if f > best.0 {
+            best = (f, [i, k]);
+        }
+    }
+    best
+}

@@ -1,0 +1,122 @@
+//! Pattern coordinates on an implicit surface, blended by field value (Tigges & Wyvill 1999, as
+//! Galbraith et al. §3.4 texture the spines and bumps): every primitive carries its own
+//! coordinates, growth time and position along the generating curve, and a surface point takes
+//! the average of those of the primitives around it, each weighted by its field there. The
+//! position along the curve is periodic, so it is averaged as an angle (on the unit circle):
+//! two primitives at 0.99 and 0.01 blend to 0, not to 0.5.
+
+use glam::DVec3;
+use std::f64::consts::TAU;
+
+/// The pattern coordinates a primitive carries.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Texture {
+    /// Growth time, in pattern rows.
+    pub time: f64,
+    /// Position along the generating curve in [0, 1), or `None` to take it from the angle of
+    /// the point about the primitive's local w axis (the growth direction), measured in the
+    /// generating curve's plane from +u (towards the shell axis, where whorls meet and the
+    /// pattern's seam hides) through +v.
+    pub along: Option<f64>,
+}
+
+impl Texture {
+    /// The position along the curve at the local point `p`, as a turn in [0, 1).
+    fn along_at(&self, p: DVec3) -> f64 {
+        self.along
+            .unwrap_or_else(|| libm::atan2(p.y, p.x) / TAU)
+            .rem_euclid(1.0)
+    }
+}
+
+/// Field-weighted sums of pattern coordinates.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Paint {
+    weight: f64,
+    cos: f64,
+    sin: f64,
+    time: f64,
+    /// Whether the point lies on a surface carved by a CSG difference: the inside of a wall.
+    pub inner: bool,
+}
+
+impl Paint {
+    /// A primitive's coordinates at local point `p`, weighted by its field `f`.
+    pub fn of(texture: &Texture, p: DVec3, f: f64) -> Self {
+        let angle = texture.along_at(p) * TAU;
+        Self {
+            weight: f,
+            cos: f * libm::cos(angle),
+            sin: f * libm::sin(angle),
+            time: f * texture.time,
+            inner: false,
+        }
+    }
+
+    /// The same contribution, on a carved surface.
+    pub fn carved(self) -> Paint {
+        Paint {
+            inner: true,
+            ..self
+        }
+    }
+
+    /// (position along the curve in [0, 1), growth time): the weighted averages.
+    pub fn coordinates(&self) -> [f64; 2] {
+        if self.weight <= 0.0 {
+            return [0.0, 0.0];
+        }
+        let along = (libm::atan2(self.sin, self.cos) / TAU).rem_euclid(1.0);
+        [along, self.time / self.weight]
+    }
+}
+
+impl std::ops::Add for Paint {
+    type Output = Paint;
+
+    /// The sum of two blended contributions.
+    fn add(self, other: Paint) -> Paint {
+        Paint {
+            weight: self.weight + other.weight,
+            cos: self.cos + other.cos,
+            sin: self.sin + other.sin,
+            time: self.time + other.time,
+            inner: self.inner || other.inner,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coordinates_blend_by_weight_and_wrap_around_the_curve() {
+        let a = Texture {
+            time: 10.0,
+            along: Some(0.98),
+        };
+        let b = Texture {
+            time: 20.0,
+            along: Some(0.04),
+        };
+        let blend = Paint::of(&a, DVec3::ZERO, 1.0) + Paint::of(&b, DVec3::ZERO, 1.0);
+        let [along, time] = blend.coordinates();
+        assert!((time - 15.0).abs() < 1e-12);
+        assert!((along - 0.01).abs() < 1e-9, "{along}");
+        let weighted = Paint::of(&a, DVec3::ZERO, 3.0) + Paint::of(&b, DVec3::ZERO, 1.0);
+        assert!((weighted.coordinates()[1] - 12.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_angle_runs_around_the_local_w_axis_from_u() {
+        let t = Texture {
+            time: 0.0,
+            along: None,
+        };
+        let at = |p: DVec3| Paint::of(&t, p, 1.0).coordinates()[0];
+        assert!(at(DVec3::new(1.0, 0.0, 5.0)).abs() < 1e-12);
+        assert!((at(DVec3::new(0.0, 1.0, 0.0)) - 0.25).abs() < 1e-12);
+        assert!((at(DVec3::new(-1.0, 1e-9, 0.0)) - 0.5).abs() < 1e-6);
+    }
+}
