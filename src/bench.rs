@@ -1,9 +1,14 @@
-//! The benchmark (figures, not a test): cell updates per second of each pattern model, and the
-//! time of one animation frame's growth for each species at its default speed. The same code
-//! runs natively and in wasm; only the clock is given from outside.
+//! The benchmark (figures, not a test): cell updates per second of each pattern model, the
+//! time of one animation frame's growth for each species at its default speed, and the
+//! implicit-surface modeller (field evaluations, whole polygonizations, frames of growth). The
+//! same code runs natively and in wasm; only the clock is given from outside.
 
-use crate::generator::Generator;
+use crate::generator::{GROWTH_BUDGET_MS, Generator};
+use crate::implicit::falloff::ISO;
+use crate::implicit::implicit_whorl::whorl;
+use crate::implicit::polygonizer::{Grid, polygonize};
 use crate::pattern::build;
+use crate::spec::form::Form;
 use crate::spec::pattern::Model;
 use crate::species::presets;
 use std::fmt::Write;
@@ -19,6 +24,34 @@ pub struct Figure {
     pub what: String,
     pub value: f64,
     pub unit: &'static str,
+    /// The spread of repeated timings (largest less smallest) over their median, when repeated.
+    pub spread: Option<f64>,
+}
+
+/// Least time one timing covers, far above the coarse clocks of browsers.
+const LEAST_MS: f64 = 250.0;
+/// Timings taken of each measured piece of work.
+const REPEATS: usize = 5;
+
+/// The median time of one call of `work`, in milliseconds, and the spread of the timings:
+/// each timing runs `work` as many times as fill [`LEAST_MS`].
+fn timed(now: &dyn Fn() -> f64, mut work: impl FnMut()) -> (f64, f64) {
+    let start = now();
+    work();
+    let once = (now() - start).max(1e-3);
+    let calls = (LEAST_MS / once).ceil().max(1.0) as usize;
+    let mut times: Vec<f64> = (0..REPEATS)
+        .map(|_| {
+            let start = now();
+            for _ in 0..calls {
+                work();
+            }
+            (now() - start) / calls as f64
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    let median = times[REPEATS / 2];
+    (median, (times[REPEATS - 1] - times[0]) / median)
 }
 
 /// Runs every measurement; `now` returns milliseconds from any fixed origin.
@@ -47,6 +80,7 @@ pub fn run(now: &dyn Fn() -> f64) -> Vec<Figure> {
             what: format!("{} ({})", preset.id, model_name(&spec.model)),
             value: (per_row * ROWS as u64) as f64 / seconds / 1e6,
             unit: "M cell updates/s",
+            spread: None,
         });
     }
     for preset in patterned() {
@@ -69,11 +103,78 @@ pub fn run(now: &dyn Fn() -> f64) -> Vec<Figure> {
             what: format!("{} frame at {speed} rows/frame, mean", preset.id),
             value: total / FRAMES as f64,
             unit: "ms",
+            spread: None,
         });
         figures.push(Figure {
             what: format!("{} frame at {speed} rows/frame, worst", preset.id),
             value: worst,
             unit: "ms",
+            spread: None,
+        });
+    }
+    figures.extend(implicit(now, "implicit-whorl"));
+    figures
+}
+
+/// The implicit modeller on preset `id`: field evaluations per second of its whole BlobTree,
+/// the time to polygonize all of it at 128³ and 256³, and its growth in frames of the page's
+/// budget.
+fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
+    let Some(preset) = presets().iter().find(|p| p.id == id) else {
+        return Vec::new();
+    };
+    let Form::Implicit(spec) = &preset.spec.form else {
+        return Vec::new();
+    };
+    let Ok(shell) = whorl(spec, preset.spec.growth.rows as usize) else {
+        return Vec::new();
+    };
+    let (tree, last) = (&shell.tree, shell.instances - 1);
+    let mut figures = Vec::new();
+    const LATTICE: u32 = 24;
+    let (min, size) = (tree.bounds.min, tree.bounds.max - tree.bounds.min);
+    let (ms, spread) = timed(now, || {
+        let mut inside = 0;
+        for i in 0..LATTICE * LATTICE * LATTICE {
+            let t = glam::UVec3::new(i % LATTICE, i / LATTICE % LATTICE, i / (LATTICE * LATTICE));
+            let p = min + size * (t.as_dvec3() + 0.5) / f64::from(LATTICE);
+            inside += usize::from(tree.field(p) >= ISO);
+        }
+        std::hint::black_box(inside);
+    });
+    figures.push(Figure {
+        what: format!("{id} field evaluations, whole tree"),
+        value: f64::from(LATTICE.pow(3)) / ms / 1e3,
+        unit: "M/s",
+        spread: Some(spread),
+    });
+    for resolution in [128, 256] {
+        let grid = Grid::new(&tree.bounds, resolution);
+        let (ms, spread) = timed(now, || {
+            std::hint::black_box(polygonize(tree, &grid, last));
+        });
+        figures.push(Figure {
+            what: format!("{id} polygonized at {resolution}³"),
+            value: ms,
+            unit: "ms",
+            spread: Some(spread),
+        });
+    }
+    if let Ok(mut generator) = Generator::new(&preset.spec) {
+        let rows = preset.spec.growth.speed.ceil() as usize;
+        let (mut worst, mut frames) = (0.0f64, 0);
+        while !generator.is_done() {
+            let start = now();
+            let deadline = start + GROWTH_BUDGET_MS;
+            generator.advance_while(rows, || now() < deadline);
+            worst = worst.max(now() - start);
+            frames += 1;
+        }
+        figures.push(Figure {
+            what: format!("{id} growth in {GROWTH_BUDGET_MS} ms frames: {frames} frames, worst"),
+            value: worst,
+            unit: "ms",
+            spread: None,
         });
     }
     figures
@@ -99,9 +200,13 @@ pub fn report(figures: &[Figure]) -> String {
     let mut out = String::new();
     for f in figures {
         let pad = width - f.what.chars().count();
+        let spread = f
+            .spread
+            .map(|s| format!("  (spread {:.1} %)", s * 100.0))
+            .unwrap_or_default();
         writeln!(
             out,
-            "{}{}  {:>9.3} {}",
+            "{}{}  {:>9.3} {}{spread}",
             f.what,
             " ".repeat(pad),
             f.value,

@@ -10,6 +10,9 @@ use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
 
+/// Milliseconds of a frame that the page's growth may take, so no speed freezes the tab.
+pub const GROWTH_BUDGET_MS: f64 = 12.0;
+
 /// What one call to [`Generator::advance`] added.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Advance {

@@ -16,10 +16,9 @@ use seashells_core::implicit::texture_blend::Texture;
 use seashells_core::mesh::Mesh;
 use std::f64::consts::PI;
 
-const PLAIN: Texture = Texture {
-    time: 0.0,
-    along: Some(0.0),
-};
+fn plain() -> Texture {
+    Texture::fixed(0.0, 0.0)
+}
 
 fn ball(centre: DVec3, radius: f64) -> Node {
     Node::leaf(
@@ -27,7 +26,7 @@ fn ball(centre: DVec3, radius: f64) -> Node {
             centre,
             radius: support_of(radius),
         },
-        PLAIN,
+        plain(),
     )
 }
 

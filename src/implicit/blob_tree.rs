@@ -146,8 +146,16 @@ impl Node {
         Self::new(Op::Leaf(primitive, texture))
     }
 
+    /// Blends nested in the children are spliced in: the sum is associative.
     pub fn blend(children: Vec<Node>) -> Self {
-        Self::new(Op::Blend(children))
+        let mut flat = Vec::with_capacity(children.len());
+        for child in children {
+            match child.op {
+                Op::Blend(inner) => flat.extend(inner),
+                _ => flat.push(child),
+            }
+        }
+        Self::new(Op::Blend(flat))
     }
 
     pub fn union(children: Vec<Node>) -> Self {
@@ -176,8 +184,22 @@ impl Node {
         Self::new(Op::Warp(bend, Box::new(child)))
     }
 
+    /// The child moved by `forward`. A similarity is pushed down to the primitives (a moved
+    /// point is a point), and transforms meet in one, so that evaluation does not pass through
+    /// a chain of maps.
     pub fn transform(forward: DAffine3, child: Node) -> Self {
-        Self::new(Op::Transform(Affine::new(forward), Box::new(child)))
+        let birth = child.birth;
+        let moved = match child.op {
+            Op::Transform(inner, grandchild) => Self::new(Op::Transform(
+                Affine::new(forward * inner.forward),
+                grandchild,
+            )),
+            op => match similarity_scale(forward) {
+                Some(scale) => Self::new(push(op, forward, scale)),
+                None => Self::new(Op::Transform(Affine::new(forward), Box::new(Self::new(op)))),
+            },
+        };
+        Node { birth, ..moved }
     }
 
     /// The same subtree, appearing at growth step `step` (every node in it).
@@ -375,6 +397,38 @@ fn with_fields(children: &[Node], p: DVec3, f: impl FnOnce(&[f64]) -> f64) -> f6
         f(&fields[..children.len()])
     } else {
         f(&children.iter().map(|c| c.field(p)).collect::<Vec<f64>>())
+    }
+}
+
+/// The factor by which `m` scales every length, when it is a similarity.
+fn similarity_scale(m: DAffine3) -> Option<f64> {
+    let [a, b, c] = [m.matrix3.x_axis, m.matrix3.y_axis, m.matrix3.z_axis];
+    let s = a.length();
+    let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * s * s;
+    let similar = close(b.length_squared(), s * s)
+        && close(c.length_squared(), s * s)
+        && close(a.dot(b), 0.0)
+        && close(b.dot(c), 0.0)
+        && close(a.dot(c), 0.0);
+    (similar && s > 0.0).then_some(s)
+}
+
+/// An operator whose every primitive is moved by the similarity `m` of scale `scale`.
+fn push(op: Op, m: DAffine3, scale: f64) -> Op {
+    let all = |c: Vec<Node>| c.into_iter().map(|n| Node::transform(m, n)).collect();
+    match op {
+        Op::Leaf(p, t) => Op::Leaf(p.moved(&m, scale), t.moved(m.inverse())),
+        Op::Blend(c) => Op::Blend(all(c)),
+        Op::Union(c) => Op::Union(all(c)),
+        Op::Intersection(c) => Op::Intersection(all(c)),
+        Op::Superelliptic(n, c) => Op::Superelliptic(n, all(c)),
+        Op::Controlled(c, pairs) => Op::Controlled(all(c), pairs),
+        Op::Difference(a, b) => Op::Difference(
+            Box::new(Node::transform(m, *a)),
+            Box::new(Node::transform(m, *b)),
+        ),
+        Op::Warp(bend, c) => Op::Transform(Affine::new(m), Box::new(Node::new(Op::Warp(bend, c)))),
+        Op::Transform(..) => unreachable!("transforms are composed, not pushed"),
     }
 }
 

@@ -7,7 +7,7 @@
 
 use super::blob_tree::Node;
 use super::implicit_whorl::{Whorl, whorl};
-use super::polygonizer::{ChunkIndex, Grid, Scratch, mesh_chunk, surface_box};
+use super::polygonizer::{ChunkCache, ChunkIndex, Grid, Scratch, mesh_chunk, surface_box};
 use crate::growing_shape::{GeometryError, GrowingShape};
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::implicit::ImplicitSpec;
@@ -32,6 +32,10 @@ pub struct ImplicitMesh {
     live: BTreeMap<usize, Mesh>,
     /// Meshes of the instance being meshed, shown once all its chunks are done.
     pending: Vec<(usize, Mesh)>,
+    /// What meshing each live chunk left behind, for meshing it again.
+    caches: BTreeMap<usize, ChunkCache>,
+    /// The box of each instance's field, by growth step.
+    reach: Vec<Bounds>,
     done: usize,
     /// The last instance shown.
     shown: Option<u32>,
@@ -73,6 +77,8 @@ impl ImplicitMesh {
             last_reach,
             live: BTreeMap::new(),
             pending: Vec::new(),
+            caches: BTreeMap::new(),
+            reach,
             done: 0,
             shown: None,
             scratch: Scratch::default(),
@@ -137,8 +143,21 @@ impl GrowingShape for ImplicitMesh {
         let Some(&(instance, chunk)) = self.jobs.get(self.done) else {
             return false;
         };
-        let m = mesh_chunk(&self.tree, &self.grid, chunk, instance, &mut self.scratch);
-        self.pending.push((self.grid.linear(chunk), m));
+        let linear = self.grid.linear(chunk);
+        let mut cache = self.caches.remove(&linear).unwrap_or_default();
+        let m = mesh_chunk(
+            &self.tree,
+            &self.grid,
+            chunk,
+            instance,
+            &mut self.scratch,
+            &mut cache,
+            Some(&self.reach[instance as usize]),
+        );
+        if self.last_reach[linear] != instance {
+            self.caches.insert(linear, cache);
+        }
+        self.pending.push((linear, m));
         self.done += 1;
         let last_of_instance = self.jobs.get(self.done).is_none_or(|j| j.0 != instance);
         if last_of_instance {
@@ -157,6 +176,8 @@ impl GrowingShape for ImplicitMesh {
         }
         self.pending.clear();
         self.live.clear();
+        self.caches.clear();
+        let mut cache = ChunkCache::default();
         for (linear, &reach) in self.last_reach.iter().enumerate() {
             if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
                 let chunk = self.grid.chunk_at(linear);
@@ -166,6 +187,8 @@ impl GrowingShape for ImplicitMesh {
                     chunk,
                     last,
                     &mut self.scratch,
+                    &mut cache,
+                    None,
                 ));
             }
         }

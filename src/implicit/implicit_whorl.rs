@@ -5,8 +5,8 @@
 //!
 //! The paper's equations 1–3, as we read them: R(θ) = R₀ λ^(θ/2π); H(θ) = R(θ) cot β; and, for
 //! circles of consecutive whorls that touch, D(θ) = R(θ)(λ − 1) / ((λ + 1) sin β), which gives
-//! the paper's D = 0.341 R for β = 22.5°, λ = 1.3. The paper's y axis is our z; the shell grows
-//! downwards (H is subtracted) so that it stands apex up, as our other shells do.
+//! the paper's D = 0.341 R for β = 22.5°, λ = 1.3. The paper's y axis is our z: as for all our
+//! shells, the apex points towards −z and growth goes towards +z (the display turns it apex up).
 
 use super::bend::{Bend, MAX_BEND_DEGREES};
 use super::blob_tree::Node;
@@ -75,8 +75,8 @@ impl Helix {
     }
 
     /// P(·, θ) of eq 8: scale by D(θ), then carry the generating surface's u (towards the
-    /// axis), v (along the axis, towards the apex) and w (along the growth) to the point
-    /// (R(θ), −H(θ)) of the half plane at angle θ about the axis.
+    /// axis), v (along the axis, towards the apex: −z) and w (along the growth) to the point
+    /// (R(θ), H(θ)) of the half plane at angle θ about the axis.
     pub fn placement(&self, theta: f64) -> DAffine3 {
         let (s, c) = (libm::sin(theta), libm::cos(theta));
         let d = self.size(theta);
@@ -84,8 +84,8 @@ impl Helix {
         let u = DVec3::new(-c, -s * self.mirror, 0.0);
         let w = self.growth_direction(theta);
         DAffine3 {
-            matrix3: DMat3::from_cols(u * d, DVec3::Z * d, w * d),
-            translation: DVec3::new(r * c, r * s * self.mirror, -self.height(theta)),
+            matrix3: DMat3::from_cols(u * d, DVec3::NEG_Z * d, w * d),
+            translation: DVec3::new(r * c, r * s * self.mirror, self.height(theta)),
         }
     }
 }
@@ -236,7 +236,7 @@ fn check_generator(g: &GeneratorSpec) -> Result<(), GeometryError> {
 /// The generating surface's BlobTree, its parts carrying growth time `time`; `whorl` is the
 /// whorl (from 0 at the apex) it is placed in, for parts present only from a later whorl.
 fn generating_surface(g: &GeneratorSpec, time: f64, whorl: f64) -> Option<Node> {
-    let around = Texture { time, along: None };
+    let around = Texture::around(time);
     let mut parts: Vec<Option<Node>> = Vec::new();
     for p in &g.points {
         parts.push(Some(Node::leaf(
@@ -299,10 +299,7 @@ pub fn combine(parts: Vec<Option<Node>>, n: f64, pairs: &[[u32; 2]]) -> Option<N
 /// surface's w axis; its pattern position is the angle of its middle.
 pub fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> Node {
     let middle = (from + to) * 0.5;
-    let texture = Texture {
-        time,
-        along: Some(libm::atan2(middle.y, middle.x) / TAU),
-    };
+    let texture = Texture::fixed(time, libm::atan2(middle.y, middle.x) / TAU);
     let length = from.distance(to);
     let x = (to - from) / length;
     let z = (DVec3::Z - x * x.z).try_normalize().unwrap_or(DVec3::X);

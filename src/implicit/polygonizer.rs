@@ -20,6 +20,7 @@ use super::blob_tree::Node;
 use super::falloff::ISO;
 use crate::mesh::{Bounds, Mesh, Surface, Vertex};
 use glam::DVec3;
+use std::collections::HashMap;
 
 /// Voxels along each side of a chunk.
 pub const CHUNK: u32 = 16;
@@ -113,6 +114,20 @@ impl Grid {
     }
 }
 
+/// The step of the forward differences that give normals, in voxels.
+const STEP: f64 = 0.25;
+
+/// What meshing a chunk leaves behind for meshing it again after a change confined to a box:
+/// outside that box the field is unchanged, bit for bit, so samples and vertices there are
+/// taken over instead of computed again.
+#[derive(Clone, Debug, Default)]
+pub struct ChunkCache {
+    /// The samples, empty when the chunk was skipped.
+    field: Vec<f64>,
+    /// Each vertex by its edge.
+    vertices: HashMap<usize, Vertex>,
+}
+
 /// Buffers reused from chunk to chunk.
 #[derive(Default)]
 pub struct Scratch {
@@ -165,6 +180,7 @@ fn sample(
     chunk: ChunkIndex,
     step: u32,
     field: &mut Vec<f64>,
+    reuse: Option<(&Bounds, &[f64])>,
 ) -> Option<Node> {
     let region = grid.region(chunk);
     let tree = tree.cull(&region, step)?;
@@ -179,7 +195,11 @@ fn sample(
         for y in 0..SIDE {
             for x in 0..SIDE {
                 let at = [x, y, z].map(|i| i as i64);
-                let f = tree.field(grid.sample(std::array::from_fn(|k| first[k] + at[k])));
+                let p = grid.sample(std::array::from_fn(|k| first[k] + at[k]));
+                let f = match reuse {
+                    Some((changed, old)) if !changed.contains(p) => old[field.len()],
+                    _ => tree.field(p),
+                };
                 inside |= f >= ISO;
                 outside |= f < ISO;
                 field.push(f);
@@ -195,7 +215,7 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
     let mut field = Vec::new();
     let mut inside = Bounds::EMPTY;
     for chunk in grid.chunks_touching(&tree.bounds) {
-        if sample(tree, grid, chunk, step, &mut field).is_none() {
+        if sample(tree, grid, chunk, step, &mut field, None).is_none() {
             continue;
         }
         let first = Grid::first_sample(chunk);
@@ -214,15 +234,22 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
 }
 
 /// The mesh of the surface of `tree` at growth step `step` inside one chunk; empty when the
-/// chunk is proven to hold none of it.
+/// chunk is proven to hold none of it. With `changed`, the tree differs from when `cache` was
+/// left only inside that box; the cache is rewritten either way.
 pub fn mesh_chunk(
     tree: &Node,
     grid: &Grid,
     chunk: ChunkIndex,
     step: u32,
     scratch: &mut Scratch,
+    cache: &mut ChunkCache,
+    changed: Option<&Bounds>,
 ) -> Mesh {
-    let Some(tree) = sample(tree, grid, chunk, step, &mut scratch.field) else {
+    let changed = changed.filter(|_| !cache.field.is_empty());
+    let reuse = changed.map(|b| (b, cache.field.as_slice()));
+    let Some(tree) = sample(tree, grid, chunk, step, &mut scratch.field, reuse) else {
+        cache.field.clear();
+        cache.vertices.clear();
         return Mesh::default();
     };
     let first = Grid::first_sample(chunk);
@@ -246,12 +273,21 @@ pub fn mesh_chunk(
                     continue;
                 }
                 for tet in TETRAHEDRA {
-                    let ins: Vec<usize> = tet.into_iter().filter(|&c| mask & 1 << c != 0).collect();
-                    let outs: Vec<usize> =
-                        tet.into_iter().filter(|&c| mask & 1 << c == 0).collect();
-                    if ins.is_empty() || outs.is_empty() {
+                    let (mut ins, mut outs) = ([0; 4], [0; 4]);
+                    let (mut n_in, mut n_out) = (0, 0);
+                    for c in tet {
+                        if mask & 1 << c != 0 {
+                            ins[n_in] = c;
+                            n_in += 1;
+                        } else {
+                            outs[n_out] = c;
+                            n_out += 1;
+                        }
+                    }
+                    if n_in == 0 || n_out == 0 {
                         continue;
                     }
+                    let (ins, outs) = (&ins[..n_in], &outs[..n_out]);
                     let mut vertex = |a: usize, b: usize| {
                         let (lo, hi) = if a < b { (a, b) } else { (b, a) };
                         let (lo, hi) = (corner(lo), corner(hi));
@@ -267,7 +303,19 @@ pub fn mesh_chunk(
                                 (grid.sample(global(lo)), scratch.field[local(lo)]),
                                 (grid.sample(global(hi)), scratch.field[local(hi)]),
                             ];
-                            mesh.vertices.push(surface_vertex(&tree, grid, ends));
+                            // The vertex looks at the field along its edge and a step beyond.
+                            let reach = Bounds {
+                                min: ends[0].0,
+                                max: ends[1].0,
+                            }
+                            .padded(grid.voxel * STEP);
+                            let kept = changed
+                                .filter(|b| !b.intersects(&reach))
+                                .and_then(|_| cache.vertices.get(&key));
+                            mesh.vertices.push(match kept {
+                                Some(v) => *v,
+                                None => surface_vertex(&tree, grid, ends),
+                            });
                         }
                         scratch.vertex_of[key]
                     };
@@ -285,19 +333,25 @@ pub fn mesh_chunk(
                                 .sum::<DVec3>()
                                 / cs.len() as f64
                         };
-                        face.dot(mean(&outs) - mean(&ins)) < 0.0
+                        face.dot(mean(outs) - mean(ins)) < 0.0
                     };
-                    let triangles: Vec<[u32; 3]> = match (ins.len(), outs.len()) {
-                        (1, _) => vec![[
-                            vertex(ins[0], outs[0]),
-                            vertex(ins[0], outs[1]),
-                            vertex(ins[0], outs[2]),
-                        ]],
-                        (3, _) => vec![[
-                            vertex(outs[0], ins[0]),
-                            vertex(outs[0], ins[1]),
-                            vertex(outs[0], ins[2]),
-                        ]],
+                    let (triangles, count) = match n_in {
+                        1 => {
+                            let t = [
+                                vertex(ins[0], outs[0]),
+                                vertex(ins[0], outs[1]),
+                                vertex(ins[0], outs[2]),
+                            ];
+                            ([t, t], 1)
+                        }
+                        3 => {
+                            let t = [
+                                vertex(outs[0], ins[0]),
+                                vertex(outs[0], ins[1]),
+                                vertex(outs[0], ins[2]),
+                            ];
+                            ([t, t], 1)
+                        }
                         _ => {
                             // Two in, two out: the quad a0–b0, a0–b1, a1–b1, a1–b0.
                             let q = [
@@ -306,10 +360,10 @@ pub fn mesh_chunk(
                                 vertex(ins[1], outs[1]),
                                 vertex(ins[1], outs[0]),
                             ];
-                            vec![[q[0], q[1], q[2]], [q[0], q[2], q[3]]]
+                            ([[q[0], q[1], q[2]], [q[0], q[2], q[3]]], 2)
                         }
                     };
-                    for t in triangles {
+                    for &t in &triangles[..count] {
                         let flip = inward(&mesh, t);
                         mesh.triangle(t, flip);
                     }
@@ -317,21 +371,26 @@ pub fn mesh_chunk(
             }
         }
     }
+    cache.vertices.clear();
     for key in scratch.touched.drain(..) {
+        cache
+            .vertices
+            .insert(key, mesh.vertices[scratch.vertex_of[key] as usize]);
         scratch.vertex_of[key] = u32::MAX;
     }
+    std::mem::swap(&mut cache.field, &mut scratch.field);
     mesh
 }
 
 /// The vertex where the field crosses the iso-value on the grid edge between two samples
 /// (position, field), found by two steps of regula falsi on the edge and kept off its ends
-/// (so that vertices of different edges never coincide), with the field's gradient for
-/// normal and the primitives' blended pattern coordinates.
+/// (so that vertices of different edges never coincide), with the field's gradient (forward
+/// differences) for normal and the primitives' blended pattern coordinates.
 fn surface_vertex(tree: &Node, grid: &Grid, ends: [(DVec3, f64); 2]) -> Vertex {
     let [(pa, fa), (pb, fb)] = ends;
     let (mut lo, mut hi) = ((0.0, fa - ISO), (1.0, fb - ISO));
     let mut t = 0.5;
-    for _ in 0..3 {
+    for _ in 0..2 {
         t = (lo.0 - lo.1 * (hi.0 - lo.0) / (hi.1 - lo.1)).clamp(1e-3, 1.0 - 1e-3);
         let f = tree.field(pa + (pb - pa) * t) - ISO;
         if (f >= 0.0) == (lo.1 >= 0.0) {
@@ -341,11 +400,12 @@ fn surface_vertex(tree: &Node, grid: &Grid, ends: [(DVec3, f64); 2]) -> Vertex {
         }
     }
     let p = pa + (pb - pa) * t;
-    let gradient = tree.gradient(p, grid.voxel * 0.25);
+    let (f, paint) = tree.paint(p);
+    let d = |e: DVec3| tree.field(p + e * grid.voxel * STEP) - f;
+    let gradient = DVec3::new(d(DVec3::X), d(DVec3::Y), d(DVec3::Z));
     let normal = (-gradient)
         .try_normalize()
         .unwrap_or((pb - pa).normalize() * -(fb - fa).signum());
-    let (_, paint) = tree.paint(p);
     let surface = if paint.inner {
         Surface::Inner
     } else {
@@ -357,10 +417,18 @@ fn surface_vertex(tree: &Node, grid: &Grid, ends: [(DVec3, f64); 2]) -> Vertex {
 /// Every chunk of `tree` at growth step `step`, meshed and joined in chunk order: the whole
 /// surface at once.
 pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
-    let mut scratch = Scratch::default();
+    let (mut scratch, mut cache) = (Scratch::default(), ChunkCache::default());
     let mut mesh = Mesh::default();
     for chunk in grid.chunks_touching(&tree.bounds) {
-        mesh.append(&mesh_chunk(tree, grid, chunk, step, &mut scratch));
+        mesh.append(&mesh_chunk(
+            tree,
+            grid,
+            chunk,
+            step,
+            &mut scratch,
+            &mut cache,
+            None,
+        ));
     }
     mesh
 }

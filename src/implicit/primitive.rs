@@ -8,7 +8,7 @@
 
 use super::falloff::{SLOPE, falloff};
 use crate::mesh::Bounds;
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 /// One skeletal primitive.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,6 +61,32 @@ impl Primitive {
                 let rho = (q - h * axis).length() - major;
                 falloff((rho * rho + h * h) / (radius * radius))
             }
+        }
+    }
+
+    /// The primitive moved by a similarity `m` (a map that scales all lengths by `scale`).
+    pub fn moved(&self, m: &DAffine3, scale: f64) -> Primitive {
+        match *self {
+            Primitive::Point { centre, radius } => Primitive::Point {
+                centre: m.transform_point3(centre),
+                radius: radius * scale,
+            },
+            Primitive::Cone { from, to, radii } => Primitive::Cone {
+                from: m.transform_point3(from),
+                to: m.transform_point3(to),
+                radii: radii.map(|r| r * scale),
+            },
+            Primitive::Torus {
+                centre,
+                axis,
+                major,
+                radius,
+            } => Primitive::Torus {
+                centre: m.transform_point3(centre),
+                axis: m.transform_vector3(axis).normalize(),
+                major: major * scale,
+                radius: radius * scale,
+            },
         }
     }
 

@@ -5,7 +5,7 @@
 //! position along the curve is periodic, so it is averaged as an angle (on the unit circle):
 //! two primitives at 0.99 and 0.01 blend to 0, not to 0.5.
 
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 use std::f64::consts::TAU;
 
 /// The pattern coordinates a primitive carries.
@@ -13,19 +13,58 @@ use std::f64::consts::TAU;
 pub struct Texture {
     /// Growth time, in pattern rows.
     pub time: f64,
-    /// Position along the generating curve in [0, 1), or `None` to take it from the angle of
-    /// the point about the primitive's local w axis (the growth direction), measured in the
-    /// generating curve's plane from +u (towards the shell axis, where whorls meet and the
-    /// pattern's seam hides) through +v.
-    pub along: Option<f64>,
+    pub along: Along,
+}
+
+/// Where a primitive's points lie along the generating curve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Along {
+    /// Everywhere at this position, in [0, 1).
+    Fixed(f64),
+    /// At the angle of the point about the w axis of the generating surface, whose coordinates
+    /// the map gives: measured in the generating curve's plane from +u (towards the shell axis,
+    /// where whorls meet and the pattern's seam hides) through +v.
+    Around(DAffine3),
 }
 
 impl Texture {
-    /// The position along the curve at the local point `p`, as a turn in [0, 1).
+    /// Coordinates taken from the angle about the w axis of the primitive's own space.
+    pub fn around(time: f64) -> Self {
+        Self {
+            time,
+            along: Along::Around(DAffine3::IDENTITY),
+        }
+    }
+
+    pub fn fixed(time: f64, along: f64) -> Self {
+        Self {
+            time,
+            along: Along::Fixed(along),
+        }
+    }
+
+    /// The same coordinates for the primitive moved by an affine map whose inverse is
+    /// `inverse`.
+    pub fn moved(self, inverse: DAffine3) -> Self {
+        Self {
+            along: match self.along {
+                Along::Around(m) => Along::Around(m * inverse),
+                fixed => fixed,
+            },
+            ..self
+        }
+    }
+
+    /// The position along the curve at the point `p`, as a turn in [0, 1).
     fn along_at(&self, p: DVec3) -> f64 {
-        self.along
-            .unwrap_or_else(|| libm::atan2(p.y, p.x) / TAU)
-            .rem_euclid(1.0)
+        match self.along {
+            Along::Fixed(x) => x,
+            Along::Around(m) => {
+                let q = m.transform_point3(p);
+                libm::atan2(q.y, q.x) / TAU
+            }
+        }
+        .rem_euclid(1.0)
     }
 }
 
@@ -92,14 +131,8 @@ mod tests {
 
     #[test]
     fn coordinates_blend_by_weight_and_wrap_around_the_curve() {
-        let a = Texture {
-            time: 10.0,
-            along: Some(0.98),
-        };
-        let b = Texture {
-            time: 20.0,
-            along: Some(0.04),
-        };
+        let a = Texture::fixed(10.0, 0.98);
+        let b = Texture::fixed(20.0, 0.04);
         let blend = Paint::of(&a, DVec3::ZERO, 1.0) + Paint::of(&b, DVec3::ZERO, 1.0);
         let [along, time] = blend.coordinates();
         assert!((time - 15.0).abs() < 1e-12);
@@ -110,10 +143,7 @@ mod tests {
 
     #[test]
     fn the_angle_runs_around_the_local_w_axis_from_u() {
-        let t = Texture {
-            time: 0.0,
-            along: None,
-        };
+        let t = Texture::around(0.0);
         let at = |p: DVec3| Paint::of(&t, p, 1.0).coordinates()[0];
         assert!(at(DVec3::new(1.0, 0.0, 5.0)).abs() < 1e-12);
         assert!((at(DVec3::new(0.0, 1.0, 0.0)) - 0.25).abs() < 1e-12);

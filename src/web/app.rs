@@ -10,14 +10,13 @@ use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{OnChange, Panel};
 use super::viewer::{Viewer, now};
 use crate::export::{self, MeshFormat};
+use crate::generator::GROWTH_BUDGET_MS;
 use crate::spec::ShellSpec;
 use crate::spec::link::{self, Decoded, Problem};
 use crate::species::Preset;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
 
-/// Milliseconds of a frame that the viewer's growth may take, so no speed freezes the tab.
-const GROWTH_BUDGET_MS: f64 = 12.0;
 /// Milliseconds of a frame for drawing the gallery's pictures.
 const PICTURE_BUDGET_MS: f64 = 10.0;
 /// Quiet time after an edit before the address bar is updated.

@@ -25,6 +25,9 @@ pub struct Growing {
 }
 
 /// Bounds of a range of a mesh's vertices.
+/// How far a slow frame rate may stretch the growth budget of a frame.
+const MAX_BUDGET_FACTOR: f64 = 4.0;
+
 fn include(bounds: &mut Bounds, mesh: &Mesh, range: std::ops::Range<usize>) {
     for v in &mesh.vertices[range] {
         bounds.include(glam::DVec3::from(v.position.map(f64::from)));
@@ -203,8 +206,9 @@ impl Viewer {
         }
     }
 
-    /// One animation frame: grow at the current speed within `budget_ms`, draw if anything
-    /// changed. Returns whether a frame was drawn.
+    /// One animation frame: grow at the current speed within `budget_ms` (or, when frames come
+    /// slowly, within half the time since the last frame, at most [`MAX_BUDGET_FACTOR`] times
+    /// `budget_ms`), draw if anything changed. Returns whether a frame was drawn.
     pub fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
@@ -219,7 +223,11 @@ impl Viewer {
             let rows = self.carry.floor();
             self.carry -= rows;
             if rows > 0.0 {
-                self.grow(rows as usize, budget_ms);
+                // Where drawing is slow (a software renderer), growth may take up to half of
+                // the time between frames, so that it keeps pace with the drawing.
+                let interval = now() - self.last_frame;
+                let budget = (interval * 0.5).clamp(budget_ms, budget_ms * MAX_BUDGET_FACTOR);
+                self.grow(rows as usize, budget);
             }
         }
         let time = now();

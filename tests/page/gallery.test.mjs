@@ -36,7 +36,7 @@ test('the gallery lists every preset in its group, each with a picture of its sh
       assert.match(names, new RegExp(species));
     }
     const groups = await page.$$eval('.group h2', (hs) => hs.map((h) => h.textContent));
-    assert.deepEqual(groups, ['Shell shapes', 'Pigmentation patterns', 'Cellular automaton', "Kawaguchi's GROWTH"]);
+    assert.deepEqual(groups, ['Shell shapes', 'Pigmentation patterns', 'Cellular automaton', "Kawaguchi's GROWTH", 'Implicit surfaces']);
     await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 240_000 });
     const pictures = await page.$$eval('a.card img', (imgs) => imgs.map((i) => i.src));
     assert.ok(pictures.every((src) => src.startsWith('data:image/png')), 'every card has its picture');

@@ -1,0 +1,96 @@
+// Implicit surfaces in the page (Galbraith, Prusinkiewicz & Wyvill): a BlobTree whorl grows on
+// screen on both backends, every implicit preset grows on WebGPU too (WebGL2:
+// presets.test.mjs), wasm meshes the same triangles, bit for bit, as the command line, and a
+// link with bad implicit numbers gets a message, and the preset's values or the cap.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdirSync, readdirSync } from 'node:fs';
+import { growPreset, open, session, waitForState, measureCanvas } from './browser.mjs';
+
+const SHOTS = new URL('./screenshots/implicit/', import.meta.url).pathname;
+mkdirSync(SHOTS, { recursive: true });
+const IMPLICIT_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
+  .filter((f) => f.startsWith('implicit-') && f.endsWith('.json'))
+  .map((f) => f.slice(0, -5));
+const CLI = new URL('../../target/release/seashells', import.meta.url).pathname;
+
+for (const backend of ['WebGL2', 'WebGPU']) {
+  test(`an implicit whorl grows section by section on ${backend}`, async () => {
+    const { browser, base, close } = await session(backend);
+    try {
+      const { page, errors } = await open(browser, `${base}#v=1&preset=implicit-whorl&growth.speed=3&form.resolution=64`);
+      const ready = await waitForState(page, ['growing', 'grown', 'error']);
+      assert.equal(ready.state, 'growing', `the page reported ${ready.state}`);
+      assert.equal(ready.backend, backend);
+      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 250, null, { timeout: 120_000 });
+      await page.keyboard.press('Space');
+      await page.waitForFunction(() => document.body.dataset.playing === 'false');
+      await page.waitForTimeout(1000);
+      const early = await measureCanvas(page, `${SHOTS}whorl-${backend}-half.png`);
+      await page.keyboard.press('Space');
+      await waitForState(page, ['grown']);
+      await page.waitForTimeout(1000);
+      const late = await measureCanvas(page, `${SHOTS}whorl-${backend}-grown.png`);
+      assert.ok(early.share > 0.02, `part-way the whorl covers only ${early.share}`);
+      assert.ok(late.shades > 30, `only ${late.shades} shades: not a lit surface`);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+test('every implicit preset grows on WebGPU', async () => {
+  const { browser, base, close } = await session('WebGPU');
+  try {
+    assert.ok(IMPLICIT_PRESETS.length >= 3, IMPLICIT_PRESETS.join(' '));
+    for (const id of IMPLICIT_PRESETS) {
+      const state = await growPreset(browser, base, id, `${SHOTS}${id}-WebGPU.png`);
+      assert.equal(state.backend, 'WebGPU');
+    }
+  } finally {
+    await close();
+  }
+});
+
+test('an implicit shell grows in wasm into the very mesh the command line writes', async () => {
+  const { browser, base, close } = await session();
+  try {
+    for (const link of ['v=1&preset=implicit-whorl', 'v=1&preset=implicit-canal-whorl&form.resolution=64']) {
+      const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
+      const grown = await waitForState(page, ['grown']);
+      const out = execFileSync(CLI, ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
+      assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}$`, 'm'),
+        `${link}: wasm ${grown.mesh} ${grown.meshHash}, native ${out}`);
+      assert.deepEqual(errors, []);
+      await page.close();
+    }
+  } finally {
+    await close();
+  }
+});
+
+test('bad implicit numbers in a link get a message naming the key, and the shell grows all the same', async () => {
+  const { browser, base, close } = await session();
+  try {
+    for (const [link, key] of [
+      ['form.generator.pairs=0,3', 'form.generator.pairs'],
+      ['form.generator.points=0,0,0,-1', 'form.generator.points'],
+      ['form.resolution=5000', 'form.resolution'],
+    ]) {
+      const { page, errors } = await open(browser, `${base}#v=1&preset=implicit-canal-whorl&growth.speed=200&form.whorls=5&${link}`);
+      // The resolution is capped at 384, which grows slowly in software rendering: growing
+      // (never an error, never a frozen tab) is what counts here.
+      const state = await waitForState(page, ['growing', 'grown', 'error']);
+      assert.notEqual(state.state, 'error', link);
+      await page.waitForFunction(() => Number(document.body.dataset.rows) > 5);
+      assert.ok(await page.isVisible('#message'), `${link}: no message`);
+      assert.match(await page.textContent('#message'), new RegExp(key.replaceAll('.', '\\.')));
+      assert.deepEqual(errors, []);
+      await page.close();
+    }
+  } finally {
+    await close();
+  }
+});
