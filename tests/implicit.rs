@@ -17,7 +17,7 @@ use seashells_core::mesh::Mesh;
 use std::f64::consts::PI;
 
 fn plain() -> Texture {
-    Texture::fixed(0.0, 0.0)
+    Texture::around(0.0)
 }
 
 fn ball(centre: DVec3, radius: f64) -> Node {

@@ -296,26 +296,25 @@ pub fn combine(parts: Vec<Option<Node>>, n: f64, pairs: &[[u32; 2]]) -> Option<N
 }
 
 /// A tapered segment from `from` to `to`, bent by `bend` degrees about the generating
-/// surface's w axis; its pattern position is the angle of its middle.
+/// surface's w axis; its pattern position is the angle, about w, of each point as it lies
+/// before the bend.
 pub fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> Node {
-    let middle = (from + to) * 0.5;
-    let texture = Texture::fixed(time, libm::atan2(middle.y, middle.x) / TAU);
     let length = from.distance(to);
     let x = (to - from) / length;
     let z = (DVec3::Z - x * x.z).try_normalize().unwrap_or(DVec3::X);
     let y = z.cross(x);
+    let frame = DAffine3 {
+        matrix3: DMat3::from_cols(x, y, z),
+        translation: from,
+    };
     let cone = Node::leaf(
         Primitive::Cone {
             from: DVec3::ZERO,
             to: DVec3::X * length,
             radii: radii.map(support_of),
         },
-        texture,
+        Texture::around(time).moved(frame),
     );
-    let frame = DAffine3 {
-        matrix3: DMat3::from_cols(x, y, z),
-        translation: from,
-    };
     let bend = Bend {
         angle: bend.to_radians(),
         length,

@@ -8,63 +8,40 @@
 use glam::{DAffine3, DVec3};
 use std::f64::consts::TAU;
 
-/// The pattern coordinates a primitive carries.
+/// The pattern coordinates a primitive carries: its growth time, and, for its position along
+/// the generating curve, the angle of a point about the w axis of the generating surface,
+/// measured in the generating curve's plane from +u (towards the shell axis, where whorls meet
+/// and the pattern's seam hides) through +v.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Texture {
     /// Growth time, in pattern rows.
     pub time: f64,
-    pub along: Along,
-}
-
-/// Where a primitive's points lie along the generating curve.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Along {
-    /// Everywhere at this position, in [0, 1).
-    Fixed(f64),
-    /// At the angle of the point about the w axis of the generating surface, whose coordinates
-    /// the map gives: measured in the generating curve's plane from +u (towards the shell axis,
-    /// where whorls meet and the pattern's seam hides) through +v.
-    Around(DAffine3),
+    /// Carries the primitive's coordinates to the generating surface's.
+    frame: DAffine3,
 }
 
 impl Texture {
-    /// Coordinates taken from the angle about the w axis of the primitive's own space.
+    /// Coordinates of a primitive in the generating surface's own space.
     pub fn around(time: f64) -> Self {
         Self {
             time,
-            along: Along::Around(DAffine3::IDENTITY),
+            frame: DAffine3::IDENTITY,
         }
     }
 
-    pub fn fixed(time: f64, along: f64) -> Self {
-        Self {
-            time,
-            along: Along::Fixed(along),
-        }
-    }
-
-    /// The same coordinates for the primitive moved by an affine map whose inverse is
-    /// `inverse`.
+    /// The same coordinates for a primitive expressed in new coordinates, `inverse` carrying
+    /// the new coordinates to the old (the inverse of the map that moved it).
     pub fn moved(self, inverse: DAffine3) -> Self {
         Self {
-            along: match self.along {
-                Along::Around(m) => Along::Around(m * inverse),
-                fixed => fixed,
-            },
+            frame: self.frame * inverse,
             ..self
         }
     }
 
     /// The position along the curve at the point `p`, as a turn in [0, 1).
     fn along_at(&self, p: DVec3) -> f64 {
-        match self.along {
-            Along::Fixed(x) => x,
-            Along::Around(m) => {
-                let q = m.transform_point3(p);
-                libm::atan2(q.y, q.x) / TAU
-            }
-        }
-        .rem_euclid(1.0)
+        let q = self.frame.transform_point3(p);
+        (libm::atan2(q.y, q.x) / TAU).rem_euclid(1.0)
     }
 }
 
@@ -131,9 +108,10 @@ mod tests {
 
     #[test]
     fn coordinates_blend_by_weight_and_wrap_around_the_curve() {
-        let a = Texture::fixed(10.0, 0.98);
-        let b = Texture::fixed(20.0, 0.04);
-        let blend = Paint::of(&a, DVec3::ZERO, 1.0) + Paint::of(&b, DVec3::ZERO, 1.0);
+        let (a, b) = (Texture::around(10.0), Texture::around(20.0));
+        let at = |turn: f64| DVec3::new((turn * TAU).cos(), (turn * TAU).sin(), 0.3);
+        let (pa, pb) = (at(0.98), at(0.04));
+        let blend = Paint::of(&a, pa, 1.0) + Paint::of(&b, pb, 1.0);
         let [along, time] = blend.coordinates();
         assert!((time - 15.0).abs() < 1e-12);
         assert!((along - 0.01).abs() < 1e-9, "{along}");

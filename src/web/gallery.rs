@@ -5,6 +5,7 @@
 
 use super::dom::{append, attr, create, typed};
 use super::viewer::Viewer;
+use crate::spec::form::Form;
 use crate::spec::link;
 use crate::species::{Preset, presets};
 use std::collections::VecDeque;
@@ -52,6 +53,10 @@ pub struct Pictures {
     current: Option<&'static Preset>,
 }
 
+/// Voxels along the longest side of an implicit shell in a gallery picture: enough for its
+/// size, and quick to grow.
+const PICTURE_RESOLUTION: u32 = 64;
+
 impl Pictures {
     pub fn new(viewer: Viewer) -> Self {
         Self {
@@ -69,7 +74,11 @@ impl Pictures {
                 let Some(next) = self.queue.pop_front() else {
                     return;
                 };
-                if self.viewer.load(next, &next.spec).is_err() {
+                let mut spec = next.spec.clone();
+                if let Form::Implicit(implicit) = &mut spec.form {
+                    implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
+                }
+                if self.viewer.load(next, &spec).is_err() {
                     return;
                 }
                 self.current = Some(next);
