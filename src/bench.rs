@@ -3,7 +3,7 @@
 //! implicit-surface modeller (field evaluations, whole polygonizations, frames of growth). The
 //! same code runs natively and in wasm; only the clock is given from outside.
 
-use crate::generator::{GROWTH_BUDGET_MS, Generator};
+use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::implicit::falloff::ISO;
 use crate::implicit::implicit_whorl::whorl;
 use crate::implicit::polygonizer::{Grid, polygonize};
@@ -165,8 +165,7 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
         let (mut worst, mut frames) = (0.0f64, 0);
         while !generator.is_done() {
             let start = now();
-            let deadline = start + GROWTH_BUDGET_MS;
-            generator.advance_while(rows, || now() < deadline);
+            generator.advance_while(rows, within(now, GROWTH_BUDGET_MS));
             worst = worst.max(now() - start);
             frames += 1;
         }

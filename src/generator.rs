@@ -13,6 +13,20 @@ use std::ops::Range;
 /// Milliseconds of a frame that the page's growth may take, so no speed freezes the tab.
 pub const GROWTH_BUDGET_MS: f64 = 12.0;
 
+/// A `keep_going` for [`Generator::advance_while`] that spends at most `budget_ms` from now
+/// on the clock `now` (milliseconds): it stops before a step that would end past the budget if
+/// it took as long as the longest step so far.
+pub fn within(now: impl Fn() -> f64, budget_ms: f64) -> impl FnMut() -> bool {
+    let start = now();
+    let (deadline, mut last, mut longest) = (start + budget_ms, start, 0.0f64);
+    move || {
+        let t = now();
+        longest = longest.max(t - last);
+        last = t;
+        t + longest < deadline
+    }
+}
+
 /// What one call to [`Generator::advance`] added.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Advance {

@@ -295,10 +295,11 @@ impl Node {
         }
     }
 
-    /// The field's gradient at `p`, by central differences of step `h`.
-    pub fn gradient(&self, p: DVec3, h: f64) -> DVec3 {
-        let d = |e: DVec3| self.field(p + e * h) - self.field(p - e * h);
-        DVec3::new(d(DVec3::X), d(DVec3::Y), d(DVec3::Z)) / (2.0 * h)
+    /// The field's gradient at `p`, where the field is `f`, by forward differences of step `h`
+    /// (three evaluations): the surface normal is its opposite.
+    pub fn gradient(&self, p: DVec3, f: f64, h: f64) -> DVec3 {
+        let d = |e: DVec3| self.field(p + e * h) - f;
+        DVec3::new(d(DVec3::X), d(DVec3::Y), d(DVec3::Z)) / h
     }
 
     /// The part of the tree that matters inside `region` at growth step `step`: subtrees born
@@ -367,20 +368,6 @@ impl Node {
                 let child = child.cull(&local, step)?;
                 Some(Node::new(Op::Transform(*affine, Box::new(child))))
             }
-        }
-    }
-
-    /// Leaves in the tree.
-    pub fn primitives(&self) -> usize {
-        match &self.op {
-            Op::Leaf(..) => 1,
-            Op::Blend(c)
-            | Op::Union(c)
-            | Op::Intersection(c)
-            | Op::Superelliptic(_, c)
-            | Op::Controlled(c, _) => c.iter().map(Node::primitives).sum(),
-            Op::Difference(a, b) => a.primitives() + b.primitives(),
-            Op::Warp(_, c) | Op::Transform(_, c) => c.primitives(),
         }
     }
 }

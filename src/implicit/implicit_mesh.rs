@@ -85,11 +85,6 @@ impl ImplicitMesh {
         })
     }
 
-    /// The BlobTree of the fully grown shell.
-    pub fn tree(&self) -> &Node {
-        &self.tree
-    }
-
     /// Moves the meshes of `instance` into view: final chunks to `mesh`, the rest into the
     /// live set, which `edge` then shows.
     fn publish(&mut self, instance: u32, mesh: &mut Mesh, edge: &mut Mesh) {
@@ -119,11 +114,12 @@ impl GrowingShape for ImplicitMesh {
     }
 
     fn capacity(&self) -> Capacity {
-        // An estimate: the renderer's buffers grow when a shell needs more.
+        // An estimate (a whorl at 96 voxels has about 10 r² vertices when grown): the
+        // renderer's buffers and the meshes grow when a shell needs more.
         let r = self.resolution as usize;
         Capacity {
-            vertices: 8 * r * r,
-            indices: 48 * r * r,
+            vertices: 4 * r * r,
+            indices: 24 * r * r,
         }
     }
 

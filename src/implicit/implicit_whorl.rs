@@ -267,7 +267,7 @@ fn generating_surface(g: &GeneratorSpec, time: f64, whorl: f64) -> Option<Node> 
 
 /// Parts combined by eq 4 with exponent `n`, or by controlled blending of `pairs` (eq 6);
 /// parts that are `None` (not yet grown) drop out with their pairs.
-pub fn combine(parts: Vec<Option<Node>>, n: f64, pairs: &[[u32; 2]]) -> Option<Node> {
+fn combine(parts: Vec<Option<Node>>, n: f64, pairs: &[[u32; 2]]) -> Option<Node> {
     let mut index = vec![usize::MAX; parts.len()];
     let mut kept = Vec::new();
     for (i, part) in parts.into_iter().enumerate() {
@@ -298,7 +298,7 @@ pub fn combine(parts: Vec<Option<Node>>, n: f64, pairs: &[[u32; 2]]) -> Option<N
 /// A tapered segment from `from` to `to`, bent by `bend` degrees about the generating
 /// surface's w axis; its pattern position is the angle, about w, of each point as it lies
 /// before the bend.
-pub fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> Node {
+fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> Node {
     let length = from.distance(to);
     let x = (to - from) / length;
     let z = (DVec3::Z - x * x.z).try_normalize().unwrap_or(DVec3::X);

@@ -401,8 +401,7 @@ fn surface_vertex(tree: &Node, grid: &Grid, ends: [(DVec3, f64); 2]) -> Vertex {
     }
     let p = pa + (pb - pa) * t;
     let (f, paint) = tree.paint(p);
-    let d = |e: DVec3| tree.field(p + e * grid.voxel * STEP) - f;
-    let gradient = DVec3::new(d(DVec3::X), d(DVec3::Y), d(DVec3::Z));
+    let gradient = tree.gradient(p, f, grid.voxel * STEP);
     let normal = (-gradient)
         .try_normalize()
         .unwrap_or((pb - pa).normalize() * -(fb - fa).signum());

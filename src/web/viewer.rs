@@ -5,7 +5,7 @@
 
 use super::planar::Planar;
 use crate::camera::OrbitCamera;
-use crate::generator::{Advance, Generator};
+use crate::generator::{Advance, Generator, within};
 use crate::gestures::{Pointers, wheel_zoom};
 use crate::mesh::{Bounds, Mesh};
 use crate::render::{Renderer, ShellLook};
@@ -186,8 +186,7 @@ impl Viewer {
     /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
         let Some(g) = &mut self.growing else { return };
-        let deadline = now() + budget_ms;
-        let advance = g.generator.advance_while(rows, || now() < deadline);
+        let advance = g.generator.advance_while(rows, within(now, budget_ms));
         self.upload(&advance);
         self.dirty = true;
     }
