@@ -101,7 +101,8 @@ test('a branching form grows in wasm into the mesh the command line writes', asy
       const grown = await waitForState(page, ['grown']);
       const out = execFileSync(new URL('../../target/release/seashells', import.meta.url).pathname,
         ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
-      assert.match(out, new RegExp(`: ${grown.mesh}$`, 'm'), `${link}: wasm ${grown.mesh}, native ${out}`);
+      // Counts only: std's trigonometry may round positions differently in wasm.
+      assert.match(out, new RegExp(`: ${grown.mesh}, hash `), `${link}: wasm ${grown.mesh}, native ${out}`);
       assert.deepEqual(errors, []);
       await page.close();
     }
