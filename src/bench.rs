@@ -113,6 +113,7 @@ pub fn run(now: &dyn Fn() -> f64) -> Vec<Figure> {
         });
     }
     figures.extend(implicit(now, "implicit-whorl"));
+    figures.extend(implicit(now, "murex-cabritii"));
     figures
 }
 
@@ -126,7 +127,12 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
     let Form::Implicit(spec) = &preset.spec.form else {
         return Vec::new();
     };
-    let Ok(shell) = whorl(spec, preset.spec.growth.rows as usize) else {
+    let Ok(shell) = whorl(
+        spec,
+        &preset.spec.pattern,
+        preset.spec.seed,
+        preset.spec.growth.rows as usize,
+    ) else {
         return Vec::new();
     };
     let (tree, last) = (&shell.tree, shell.instances - 1);

@@ -49,6 +49,11 @@ pub fn shape_for(spec: &ShellSpec, rows: usize) -> Result<Box<dyn GrowingShape>,
         Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),
         Form::Chambers(chambers) => Ok(Box::new(ChamberMesh::new(chambers, rows)?)),
         Form::Branching(branching) => Ok(Box::new(BranchingMesh::new(branching, spec.seed, rows)?)),
-        Form::Implicit(implicit) => Ok(Box::new(ImplicitMesh::new(implicit, rows)?)),
+        Form::Implicit(implicit) => Ok(Box::new(ImplicitMesh::new(
+            implicit,
+            &spec.pattern,
+            spec.seed,
+            rows,
+        )?)),
     }
 }

@@ -61,7 +61,7 @@ pub enum Op {
     Union(Vec<Node>),
     /// ∩ : the smallest field.
     Intersection(Vec<Node>),
-    /// A − B : min(f_A, 2·iso − f_B), never below zero.
+    /// A − B : min(f_A, 2·iso − f_B), never below zero (eq 14's carving).
     Difference(Box<Node>, Box<Node>),
     /// Eq 4: (Σ fᵢⁿ)^(1/n), from the blend (n = 1) towards the union (eq 5, n → ∞).
     Superelliptic(f64, Vec<Node>),
@@ -237,7 +237,7 @@ impl Node {
             Op::Blend(c) => c.iter().map(|n| n.field(p)).sum(),
             Op::Union(c) => fold(c, |n| n.field(p), f64::max, 0.0),
             Op::Intersection(c) => fold(c, |n| n.field(p), f64::min, f64::INFINITY),
-            Op::Difference(a, b) => a.field(p).min(2.0 * ISO - b.field(p)).max(0.0),
+            Op::Difference(a, b) => difference(a.field(p), b.field(p)),
             Op::Superelliptic(n, c) => with_fields(c, p, |fields| superelliptic(*n, fields)),
             Op::Controlled(c, pairs) => with_fields(c, p, |fields| controlled(fields, pairs).0),
             Op::Warp(bend, child) => child.field(bend.inverse(p)),
@@ -272,11 +272,11 @@ impl Node {
             Op::Difference(a, b) => {
                 let (fa, pa) = a.paint(p);
                 let (fb, pb) = b.paint(p);
-                let carved = 2.0 * ISO - fb;
-                if fa <= carved {
-                    (fa.max(0.0), pa)
+                let f = difference(fa, fb);
+                if fb == 0.0 || f == fa {
+                    (f, pa)
                 } else {
-                    (carved.max(0.0), pb.carved())
+                    (f, pb.carved())
                 }
             }
             Op::Controlled(c, pairs) => {
@@ -447,6 +447,16 @@ fn strongest(
     parts
         .reduce(|a, b| if better(b.0, a.0) { b } else { a })
         .unwrap_or_default()
+}
+
+/// A − B: min(f_A, 2·iso − f_B), never below zero; exactly f_A where B has no field, so
+/// that a tree culled to a region without B gives the same samples as the whole tree.
+fn difference(fa: f64, fb: f64) -> f64 {
+    if fb == 0.0 {
+        fa
+    } else {
+        fa.min(2.0 * ISO - fb).max(0.0)
+    }
 }
 
 /// Eq 4, computed as m·(Σ (fᵢ/m)ⁿ)^(1/n) with m the largest field, so that n = 400 neither

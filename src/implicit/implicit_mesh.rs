@@ -11,6 +11,7 @@ use super::polygonizer::{ChunkCache, ChunkIndex, Grid, Scratch, mesh_chunk, surf
 use crate::growing_shape::{GeometryError, GrowingShape};
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::implicit::ImplicitSpec;
+use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
 use std::collections::BTreeMap;
 
@@ -43,13 +44,19 @@ pub struct ImplicitMesh {
 }
 
 impl ImplicitMesh {
-    pub fn new(spec: &ImplicitSpec, rows: usize) -> Result<Self, GeometryError> {
+    /// The shell of `spec`; spines placed by the pattern read `pattern` seeded by `seed`.
+    pub fn new(
+        spec: &ImplicitSpec,
+        pattern: &PatternSpec,
+        seed: u64,
+        rows: usize,
+    ) -> Result<Self, GeometryError> {
         let Whorl {
             tree,
             instances,
             reach,
             front,
-        } = whorl(spec, rows)?;
+        } = whorl(spec, pattern, seed, rows)?;
         let grid = Grid::new(&tree.bounds, spec.resolution);
         let mut last_reach = vec![u32::MAX; grid.chunk_count()];
         let mut jobs = Vec::new();

@@ -10,13 +10,20 @@
 
 use super::bend::{Bend, MAX_BEND_DEGREES};
 use super::blob_tree::Node;
+use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
+use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
 use super::falloff::support_of;
 use super::primitive::Primitive;
 use super::texture_blend::Texture;
+use super::varix::{
+    edge_distance, outward, pattern_spines, pigment_at, standing, table_spines, varix,
+};
 use crate::growing_shape::GeometryError;
 use crate::mesh::Bounds;
+use crate::pattern::noise::Noise;
 use crate::spec::form::Handedness;
-use crate::spec::implicit::{Blending, GeneratorSpec, HelixSpec, ImplicitSpec};
+use crate::spec::implicit::{Blending, GeneratorSpec, HelixSpec, ImplicitSpec, Placement};
+use crate::spec::pattern::PatternSpec;
 use glam::{DAffine3, DMat3, DVec3};
 use std::f64::consts::TAU;
 
@@ -160,35 +167,193 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), GeometryError> {
             ),
         ));
     }
-    check_generator(&spec.generator)
+    check_generator(&spec.generator, "form.generator")?;
+    check_varices(spec)?;
+    check_canal_spines(spec)?;
+    let o = &spec.opening;
+    if o.ahead > MAX_AHEAD {
+        return Err(problem(
+            "form.opening.ahead",
+            format!(
+                "the hollow may reach at most {MAX_AHEAD} generating surfaces ahead, not {}",
+                o.ahead
+            ),
+        ));
+    }
+    if parts(&o.inside) > 0 {
+        check_generator(&o.inside, "form.opening.inside")?;
+    }
+    Ok(())
 }
 
-fn check_generator(g: &GeneratorSpec) -> Result<(), GeometryError> {
-    let parts = g.points.len() + g.cones.len() + g.tori.len();
+/// Most spines in the table of a varix's spines, and in the canal spines' table.
+pub const MAX_SPINES: usize = 1024;
+/// Most sets of bumps between two varices.
+pub const MAX_BUMP_SETS: u32 = 16;
+/// Most generating surfaces the hollow reaches ahead of the growing edge.
+pub const MAX_AHEAD: u32 = 16;
+
+fn parts(g: &GeneratorSpec) -> usize {
+    g.points.len() + g.cones.len() + g.tori.len()
+}
+
+fn positive(key: &str, x: f64, what: &str) -> Result<(), GeometryError> {
+    if x > 0.0 && x.is_finite() {
+        Ok(())
+    } else {
+        Err(problem(key, format!("{what} must be positive, not {x}")))
+    }
+}
+
+fn check_varices(spec: &ImplicitSpec) -> Result<(), GeometryError> {
+    let v = &spec.varices;
+    if v.spines.len() > MAX_SPINES {
+        return Err(problem(
+            "form.varices.spines",
+            format!(
+                "{} spines are more than the cap of {MAX_SPINES}",
+                v.spines.len()
+            ),
+        ));
+    }
+    for &[whorl, angle, sigma] in &v.spines {
+        if !(whorl >= 1.0 && whorl <= f64::from(spec.whorls) && whorl.fract() == 0.0) {
+            return Err(problem(
+                "form.varices.spines",
+                format!(
+                    "a spine's whorl must be a whole number from 1 to {}, not {whorl}",
+                    spec.whorls
+                ),
+            ));
+        }
+        if !(-180.0..=180.0).contains(&angle) {
+            return Err(problem(
+                "form.varices.spines",
+                format!("a spine's angle must lie from −180° to 180°, not {angle}°"),
+            ));
+        }
+        if !(sigma > 0.0 && sigma <= 10.0) {
+            return Err(problem(
+                "form.varices.spines",
+                format!("a spine's relative size σ must lie in (0, 10], not {sigma}"),
+            ));
+        }
+    }
+    positive("form.varices.length", v.length, "the spines' length")?;
+    positive("form.varices.radius", v.radius, "the spines' radius")?;
+    positive("form.varices.tip", v.tip, "the spines' tip radius")?;
+    positive("form.varices.bump_size", v.bump_size, "the bumps' size")?;
+    if !(v.bend.abs() <= MAX_BEND_DEGREES) {
+        return Err(problem(
+            "form.varices.bend",
+            format!(
+                "a spine may curve by at most {MAX_BEND_DEGREES}°, not {}°",
+                v.bend
+            ),
+        ));
+    }
+    if !(v.ridge >= 0.0 && v.ridge.is_finite()) {
+        return Err(problem(
+            "form.varices.ridge",
+            format!(
+                "the ridge's radius must be 0 (none) or positive, not {}",
+                v.ridge
+            ),
+        ));
+    }
+    if v.bump_sets > MAX_BUMP_SETS {
+        return Err(problem(
+            "form.varices.bump_sets",
+            format!(
+                "at most {MAX_BUMP_SETS} sets of bumps fit between two varices, not {}",
+                v.bump_sets
+            ),
+        ));
+    }
+    if !(0.0..=1.0).contains(&v.bump_spread) {
+        return Err(problem(
+            "form.varices.bump_spread",
+            format!(
+                "the bumps' spread must lie from 0 to 1, not {}",
+                v.bump_spread
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn check_canal_spines(spec: &ImplicitSpec) -> Result<(), GeometryError> {
+    let c = &spec.canal_spines;
+    if c.spines.len() > MAX_SPINES {
+        return Err(problem(
+            "form.canal_spines.spines",
+            format!(
+                "{} canal spines are more than the cap of {MAX_SPINES}",
+                c.spines.len()
+            ),
+        ));
+    }
+    for &[varix, sigma] in &c.spines {
+        if ![1.0, 2.0, 3.0].contains(&varix) {
+            return Err(problem(
+                "form.canal_spines.spines",
+                format!(
+                    "a canal spine stands below varix 1, 2 or 3 (the last three, 3 at the opening), not {varix}"
+                ),
+            ));
+        }
+        if !(sigma > 0.0 && sigma <= 10.0) {
+            return Err(problem(
+                "form.canal_spines.spines",
+                format!("a canal spine's relative size σ must lie in (0, 10], not {sigma}"),
+            ));
+        }
+    }
+    if !c.spines.is_empty() && spec.generator.cones.is_empty() {
+        return Err(problem(
+            "form.canal_spines.spines",
+            "canal spines stand on the canal: the generating surface needs a cone for it".into(),
+        ));
+    }
+    if !c.spines.is_empty() && spec.varices.spines.is_empty() {
+        return Err(problem(
+            "form.canal_spines.spines",
+            "canal spines stand below varices: give the varices spines".into(),
+        ));
+    }
+    positive(
+        "form.canal_spines.length",
+        c.length,
+        "the canal spines' length",
+    )?;
+    positive(
+        "form.canal_spines.radius",
+        c.radius,
+        "the canal spines' radius",
+    )
+}
+
+/// Checks the generating surface `g`, whose keys start with `prefix`.
+fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), GeometryError> {
+    let parts = parts(g);
+    let key = |k: &str| format!("{prefix}.{k}");
     if parts == 0 {
         return Err(problem(
-            "form.generator.points",
+            &key("points"),
             "the generating surface needs at least one primitive".into(),
         ));
     }
-    let positive = |key: &str, x: f64, what: &str| {
-        if x > 0.0 && x.is_finite() {
-            Ok(())
-        } else {
-            Err(problem(key, format!("{what} must be positive, not {x}")))
-        }
-    };
     for p in &g.points {
-        positive("form.generator.points", p[3], "a point's radius")?;
+        positive(&key("points"), p[3], "a point's radius")?;
     }
     for c in &g.cones {
-        positive("form.generator.cones", c[6], "a cone's radius")?;
-        positive("form.generator.cones", c[7], "a cone's radius")?;
+        positive(&key("cones"), c[6], "a cone's radius")?;
+        positive(&key("cones"), c[7], "a cone's radius")?;
         let length = DVec3::new(c[3] - c[0], c[4] - c[1], c[5] - c[2]).length();
-        positive("form.generator.cones", length, "a cone's length")?;
+        positive(&key("cones"), length, "a cone's length")?;
         if c[8].abs() > MAX_BEND_DEGREES {
             return Err(problem(
-                "form.generator.cones",
+                &key("cones"),
                 format!(
                     "a cone may bend by at most {MAX_BEND_DEGREES}°, not {}°",
                     c[8]
@@ -197,7 +362,7 @@ fn check_generator(g: &GeneratorSpec) -> Result<(), GeometryError> {
         }
         if support_of(c[6].max(c[7])) * c[8].abs().to_radians() >= length {
             return Err(problem(
-                "form.generator.cones",
+                &key("cones"),
                 format!(
                     "a cone of length {length} bent by {}° is too thick for its bend: its field would fold over the centre of curvature",
                     c[8]
@@ -206,12 +371,12 @@ fn check_generator(g: &GeneratorSpec) -> Result<(), GeometryError> {
         }
     }
     for t in &g.tori {
-        positive("form.generator.tori", t[3], "a torus's major radius")?;
-        positive("form.generator.tori", t[4], "a torus's radius")?;
+        positive(&key("tori"), t[3], "a torus's major radius")?;
+        positive(&key("tori"), t[4], "a torus's radius")?;
     }
     if !(g.exponent >= 1.0 && g.exponent <= 400.0) {
         return Err(problem(
-            "form.generator.exponent",
+            &key("exponent"),
             format!(
                 "the blending exponent n must lie from 1 to 400, not {}",
                 g.exponent
@@ -224,7 +389,7 @@ fn check_generator(g: &GeneratorSpec) -> Result<(), GeometryError> {
         .find(|[i, k]| i == k || *i as usize >= parts || *k as usize >= parts)
     {
         return Err(problem(
-            "form.generator.pairs",
+            &key("pairs"),
             format!(
                 "the pair ({i}, {k}) must name two different parts of the {parts} the generating surface has (numbered from 0: points, then cones, then tori)"
             ),
@@ -295,10 +460,9 @@ fn combine(parts: Vec<Option<Node>>, n: f64, pairs: &[[u32; 2]]) -> Option<Node>
     })
 }
 
-/// A tapered segment from `from` to `to`, bent by `bend` degrees about the generating
-/// surface's w axis; its pattern position is the angle, about w, of each point as it lies
-/// before the bend.
-fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> Node {
+/// The frame of a generator cone from `from` to `to`, with its length: x along the cone, z
+/// as close to the generating surface's w as x allows (the bend turns x towards y, about z).
+pub fn cone_frame(from: DVec3, to: DVec3) -> (DAffine3, f64) {
     let length = from.distance(to);
     let x = (to - from) / length;
     let z = (DVec3::Z - x * x.z).try_normalize().unwrap_or(DVec3::X);
@@ -307,6 +471,14 @@ fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> N
         matrix3: DMat3::from_cols(x, y, z),
         translation: from,
     };
+    (frame, length)
+}
+
+/// A tapered segment from `from` to `to`, bent by `bend` degrees about the generating
+/// surface's w axis; its pattern position is the angle, about w, of each point as it lies
+/// before the bend.
+fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> Node {
+    let (frame, length) = cone_frame(from, to);
     let cone = Node::leaf(
         Primitive::Cone {
             from: DVec3::ZERO,
@@ -322,42 +494,327 @@ fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> N
     Node::transform(frame, Node::warp(bend, cone))
 }
 
-/// The shell of `spec` as one BlobTree, instance k carrying growth time k·(rows − 1)/(K − 1).
-pub fn whorl(spec: &ImplicitSpec, rows: usize) -> Result<Whorl, GeometryError> {
-    check(spec)?;
-    let helix = Helix::new(&spec.spiral);
-    let per_whorl = spec.sections * spec.surfaces;
-    let instances = spec.whorls * per_whorl;
-    let step = spec.whorl_angle.to_radians() / f64::from(per_whorl);
-    let time_step = (rows.max(2) - 1) as f64 / f64::from((instances - 1).max(1));
-    let mut sections = Vec::new();
-    let mut reach = Vec::new();
-    for section in 0..spec.whorls * spec.sections {
-        let members: Vec<Node> = (0..spec.surfaces)
-            .filter_map(|j| {
-                let k = section * spec.surfaces + j;
-                let theta = f64::from(k) * step;
-                let whorl = f64::from(k) / f64::from(per_whorl);
-                let surface = generating_surface(&spec.generator, f64::from(k) * time_step, whorl);
-                let placed = surface.map(|s| Node::transform(helix.placement(theta), s).born_at(k));
-                reach.push(placed.as_ref().map_or(Bounds::EMPTY, |n| n.bounds));
-                placed
-            })
-            .collect();
-        sections.push(Node::blend(members));
-    }
-    let tree = match spec.blending {
-        Blending::All => Node::blend(sections),
-        Blending::Neighbours => {
-            let pairs = (1..sections.len()).map(|i| [i - 1, i]).collect();
-            Node::controlled(sections, pairs)
+/// The instances of the generating surface along the helico-spiral: one per growth step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Instances {
+    pub helix: Helix,
+    /// Radians between consecutive instances.
+    step: f64,
+    /// Instances per whorl.
+    per_whorl: u32,
+    /// Pattern rows between consecutive instances.
+    time_step: f64,
+    /// Instances in the whole shell.
+    pub count: u32,
+}
+
+impl Instances {
+    pub fn new(spec: &ImplicitSpec, rows: usize) -> Self {
+        let per_whorl = spec.sections * spec.surfaces;
+        let count = spec.whorls * per_whorl;
+        Self {
+            helix: Helix::new(&spec.spiral),
+            step: spec.whorl_angle.to_radians() / f64::from(per_whorl),
+            per_whorl,
+            time_step: (rows.max(2) - 1) as f64 / f64::from((count - 1).max(1)),
+            count,
         }
+    }
+
+    /// P(·, θ) of eq 8 for instance `k`, fractions allowed.
+    pub fn placement(&self, k: f64) -> DAffine3 {
+        self.helix.placement(k * self.step)
+    }
+
+    /// D(θ) at instance `k`.
+    pub fn size(&self, k: f64) -> f64 {
+        self.helix.size(k * self.step)
+    }
+
+    /// The whorl instance `k` lies in, counted from 0 at the apex, with its fraction.
+    pub fn whorl(&self, k: f64) -> f64 {
+        k / f64::from(self.per_whorl)
+    }
+
+    /// The pattern row instance `k` grows on.
+    pub fn time(&self, k: f64) -> f64 {
+        k * self.time_step
+    }
+}
+
+/// A BlobTree being gathered, with the box of what each growth step adds.
+struct Gathered {
+    reach: Vec<Bounds>,
+}
+
+impl Gathered {
+    /// `node`, placed at instance `at` and born at growth step `birth`.
+    fn placed(&mut self, at: DAffine3, node: Node, birth: u32) -> Node {
+        let node = Node::transform(at, node).born_at(birth);
+        if let Some(b) = self.reach.get_mut(birth as usize) {
+            *b = b.union(&node.bounds);
+        }
+        node
+    }
+}
+
+/// The generating surface `g` placed at instances `range` and blended into sections of
+/// `surfaces` instances (eq 9), instance k joining section k / `surfaces` and born at growth
+/// step k − `ahead` (or 0); `extra` adds parts to a section, blended into it with exponent
+/// [`BUMP_EXPONENT`]. Empty sections are left out.
+fn sections(
+    g: &GeneratorSpec,
+    instances: &Instances,
+    range: std::ops::Range<u32>,
+    surfaces: u32,
+    ahead: u32,
+    gathered: &mut Gathered,
+) -> Vec<(u32, Node)> {
+    let mut out: Vec<(u32, Vec<Node>)> = Vec::new();
+    for k in range {
+        let kf = f64::from(k);
+        let Some(surface) = generating_surface(g, instances.time(kf), instances.whorl(kf)) else {
+            continue;
+        };
+        let placed = gathered.placed(instances.placement(kf), surface, k.saturating_sub(ahead));
+        let section = k / surfaces;
+        match out.last_mut() {
+            Some((s, members)) if *s == section => members.push(placed),
+            _ => out.push((section, vec![placed])),
+        }
+    }
+    out.into_iter()
+        .map(|(s, members)| (s, Node::blend(members)))
+        .collect()
+}
+
+/// Sections combined as the spec's blending says, with parts each paired with the sections
+/// it names (eq 10: a part blends only with those).
+fn joined(blending: Blending, sections: Vec<Node>, parts: Vec<(Node, Vec<usize>)>) -> Node {
+    match blending {
+        Blending::All => Node::blend(
+            sections
+                .into_iter()
+                .chain(parts.into_iter().map(|p| p.0))
+                .collect(),
+        ),
+        Blending::Neighbours => {
+            let n = sections.len();
+            let mut pairs: Vec<[usize; 2]> = (1..n).map(|i| [i - 1, i]).collect();
+            let mut children = sections;
+            for (part, with) in parts {
+                let index = children.len();
+                pairs.extend(with.into_iter().filter(|&s| s < n).map(|s| [s, index]));
+                children.push(part);
+            }
+            Node::controlled(children, pairs)
+        }
+    }
+}
+
+/// Voxels a spine, a ridge or a canal spine is at least thick (as a radius), so that the
+/// polygonizer shows it joined to the shell; bumps thinner than that are left out.
+pub const THINNEST_VOXELS: f64 = 1.0;
+
+/// The shell of `spec` as one BlobTree (eqs 9–15), instance k carrying growth time
+/// k·(rows − 1)/(K − 1). Spines placed by the pattern read the pigment of `pattern` (seeded
+/// by `seed`) on the row each varix forms on; bumps and canal spines take their random
+/// sizes and bends from `seed`.
+pub fn whorl(
+    spec: &ImplicitSpec,
+    pattern: &PatternSpec,
+    seed: u64,
+    rows: usize,
+) -> Result<Whorl, GeometryError> {
+    check(spec)?;
+    let instances = Instances::new(spec, rows);
+    let count = instances.count;
+    let mut gathered = Gathered {
+        reach: vec![Bounds::EMPTY; count as usize],
     };
-    let end = f64::from(instances - 1) * step;
+    let mut sections = sections(
+        &spec.generator,
+        &instances,
+        0..count,
+        spec.surfaces,
+        0,
+        &mut gathered,
+    );
+    let body = joined(
+        spec.blending,
+        sections.iter().map(|s| s.1.clone()).collect(),
+        Vec::new(),
+    );
+    let v = &spec.varices;
+    let sigma_max = v.spines.iter().map(|s| s[2]).fold(0.0, f64::max);
+    // The voxel the grown shell will be polygonized with: its extent, with the longest spine.
+    let last = f64::from(count - 1);
+    let reach = (v.length * sigma_max).max(spec.canal_spines.length) * instances.size(last);
+    let voxel = (body.bounds.max - body.bounds.min + 2.0 * reach).max_element()
+        / f64::from(spec.resolution);
+    let thinnest = |k: f64| THINNEST_VOXELS * voxel / instances.size(k);
+    // A varix closes every section (at its last instance), when the spec has spines.
+    let varix_rows: Vec<u32> = if v.spines.is_empty() {
+        Vec::new()
+    } else {
+        (1..=spec.whorls * spec.sections)
+            .map(|i| i * spec.surfaces - 1)
+            .collect()
+    };
+    let pigment = match v.placement {
+        Placement::Pattern if !v.spines.is_empty() => pigment_at(
+            pattern,
+            seed,
+            &varix_rows
+                .iter()
+                .map(|&k| instances.time(f64::from(k)).round() as usize)
+                .collect::<Vec<_>>(),
+        )?,
+        _ => Vec::new(),
+    };
+    let mut parts = Vec::new();
+    let mut bump_noise = Noise::new(seed, BUMP_STREAM);
+    let mut canal_noise = Noise::new(seed, CANAL_STREAM);
+    let section_of = |k: u32| sections.iter().position(|s| s.0 == k / spec.surfaces);
+    let mut extra: Vec<Vec<Node>> = vec![Vec::new(); sections.len()];
+    for (i, &k) in varix_rows.iter().enumerate() {
+        let kf = f64::from(k);
+        let whorl_number = k / (spec.sections * spec.surfaces) + 1;
+        let spines = match v.placement {
+            Placement::Table => table_spines(&v.spines, whorl_number),
+            Placement::Pattern => pattern_spines(&v.spines, whorl_number, &pigment[i]),
+        };
+        let at = instances.placement(kf);
+        let on_surface = standing(&body, &at, &spines);
+        let time = instances.time(kf);
+        let mut members: Vec<Node> = varix(v, &on_surface, sigma_max, thinnest(kf), time)
+            .into_iter()
+            .collect();
+        let from_opening = varix_rows.len() - i;
+        if from_opening <= CANAL_VARICES {
+            let varix_number = (CANAL_VARICES + 1 - from_opening) as f64;
+            let sizes: Vec<f64> = spec
+                .canal_spines
+                .spines
+                .iter()
+                .filter(|s| s[0].round() == varix_number)
+                .map(|s| s[1])
+                .collect();
+            if let Some(cone) = spec
+                .generator
+                .cones
+                .iter()
+                .find(|c| instances.whorl(kf) >= c[9])
+            {
+                members.extend(canal_row(
+                    cone,
+                    &sizes,
+                    [spec.canal_spines.length, spec.canal_spines.radius],
+                    thinnest(kf),
+                    time,
+                    &mut canal_noise,
+                ));
+            }
+        }
+        if !members.is_empty() {
+            let part = gathered.placed(at, Node::blend(members), k);
+            let with = [section_of(k), section_of(k + 1)]
+                .into_iter()
+                .flatten()
+                .collect();
+            parts.push((part, with));
+        }
+        // The bumps of the section this varix closes, in sets between it and the one before.
+        let Some(section) = section_of(k) else {
+            continue;
+        };
+        for j in 1..=v.bump_sets {
+            let kb =
+                kf - f64::from(spec.surfaces) * (1.0 - f64::from(j) / f64::from(v.bump_sets + 1));
+            if kb < 0.0 {
+                continue;
+            }
+            let at = instances.placement(kb);
+            let bumps = bump_set(
+                &standing(&body, &at, &spines),
+                v.bump_size,
+                v.bump_spread,
+                thinnest(kb),
+                instances.time(kb),
+                &mut bump_noise,
+            );
+            for bump in bumps {
+                extra[section].push(gathered.placed(at, bump, kb.round() as u32));
+            }
+        }
+    }
+    for ((_, node), bumps) in sections.iter_mut().zip(extra) {
+        if !bumps.is_empty() {
+            let whorl = std::mem::replace(node, Node::blend(Vec::new()));
+            *node =
+                Node::superelliptic(BUMP_EXPONENT, std::iter::once(whorl).chain(bumps).collect());
+        }
+    }
+    let shell = joined(
+        spec.blending,
+        sections.into_iter().map(|s| s.1).collect(),
+        parts,
+    );
+    let tree = match inside(spec, &instances, voxel, &mut gathered) {
+        Some(inside) => Node::difference(shell, inside),
+        None => shell,
+    };
     Ok(Whorl {
         tree,
+        instances: count,
+        reach: gathered.reach,
+        front: instances.helix.growth_direction(last * instances.step),
+    })
+}
+
+/// Voxels the wall is at least thick where the shell is hollow: closer to the apex, where the
+/// whorl is too small for a wall the polygonizer can show, the shell is solid.
+pub const WALL_VOXELS: f64 = 3.0;
+
+/// The hollow inside of eq 14: the inside generating surface placed like the shell's, from
+/// the first instance whose wall is [`WALL_VOXELS`] thick to `ahead` instances beyond the
+/// growing edge, each born `ahead` growth steps early, so that the aperture is open at every
+/// stage. The paper subtracts the previous whorl from this inside whorl so that the cut
+/// leaves it intact, and adds an inside wall back (eq 15) because its opening is not round.
+/// Our inside surface is concentric with the body's and smaller, so it never reaches the
+/// previous whorl and its aperture is already round: neither step is needed.
+fn inside(
+    spec: &ImplicitSpec,
+    instances: &Instances,
+    voxel: f64,
+    gathered: &mut Gathered,
+) -> Option<Node> {
+    let o = &spec.opening;
+    let hollow = generating_surface(&o.inside, 0.0, f64::INFINITY)?;
+    let solid = generating_surface(&spec.generator, 0.0, f64::INFINITY)?;
+    let wall = (0..8)
+        .map(|i| {
+            let d = outward(45.0 * f64::from(i));
+            let at = DAffine3::IDENTITY;
+            let outer = edge_distance(&solid, &at, d).unwrap_or(0.0);
+            outer - edge_distance(&hollow, &at, d).unwrap_or(0.0)
+        })
+        .fold(f64::INFINITY, f64::min);
+    let first = (0..instances.count)
+        .find(|&k| wall * instances.size(f64::from(k)) >= WALL_VOXELS * voxel)?;
+    let parts = sections(
+        &o.inside,
         instances,
-        reach,
-        front: helix.growth_direction(end),
+        first..instances.count + o.ahead,
+        spec.surfaces,
+        o.ahead,
+        gathered,
+    );
+    (!parts.is_empty()).then(|| {
+        joined(
+            spec.blending,
+            parts.into_iter().map(|s| s.1).collect(),
+            Vec::new(),
+        )
     })
 }

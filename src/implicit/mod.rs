@@ -5,9 +5,12 @@
 
 pub mod bend;
 pub mod blob_tree;
+pub mod bumps;
+pub mod canal_spines;
 pub mod falloff;
 pub mod implicit_mesh;
 pub mod implicit_whorl;
 pub mod polygonizer;
 pub mod primitive;
 pub mod texture_blend;
+pub mod varix;

@@ -33,6 +33,15 @@ impl Noise {
             .collect()
     }
 
+    /// Normal with mean `mean` and standard deviation `deviation` (Box–Muller, through `libm`
+    /// so that every platform gives the same bits).
+    pub fn normal(&mut self, mean: f64, deviation: f64) -> f64 {
+        let u = 1.0 - self.unit();
+        let v = self.unit();
+        let z = libm::sqrt(-2.0 * libm::log(u)) * libm::cos(std::f64::consts::TAU * v);
+        mean + deviation * z
+    }
+
     /// Uniform integer in [0, n).
     pub fn below(&mut self, n: usize) -> usize {
         ((self.unit() * n as f64) as usize).min(n.saturating_sub(1))
@@ -61,5 +70,16 @@ mod tests {
         assert_eq!(a, b);
         assert_ne!(a[0], c);
         assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
+    }
+
+    #[test]
+    fn normal_values_have_the_asked_mean_and_deviation() {
+        let mut n = Noise::new(7, 3);
+        let x: Vec<f64> = (0..20_000).map(|_| n.normal(1.0, 0.2)).collect();
+        let mean = x.iter().sum::<f64>() / x.len() as f64;
+        let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / x.len() as f64;
+        assert!((mean - 1.0).abs() < 0.01, "{mean}");
+        assert!((var.sqrt() - 0.2).abs() < 0.01, "{}", var.sqrt());
+        assert!(x.iter().all(|v| v.is_finite()));
     }
 }

@@ -26,6 +26,120 @@ pub struct ImplicitSpec {
     pub generator: GeneratorSpec,
     /// Voxels along the longest side of the grown shell when it is polygonized.
     pub resolution: u32,
+    /// The varices at the end of every section, with their spines and the bumps between them
+    /// (§3.2); none when no spines are given.
+    #[serde(default)]
+    pub varices: VaricesSpec,
+    /// The axial rows of spines on the canal below the last three varices (§3.2, table 2).
+    #[serde(default)]
+    pub canal_spines: CanalSpinesSpec,
+    /// The hollow inside carved out of the shell (§3.3, eq 14); none when its generating
+    /// surface is empty.
+    #[serde(default)]
+    pub opening: OpeningSpec,
+}
+
+/// Where a varix's spines stand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Placement {
+    /// As the table of spines says (table 1 of the paper).
+    Table,
+    /// At the peaks of the pigment pattern on the growing edge when the varix forms, within
+    /// the table's range of angles for that whorl: the paper's proposed extension.
+    Pattern,
+}
+
+/// Varices (eqs 11–13): a row of curving spines in the plane of the generating curve, joined
+/// near the surface by a ridge, placed at the end of every section; and bumps between them.
+/// Lengths are in units of the generating surface's size D(θ).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct VaricesSpec {
+    pub placement: Placement,
+    /// (whorl from 1 at the apex, angle in degrees, relative size σ): the spines of every varix
+    /// of that whorl (table 1). The angle turns in the plane of the generating curve from the
+    /// horizontal, pointing away from the axis, towards the apex (positive) or the canal.
+    pub spines: Vec<[f64; 3]>,
+    /// Length of a spine of σ = 1.
+    pub length: f64,
+    /// Radius at the base of a spine of σ = 1.
+    pub radius: f64,
+    /// Radius at the tip of the largest spine; smaller spines have wider tips (eq 12).
+    pub tip: f64,
+    /// Degrees each spine curves, towards the growth direction.
+    pub bend: f64,
+    /// Radius of the ridge that joins the spines near the surface (the paper's two tori).
+    pub ridge: f64,
+    /// Sets of bumps (beaded riblets) between two varices.
+    pub bump_sets: u32,
+    /// Radius s of a bump.
+    pub bump_size: f64,
+    /// Standard deviation of the normal random factors that scale each bump.
+    pub bump_spread: f64,
+}
+
+impl Default for VaricesSpec {
+    /// No spines, so no varices.
+    fn default() -> Self {
+        Self {
+            placement: Placement::Table,
+            spines: Vec::new(),
+            length: 1.0,
+            radius: 0.08,
+            tip: 0.03,
+            bend: 30.0,
+            ridge: 0.07,
+            bump_sets: 0,
+            bump_size: 0.1,
+            bump_spread: 0.2,
+        }
+    }
+}
+
+/// The axial rows of spines on the canal, one below each of the last three varices (table 2).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CanalSpinesSpec {
+    /// (varix 1–3, from the earliest to the one at the opening; relative size σ), in order
+    /// down the canal.
+    pub spines: Vec<[f64; 2]>,
+    /// Length of a spine of σ = 1, in units of D(θ).
+    pub length: f64,
+    /// Radius at the base of a spine of σ = 1.
+    pub radius: f64,
+}
+
+impl Default for CanalSpinesSpec {
+    /// No canal spines.
+    fn default() -> Self {
+        Self {
+            spines: Vec::new(),
+            length: 0.8,
+            radius: 0.07,
+        }
+    }
+}
+
+/// The opening (eq 14): a whorl of a smaller generating surface subtracted from the shell.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OpeningSpec {
+    /// The generating surface of the hollow inside; empty for a solid shell.
+    pub inside: GeneratorSpec,
+    /// Generating surfaces the hollow reaches beyond the growing edge, so the aperture stays
+    /// open at every stage.
+    pub ahead: u32,
+}
+
+impl Default for OpeningSpec {
+    /// A solid shell.
+    fn default() -> Self {
+        Self {
+            inside: GeneratorSpec::default(),
+            ahead: 3,
+        }
+    }
 }
 
 /// The helico-spiral of eqs 1–3.
