@@ -56,6 +56,7 @@ impl ImplicitMesh {
             instances,
             reach,
             front,
+            ..
         } = whorl(spec, pattern, seed, rows)?;
         let grid = Grid::new(&tree.bounds, spec.resolution);
         let mut last_reach = vec![u32::MAX; grid.chunk_count()];

@@ -16,7 +16,7 @@ use super::falloff::support_of;
 use super::primitive::Primitive;
 use super::texture_blend::Texture;
 use super::varix::{
-    edge_distance, outward, pattern_spines, pigment_at, standing, table_spines, varix,
+    Standing, edge_distance, outward, pattern_spines, pigment_at, standing, table_spines, varix,
 };
 use crate::growing_shape::GeometryError;
 use crate::mesh::Bounds;
@@ -106,6 +106,19 @@ pub struct Whorl {
     pub reach: Vec<Bounds>,
     /// The direction the opening faces.
     pub front: DVec3,
+    /// What stands on each varix, from the apex to the opening.
+    pub varices: Vec<Varix>,
+}
+
+/// One varix as built: where it stands and its spines.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Varix {
+    /// The instance (growth step) it closes.
+    pub instance: u32,
+    /// Its spines, each where its angle meets the surface.
+    pub spines: Vec<Standing>,
+    /// Spines in the canal row below it.
+    pub canal_spines: usize,
 }
 
 fn problem(key: &str, message: String) -> GeometryError {
@@ -573,7 +586,9 @@ fn sections(
     let mut out: Vec<(u32, Vec<Node>)> = Vec::new();
     for k in range {
         let kf = f64::from(k);
-        let Some(surface) = generating_surface(g, instances.time(kf), instances.whorl(kf)) else {
+        // The hollow ahead of the edge shows the edge's pattern on its inside.
+        let time = instances.time(kf.min(f64::from(instances.count - 1)));
+        let Some(surface) = generating_surface(g, time, instances.whorl(kf)) else {
             continue;
         };
         let placed = gathered.placed(instances.placement(kf), surface, k.saturating_sub(ahead));
@@ -673,6 +688,7 @@ pub fn whorl(
         _ => Vec::new(),
     };
     let mut parts = Vec::new();
+    let mut varices = Vec::new();
     let mut bump_noise = Noise::new(seed, BUMP_STREAM);
     let mut canal_noise = Noise::new(seed, CANAL_STREAM);
     let section_of = |k: u32| sections.iter().position(|s| s.0 == k / spec.surfaces);
@@ -691,6 +707,7 @@ pub fn whorl(
             .into_iter()
             .collect();
         let from_opening = varix_rows.len() - i;
+        let mut canal = Vec::new();
         if from_opening <= CANAL_VARICES {
             let varix_number = (CANAL_VARICES + 1 - from_opening) as f64;
             let sizes: Vec<f64> = spec
@@ -706,16 +723,23 @@ pub fn whorl(
                 .iter()
                 .find(|c| instances.whorl(kf) >= c[9])
             {
-                members.extend(canal_row(
+                canal = canal_row(
                     cone,
                     &sizes,
                     [spec.canal_spines.length, spec.canal_spines.radius],
                     thinnest(kf),
                     time,
                     &mut canal_noise,
-                ));
+                );
             }
         }
+        let canal_spines = canal.len();
+        members.extend(canal);
+        varices.push(Varix {
+            instance: k,
+            canal_spines,
+            spines: on_surface,
+        });
         if !members.is_empty() {
             let part = gathered.placed(at, Node::blend(members), k);
             let with = [section_of(k), section_of(k + 1)]
@@ -769,6 +793,7 @@ pub fn whorl(
         instances: count,
         reach: gathered.reach,
         front: instances.helix.growth_direction(last * instances.step),
+        varices,
     })
 }
 

@@ -6,7 +6,7 @@ use super::ShellSpec;
 use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
 use super::form::{CurveSpec, Form, SweepSpec};
-use super::implicit::ImplicitSpec;
+use super::implicit::{ImplicitSpec, Placement};
 use super::link::Problem;
 use super::pattern::{Automaton, Model, PatternSpec};
 use crate::growing_shape::GeometryError;
@@ -78,6 +78,19 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
         _ => unreachable!("same_kind gives a fallback of the form's kind"),
     }
     repair_pattern(spec, fallback, &mut problems);
+    if let Form::Implicit(i) = &mut spec.form {
+        let varices = &mut i.varices;
+        if varices.placement == Placement::Pattern
+            && !varices.spines.is_empty()
+            && matches!(spec.pattern.model, Model::None)
+        {
+            varices.placement = Placement::Table;
+            problems.push(Problem::new(
+                "form.varices.placement",
+                "spines placed by the pattern need a pattern model; used the table",
+            ));
+        }
+    }
     problems
 }
 
@@ -152,7 +165,8 @@ fn repair_branching(
 }
 
 /// An implicit shell must build: a spiral that grows, positive sizes, bends its cones can
-/// take, parts that its controlled blending names, a resolution within the cap.
+/// take, parts that its controlled blending names, a resolution within the cap, spines and
+/// an opening within theirs.
 fn repair_implicit(i: &mut ImplicitSpec, f: &ImplicitSpec, problems: &mut Vec<Problem>) {
     if let Err(e) = implicit_whorl::check(i) {
         let key = e.0.split_once(": ").map_or("form", |(k, _)| k);
@@ -162,6 +176,15 @@ fn repair_implicit(i: &mut ImplicitSpec, f: &ImplicitSpec, problems: &mut Vec<Pr
         } else if key.starts_with("form.generator") {
             i.generator = f.generator.clone();
             "the preset's generating surface".into()
+        } else if key.starts_with("form.varices") {
+            i.varices = f.varices.clone();
+            "the preset's varices".into()
+        } else if key.starts_with("form.canal_spines") {
+            i.canal_spines = f.canal_spines.clone();
+            "the preset's canal spines".into()
+        } else if key.starts_with("form.opening") {
+            i.opening = f.opening.clone();
+            "the preset's opening".into()
         } else {
             "the preset's form".into()
         };
