@@ -84,7 +84,7 @@ fn closed(mesh: &Mesh, edge: &Mesh, what: &str) {
 #[test]
 fn every_implicit_preset_grows_closed_and_ends_as_it_would_all_at_once() {
     let presets = implicit_presets();
-    assert_eq!(presets.len(), 3);
+    assert_eq!(presets.len(), 6);
     for preset in presets {
         let mut spec = preset.spec.clone();
         implicit(&mut spec).resolution = 48;

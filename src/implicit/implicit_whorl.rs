@@ -12,7 +12,7 @@ use super::bend::{Bend, MAX_BEND_DEGREES};
 use super::blob_tree::Node;
 use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
 use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
-use super::falloff::support_of;
+use super::falloff::{ISO, support_of};
 use super::primitive::Primitive;
 use super::texture_blend::Texture;
 use super::varix::{
@@ -571,27 +571,28 @@ impl Gathered {
     }
 }
 
-/// The generating surface `g` placed at instances `range` and blended into sections of
-/// `surfaces` instances (eq 9), instance k joining section k / `surfaces` and born at growth
-/// step k − `ahead` (or 0); `extra` adds parts to a section, blended into it with exponent
-/// [`BUMP_EXPONENT`]. Empty sections are left out.
+/// The generating surface `g` placed at the instances `scaled` gives (k, with the factor the
+/// generating surface is scaled by about its centre) and blended into sections of `surfaces`
+/// instances (eq 9), instance k joining section k / `surfaces` and born at growth step
+/// k − `ahead` (or 0). Empty sections are left out.
 fn sections(
     g: &GeneratorSpec,
     instances: &Instances,
-    range: std::ops::Range<u32>,
+    scaled: impl Iterator<Item = (u32, f64)>,
     surfaces: u32,
     ahead: u32,
     gathered: &mut Gathered,
 ) -> Vec<(u32, Node)> {
     let mut out: Vec<(u32, Vec<Node>)> = Vec::new();
-    for k in range {
+    for (k, scale) in scaled {
         let kf = f64::from(k);
         // The hollow ahead of the edge shows the edge's pattern on its inside.
         let time = instances.time(kf.min(f64::from(instances.count - 1)));
         let Some(surface) = generating_surface(g, time, instances.whorl(kf)) else {
             continue;
         };
-        let placed = gathered.placed(instances.placement(kf), surface, k.saturating_sub(ahead));
+        let at = instances.placement(kf) * DAffine3::from_scale(DVec3::splat(scale));
+        let placed = gathered.placed(at, surface, k.saturating_sub(ahead));
         let section = k / surfaces;
         match out.last_mut() {
             Some((s, members)) if *s == section => members.push(placed),
@@ -650,7 +651,7 @@ pub fn whorl(
     let mut sections = sections(
         &spec.generator,
         &instances,
-        0..count,
+        (0..count).map(|k| (k, 1.0)),
         spec.surfaces,
         0,
         &mut gathered,
@@ -797,17 +798,22 @@ pub fn whorl(
     })
 }
 
-/// Voxels the wall is at least thick where the shell is hollow: closer to the apex, where the
-/// whorl is too small for a wall the polygonizer can show, the shell is solid.
-pub const WALL_VOXELS: f64 = 3.0;
+/// Voxels the wall is at least thick where the shell is hollow.
+pub const WALL_VOXELS: f64 = 2.5;
+/// The smallest the hollow's generating surface is shrunk to for the wall to keep
+/// [`WALL_VOXELS`]; closer to the apex, where it would have to shrink further or where the
+/// shrunk instances no longer join into one tube, the shell is solid.
+const SMALLEST_HOLLOW: f64 = 0.3;
 
-/// The hollow inside of eq 14: the inside generating surface placed like the shell's, from
-/// the first instance whose wall is [`WALL_VOXELS`] thick to `ahead` instances beyond the
-/// growing edge, each born `ahead` growth steps early, so that the aperture is open at every
-/// stage. The paper subtracts the previous whorl from this inside whorl so that the cut
-/// leaves it intact, and adds an inside wall back (eq 15) because its opening is not round.
-/// Our inside surface is concentric with the body's and smaller, so it never reaches the
-/// previous whorl and its aperture is already round: neither step is needed.
+/// The hollow inside of eq 14: the inside generating surface placed like the shell's, up to
+/// `ahead` instances beyond the growing edge, each born `ahead` growth steps early, so that
+/// the aperture is open at every stage. Where the wall it leaves would be thinner than
+/// [`WALL_VOXELS`] at the spec's resolution, it is shrunk about its centre until the wall is
+/// that thick, as spines are thickened, so that a coarse grid shows a whole wall, not a
+/// perforated one. The paper subtracts the previous whorl from this inside whorl so that the
+/// cut leaves it intact, and adds an inside wall back (eq 15) because its opening is not
+/// round. Our inside surface is concentric with the body's and smaller, so it never reaches
+/// the previous whorl and its aperture is already round: neither step is needed.
 fn inside(
     spec: &ImplicitSpec,
     instances: &Instances,
@@ -817,20 +823,41 @@ fn inside(
     let o = &spec.opening;
     let hollow = generating_surface(&o.inside, 0.0, f64::INFINITY)?;
     let solid = generating_surface(&spec.generator, 0.0, f64::INFINITY)?;
-    let wall = (0..8)
-        .map(|i| {
+    // (outer, hollow) extents in units of D, in eight directions of the generating curve.
+    let extents: Vec<[f64; 2]> = (0..8)
+        .filter_map(|i| {
             let d = outward(45.0 * f64::from(i));
             let at = DAffine3::IDENTITY;
-            let outer = edge_distance(&solid, &at, d).unwrap_or(0.0);
-            outer - edge_distance(&hollow, &at, d).unwrap_or(0.0)
+            Some([
+                edge_distance(&solid, &at, d)?,
+                edge_distance(&hollow, &at, d)?,
+            ])
         })
-        .fold(f64::INFINITY, f64::min);
-    let first = (0..instances.count)
-        .find(|&k| wall * instances.size(f64::from(k)) >= WALL_VOXELS * voxel)?;
+        .collect();
+    let scale = |k: u32| {
+        let wall = WALL_VOXELS * voxel / instances.size(f64::from(k));
+        extents
+            .iter()
+            .map(|[outer, hollow]| (outer - wall) / hollow)
+            .fold(1.0, f64::min)
+    };
+    // The hollow starts where consecutive instances join into one tube: where the fields of
+    // two neighbours sum past the iso-value halfway between their centres.
+    let placed = |k: u32| {
+        let at = instances.placement(f64::from(k)) * DAffine3::from_scale(DVec3::splat(scale(k)));
+        (at, Node::transform(at, hollow.clone()))
+    };
+    let joins = |k: u32| {
+        let ((a, na), (b, nb)) = (placed(k), placed(k + 1));
+        let middle = (a.translation + b.translation) * 0.5;
+        na.field(middle) + nb.field(middle) >= ISO
+    };
+    let end = instances.count + o.ahead;
+    let first = (0..end).find(|&k| scale(k) >= SMALLEST_HOLLOW && joins(k))?;
     let parts = sections(
         &o.inside,
         instances,
-        first..instances.count + o.ahead,
+        (first..end).map(|k| (k, scale(k))),
         spec.surfaces,
         o.ahead,
         gathered,

@@ -132,6 +132,8 @@ pub struct ChunkCache {
 #[derive(Default)]
 pub struct Scratch {
     field: Vec<f64>,
+    /// Whether each sample counts as inside.
+    inside: Vec<bool>,
     /// Vertex of each (sample, direction) edge met so far in this chunk, or `u32::MAX`.
     vertex_of: Vec<u32>,
     touched: Vec<usize>,
@@ -183,7 +185,8 @@ fn sample(
     reuse: Option<(&Bounds, &[f64])>,
 ) -> Option<Node> {
     let region = grid.region(chunk);
-    let tree = tree.cull(&region, step)?;
+    // One voxel more on every side: the neighbours that decide a pinhole (see `class`).
+    let tree = tree.cull(&region.padded(grid.voxel), step)?;
     let reach = (region.max - region.min).length() * 0.5;
     if (tree.field(region.center()) - ISO).abs() > tree.lipschitz * reach {
         return None;
@@ -207,6 +210,46 @@ fn sample(
         }
     }
     (inside && outside).then_some(tree)
+}
+
+/// Classifies a chunk's samples (`field`, the chunk's first sample at global index `first`)
+/// as inside or outside the surface, into `inside`. A sample alone in its class among its
+/// fourteen neighbours along the edges of the Kuhn triangulation is a pinhole: a field that
+/// dips below the iso-value (or rises above it) at one sample only, in the crease where two
+/// parts meet as in a union, would give a closed bubble far smaller than a voxel, a separate
+/// piece of the mesh. Such a sample takes its neighbours' class. Neighbours beyond the chunk
+/// are evaluated from `tree` (culled a voxel wider than the chunk), so both chunks sharing a
+/// sample decide alike.
+fn class(tree: &Node, grid: &Grid, first: [i64; 3], field: &[f64], inside: &mut Vec<bool>) {
+    inside.clear();
+    inside.extend(field.iter().map(|&f| f >= ISO));
+    let mut flips = Vec::new();
+    for z in 0..SIDE {
+        for y in 0..SIDE {
+            for x in 0..SIDE {
+                let here = local([x, y, z]);
+                let mine = inside[here];
+                let alone = DIRECTIONS.iter().all(|d| {
+                    [1i64, -1].iter().all(|&sign| {
+                        let at = [x, y, z].map(|i| i as i64);
+                        let n: [i64; 3] = std::array::from_fn(|k| at[k] + sign * d[k] as i64);
+                        let neighbour = if n.iter().all(|&i| (0..SIDE as i64).contains(&i)) {
+                            inside[local(n.map(|i| i as usize))]
+                        } else {
+                            tree.field(grid.sample(std::array::from_fn(|k| first[k] + n[k]))) >= ISO
+                        };
+                        neighbour != mine
+                    })
+                });
+                if alone {
+                    flips.push(here);
+                }
+            }
+        }
+    }
+    for i in flips {
+        inside[i] = !inside[i];
+    }
 }
 
 /// The box of the grid samples inside the surface of `tree` at growth step `step`, grown by
@@ -254,6 +297,7 @@ pub fn mesh_chunk(
     };
     let first = Grid::first_sample(chunk);
     let global = |i: [usize; 3]| std::array::from_fn(|k| first[k] + i[k] as i64);
+    class(&tree, grid, first, &scratch.field, &mut scratch.inside);
     scratch
         .vertex_of
         .resize(SIDE * SIDE * SIDE * DIRECTIONS.len(), u32::MAX);
@@ -265,9 +309,8 @@ pub fn mesh_chunk(
                     let o = offset(c);
                     [x + o[0], y + o[1], z + o[2]]
                 };
-                let value = |c: usize| scratch.field[local(corner(c))];
                 let mask = (0..8)
-                    .filter(|&c| value(c) >= ISO)
+                    .filter(|&c| scratch.inside[local(corner(c))])
                     .fold(0, |m, c| m | 1 << c);
                 if mask == 0 || mask == 0xff {
                     continue;
