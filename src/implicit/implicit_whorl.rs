@@ -256,7 +256,7 @@ fn check_varices(spec: &ImplicitSpec) -> Result<(), GeometryError> {
     positive("form.varices.radius", v.radius, "the spines' radius")?;
     positive("form.varices.tip", v.tip, "the spines' tip radius")?;
     positive("form.varices.bump_size", v.bump_size, "the bumps' size")?;
-    if !(v.bend.abs() <= MAX_BEND_DEGREES) {
+    if v.bend.is_nan() || v.bend.abs() > MAX_BEND_DEGREES {
         return Err(problem(
             "form.varices.bend",
             format!(

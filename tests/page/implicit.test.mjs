@@ -11,7 +11,7 @@ import { growPreset, open, session, waitForState, measureCanvas } from './browse
 const SHOTS = new URL('./screenshots/implicit/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
 const IMPLICIT_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
-  .filter((f) => f.startsWith('implicit-') && f.endsWith('.json'))
+  .filter((f) => (f.startsWith('implicit-') || f.startsWith('murex-')) && f.endsWith('.json'))
   .map((f) => f.slice(0, -5));
 const CLI = new URL('../../target/release/seashells', import.meta.url).pathname;
 
@@ -44,7 +44,7 @@ for (const backend of ['WebGL2', 'WebGPU']) {
 test('every implicit preset grows on WebGPU', async () => {
   const { browser, base, close } = await session('WebGPU');
   try {
-    assert.ok(IMPLICIT_PRESETS.length >= 3, IMPLICIT_PRESETS.join(' '));
+    assert.ok(IMPLICIT_PRESETS.length >= 6, IMPLICIT_PRESETS.join(' '));
     for (const id of IMPLICIT_PRESETS) {
       const state = await growPreset(browser, base, id, `${SHOTS}${id}-WebGPU.png`);
       assert.equal(state.backend, 'WebGPU');
@@ -57,7 +57,13 @@ test('every implicit preset grows on WebGPU', async () => {
 test('an implicit shell grows in wasm into the very mesh the command line writes', async () => {
   const { browser, base, close } = await session();
   try {
-    for (const link of ['v=1&preset=implicit-whorl', 'v=1&preset=implicit-canal-whorl&form.resolution=64']) {
+    for (const link of [
+      'v=1&preset=implicit-whorl',
+      'v=1&preset=implicit-canal-whorl&form.resolution=64',
+      // Bumps and canal spines drawn from the seed, spines placed by the pattern.
+      'v=1&preset=murex-cabritii&form.resolution=48',
+      'v=1&preset=murex-rd-spines&form.resolution=48',
+    ]) {
       const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
       const grown = await waitForState(page, ['grown']);
       const out = execFileSync(CLI, ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
@@ -74,12 +80,17 @@ test('an implicit shell grows in wasm into the very mesh the command line writes
 test('bad implicit numbers in a link get a message naming the key, and the shell grows all the same', async () => {
   const { browser, base, close } = await session();
   try {
+    const canal = 'preset=implicit-canal-whorl&form.whorls=5';
+    const murex = 'preset=murex-cabritii&form.resolution=40';
     for (const [link, key] of [
-      ['form.generator.pairs=0,3', 'form.generator.pairs'],
-      ['form.generator.points=0,0,0,-1', 'form.generator.points'],
-      ['form.resolution=5000', 'form.resolution'],
+      [`${canal}&form.generator.pairs=0,3`, 'form.generator.pairs'],
+      [`${canal}&form.generator.points=0,0,0,-1`, 'form.generator.points'],
+      [`${canal}&form.resolution=5000`, 'form.resolution'],
+      [`${murex}&form.varices.bend=500`, 'form.varices.bend'],
+      [`${murex}&form.canal_spines.spines=7,1`, 'form.canal_spines.spines'],
+      ['preset=murex-rd-spines&form.resolution=40&pattern.model.kind=none', 'form.varices.placement'],
     ]) {
-      const { page, errors } = await open(browser, `${base}#v=1&preset=implicit-canal-whorl&growth.speed=200&form.whorls=5&${link}`);
+      const { page, errors } = await open(browser, `${base}#v=1&${link}&growth.speed=200`);
       // The resolution is capped at 384, which grows slowly in software rendering: growing
       // (never an error, never a frozen tab) is what counts here.
       const state = await waitForState(page, ['growing', 'grown', 'error']);
