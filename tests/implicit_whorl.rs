@@ -5,15 +5,13 @@
 
 mod common;
 
-use common::assert_closed_and_outward;
+use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit};
 use glam::DVec3;
 use seashells_core::generator::Generator;
-use seashells_core::implicit::implicit_whorl::{Helix, MAX_RESOLUTION, check};
+use seashells_core::implicit::implicit_whorl::{Helix, MAX_RESOLUTION};
 use seashells_core::mesh::Mesh;
-use seashells_core::spec::ShellSpec;
-use seashells_core::spec::form::{Form, Handedness};
+use seashells_core::spec::form::Handedness;
 use seashells_core::spec::implicit::{HelixSpec, ImplicitSpec};
-use seashells_core::spec::validate::repair;
 use seashells_core::species::{self, Group};
 use std::f64::consts::TAU;
 
@@ -22,13 +20,6 @@ fn implicit_presets() -> Vec<&'static species::Preset> {
         .iter()
         .filter(|p| p.group == Group::Implicit)
         .collect()
-}
-
-fn implicit(spec: &mut ShellSpec) -> &mut ImplicitSpec {
-    match &mut spec.form {
-        Form::Implicit(i) => i,
-        _ => panic!("an implicit preset"),
-    }
 }
 
 fn murex_helix() -> Helix {
@@ -183,15 +174,6 @@ fn bad_numbers_get_messages_that_name_the_key() {
     for (key, spoil) in cases {
         let mut spec = base.clone();
         spoil(implicit(&mut spec));
-        let error = check(implicit(&mut spec.clone())).expect_err(key);
-        assert!(error.0.starts_with(key), "{key}: {}", error.0);
-        let problems = repair(&mut spec, &base);
-        assert!(
-            problems
-                .iter()
-                .any(|p| p.key == key && p.message.contains("used")),
-            "{key}: {problems:?}"
-        );
-        assert!(check(implicit(&mut spec)).is_ok(), "{key}: repaired");
+        assert_refused_and_repaired(spec, &base, key);
     }
 }

@@ -21,14 +21,13 @@
 
 mod common;
 
-use common::{assert_closed_and_outward, signed_volume};
+use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit, signed_volume};
 use glam::DVec3;
 use seashells_core::generator::Generator;
-use seashells_core::implicit::implicit_whorl::{Instances, Whorl, check, whorl};
+use seashells_core::implicit::implicit_whorl::{Instances, Whorl, whorl};
 use seashells_core::mesh::Mesh;
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::form::Form;
-use seashells_core::spec::implicit::{ImplicitSpec, Placement};
+use seashells_core::spec::implicit::Placement;
 use seashells_core::spec::link::{decode, encode};
 use seashells_core::spec::validate::repair;
 use seashells_core::species;
@@ -83,13 +82,6 @@ const TABLE_2: [&[f64]; 3] = [
 
 fn spec_of(id: &str) -> ShellSpec {
     species::preset(id).expect(id).spec.clone()
-}
-
-fn implicit(spec: &mut ShellSpec) -> &mut ImplicitSpec {
-    match &mut spec.form {
-        Form::Implicit(i) => i,
-        _ => panic!("an implicit preset"),
-    }
 }
 
 fn built(spec: &mut ShellSpec) -> Whorl {
@@ -355,16 +347,7 @@ fn bad_values_get_messages_that_name_the_key() {
     for (key, spoil) in cases {
         let mut spec = base.clone();
         spoil(&mut spec);
-        let error = check(implicit(&mut spec.clone())).expect_err(key);
-        assert!(error.0.starts_with(key), "{key}: {}", error.0);
-        let problems = repair(&mut spec, &base);
-        assert!(
-            problems
-                .iter()
-                .any(|p| p.key == key && p.message.contains("used")),
-            "{key}: {problems:?}"
-        );
-        assert!(check(implicit(&mut spec)).is_ok(), "{key}: repaired");
+        assert_refused_and_repaired(spec, &base, key);
     }
     // Spines placed by a pattern that is not there.
     let mut spec = spec_of("murex-rd-spines");

@@ -1,8 +1,13 @@
-//! Checks of meshes shared by the tests of every form.
+//! Checks of meshes shared by the tests of every form, and of implicit specs.
 #![allow(dead_code)]
 
 use glam::DVec3;
+use seashells_core::implicit::implicit_whorl::check;
 use seashells_core::mesh::Mesh;
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::form::Form;
+use seashells_core::spec::implicit::ImplicitSpec;
+use seashells_core::spec::validate::repair;
 use std::collections::HashMap;
 
 /// Directed edges by welded position; a closed, consistently oriented surface has each edge
@@ -95,4 +100,27 @@ pub fn watertight_stl_triangles(bytes: &[u8]) -> usize {
         "every edge of the STL is shared by exactly two triangles"
     );
     count
+}
+
+/// The implicit form of a spec.
+pub fn implicit(spec: &mut ShellSpec) -> &mut ImplicitSpec {
+    match &mut spec.form {
+        Form::Implicit(i) => i,
+        _ => panic!("an implicit preset"),
+    }
+}
+
+/// A spec spoiled at `key` is refused with a message naming the key, and repairing it from
+/// `base` says what was used instead and gives a spec that builds.
+pub fn assert_refused_and_repaired(mut spoiled: ShellSpec, base: &ShellSpec, key: &str) {
+    let error = check(implicit(&mut spoiled.clone())).expect_err(key);
+    assert!(error.0.starts_with(key), "{key}: {}", error.0);
+    let problems = repair(&mut spoiled, base);
+    assert!(
+        problems
+            .iter()
+            .any(|p| p.key == key && p.message.contains("used")),
+        "{key}: {problems:?}"
+    );
+    assert!(check(implicit(&mut spoiled)).is_ok(), "{key}: repaired");
 }
