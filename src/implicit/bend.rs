@@ -5,20 +5,32 @@
 //! evaluated through the inverse map, so a bent primitive is exact, not a chain of pieces.
 
 use crate::mesh::Bounds;
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 
 /// The largest turn of one bend: within it the three regions (before, along, beyond the arc)
 /// never overlap.
 pub const MAX_BEND_DEGREES: f64 = 90.0;
 
-/// A bend of the slab 0 ≤ x ≤ `length` by `angle` radians (|angle| ≤ 90°).
+/// A bend of the slab 0 ≤ x ≤ `length` by `angle` radians (|angle| ≤ 90°), with what every
+/// evaluation through it needs computed once.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bend {
-    pub angle: f64,
-    pub length: f64,
+    angle: f64,
+    length: f64,
+    /// (cos, sin) of |angle|: the direction of the arc's end.
+    end: DVec2,
 }
 
 impl Bend {
+    pub fn new(angle: f64, length: f64) -> Self {
+        let phi = angle.abs();
+        Self {
+            angle,
+            length,
+            end: DVec2::new(libm::cos(phi), libm::sin(phi)),
+        }
+    }
+
     /// Radius of the arc the x axis is bent into.
     fn radius(&self) -> f64 {
         self.length / self.angle.abs()
@@ -46,13 +58,12 @@ impl Bend {
             return p;
         }
         let sign = self.angle.signum();
-        let (r, phi) = (self.radius(), self.angle.abs());
+        let (r, end) = (self.radius(), self.end);
         // Relative to the centre of curvature (0, r).
         let d = DVec2::new(p.x, p.y * sign - r);
         if d.x < 0.0 {
             return p;
         }
-        let end = DVec2::new(libm::cos(phi), libm::sin(phi));
         let beyond = d.dot(end);
         if beyond > 0.0 {
             let rho = d.dot(DVec2::new(end.y, -end.x));
@@ -60,6 +71,40 @@ impl Bend {
         }
         let theta = libm::atan2(d.x, -d.y);
         DVec3::new(theta * r, (r - d.length()) * sign, p.z)
+    }
+
+    /// [`Bend::inverse`] at `p` with its Jacobian J (dq = J dp), so that a field evaluated
+    /// through the bend has the gradient Jᵀ ∇f: exact in each of the three regions.
+    pub fn inverse_with_jacobian(&self, p: DVec3) -> (DVec3, DMat3) {
+        let q = self.inverse(p);
+        if self.angle == 0.0 {
+            return (q, DMat3::IDENTITY);
+        }
+        let sign = self.angle.signum();
+        let (r, end) = (self.radius(), self.end);
+        let d = DVec2::new(p.x, p.y * sign - r);
+        if d.x < 0.0 {
+            return (q, DMat3::IDENTITY);
+        }
+        // Rows of J in the xy plane: ∂q.x/∂(p.x, p.y) and ∂q.y/∂(p.x, p.y).
+        let (row_x, row_y) = if d.dot(end) > 0.0 {
+            (
+                DVec2::new(end.x, end.y * sign),
+                DVec2::new(-end.y * sign, end.x),
+            )
+        } else {
+            let (len2, len) = (d.length_squared(), d.length());
+            (
+                DVec2::new(-d.y, d.x * sign) * (r / len2),
+                DVec2::new(-d.x * sign, -d.y) / len,
+            )
+        };
+        let jacobian = DMat3::from_cols(
+            DVec3::new(row_x.x, row_y.x, 0.0),
+            DVec3::new(row_x.y, row_y.y, 0.0),
+            DVec3::Z,
+        );
+        (q, jacobian)
     }
 
     /// The box holding the bent image of `child` (a box in the unbent space).
@@ -91,16 +136,20 @@ impl Bend {
         }
     }
 
-    /// How much the inverse map can stretch distances within `child` (a box in the unbent
-    /// space): along the arc, r / (r − |y|). Infinite when the box reaches the centre of
-    /// curvature, where the bend folds.
-    pub fn stretch(&self, child: &Bounds) -> f64 {
+    /// How much the inverse map can stretch distances within the ball of `reach` about
+    /// `centre` (in the bent space): along the arc r / ρ at the distance ρ from the centre of
+    /// curvature, rigid before and beyond it; infinite when the ball reaches that centre.
+    pub fn stretch_within(&self, centre: DVec3, reach: f64) -> f64 {
         if self.angle == 0.0 {
             return 1.0;
         }
         let r = self.radius();
-        let y = child.min.y.abs().max(child.max.y.abs());
-        if y >= r { f64::INFINITY } else { r / (r - y) }
+        let nearest = DVec2::new(centre.x, centre.y * self.angle.signum() - r).length() - reach;
+        if nearest <= 0.0 {
+            f64::INFINITY
+        } else {
+            (r / nearest).max(1.0)
+        }
     }
 }
 
@@ -111,10 +160,7 @@ mod tests {
     #[test]
     fn inverse_undoes_forward_before_along_and_beyond_the_arc() {
         for angle in [30f64, -30.0, 9.0, 90.0] {
-            let bend = Bend {
-                angle: angle.to_radians(),
-                length: 2.0,
-            };
+            let bend = Bend::new(angle.to_radians(), 2.0);
             for q in [
                 DVec3::new(-0.5, 0.1, 0.2),
                 DVec3::new(0.7, -0.2, 0.0),
@@ -128,11 +174,35 @@ mod tests {
     }
 
     #[test]
+    fn the_jacobian_matches_differences_of_the_inverse_in_every_region() {
+        for angle in [30f64, -45.0, 90.0] {
+            let bend = Bend::new(angle.to_radians(), 2.0);
+            for q in [
+                DVec3::new(-0.5, 0.1, 0.2),
+                DVec3::new(0.7, -0.2, 0.0),
+                DVec3::new(1.9, 0.3, -0.1),
+                DVec3::new(2.6, 0.05, 0.4),
+            ] {
+                let p = bend.forward(q);
+                let (back, j) = bend.inverse_with_jacobian(p);
+                assert_eq!(back, bend.inverse(p));
+                let h = 1e-6;
+                for (axis, column) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().zip(0..) {
+                    let diff =
+                        (bend.inverse(p + axis * h) - bend.inverse(p - axis * h)) / (2.0 * h);
+                    let exact = j.col(column);
+                    assert!(
+                        diff.distance(exact) < 1e-6,
+                        "{angle}° at {q}: {diff} vs {exact}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
     fn the_tip_turns_by_the_angle() {
-        let bend = Bend {
-            angle: 30f64.to_radians(),
-            length: 1.0,
-        };
+        let bend = Bend::new(30f64.to_radians(), 1.0);
         let a = bend.forward(DVec3::new(1.0, 0.0, 0.0));
         let b = bend.forward(DVec3::new(1.5, 0.0, 0.0));
         let turn = (b - a).y.atan2((b - a).x).to_degrees();
@@ -142,10 +212,7 @@ mod tests {
 
     #[test]
     fn bounds_hold_the_bent_box() {
-        let bend = Bend {
-            angle: 60f64.to_radians(),
-            length: 3.0,
-        };
+        let bend = Bend::new(60f64.to_radians(), 3.0);
         let child = Bounds {
             min: DVec3::new(-0.2, -0.3, -0.3),
             max: DVec3::new(3.3, 0.3, 0.3),

@@ -35,7 +35,7 @@ impl Affine {
 }
 
 /// ‖M‖₂ as the square root of the largest eigenvalue of MᵀM, by power iteration, rounded up by
-/// a hair: a Lipschitz bound must not be too small.
+/// a hair: a bound on the stretch must not be too small.
 fn spectral_norm(m: DMat3) -> f64 {
     let mtm = m.transpose() * m;
     let mut v = DVec3::new(0.577, 0.578, 0.579);
@@ -54,7 +54,7 @@ fn spectral_norm(m: DMat3) -> f64 {
 /// What a node does.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Op {
-    Leaf(Primitive, Texture),
+    Leaf(Primitive, Box<Texture>),
     /// + : the sum of the fields: everything blends with everything.
     Blend(Vec<Node>),
     /// ∪ : the largest field.
@@ -71,7 +71,7 @@ pub enum Op {
     /// w : the child seen through a bend.
     Warp(Bend, Box<Node>),
     /// t, s, r : the child moved by an affine map.
-    Transform(Affine, Box<Node>),
+    Transform(Box<Affine>, Box<Node>),
 }
 
 /// A BlobTree node with what evaluation and culling need to know of it.
@@ -80,8 +80,6 @@ pub struct Node {
     pub op: Op,
     /// Outside this box the field is zero.
     pub bounds: Bounds,
-    /// A bound on the gradient's length (infinite when none is known).
-    pub lipschitz: f64,
     /// The growth step at which the node appears.
     pub birth: u32,
 }
@@ -92,58 +90,33 @@ fn fold(children: &[Node], f: impl Fn(&Node) -> f64, g: fn(f64, f64) -> f64, zer
 
 impl Node {
     fn new(op: Op) -> Self {
-        let (bounds, lipschitz, birth) = match &op {
-            Op::Leaf(p, _) => (p.bounds(), p.lipschitz(), 0),
-            Op::Blend(c) | Op::Superelliptic(_, c) => (
-                union_bounds(c),
-                fold(c, |n| n.lipschitz, |a, b| a + b, 0.0),
-                first_birth(c),
-            ),
-            Op::Union(c) => (
-                union_bounds(c),
-                fold(c, |n| n.lipschitz, f64::max, 0.0),
-                first_birth(c),
-            ),
+        let (bounds, birth) = match &op {
+            Op::Leaf(p, _) => (p.bounds(), 0),
+            Op::Blend(c) | Op::Superelliptic(_, c) | Op::Union(c) | Op::Controlled(c, _) => {
+                (union_bounds(c), first_birth(c))
+            }
             Op::Intersection(c) => (
                 c.iter()
                     .map(|n| n.bounds)
                     .reduce(|a, b| a.intersection(&b))
                     .unwrap_or(Bounds::EMPTY),
-                fold(c, |n| n.lipschitz, f64::max, 0.0),
                 c.iter().map(|n| n.birth).max().unwrap_or(0),
             ),
-            Op::Difference(a, b) => (a.bounds, a.lipschitz.max(b.lipschitz), a.birth),
-            Op::Controlled(c, pairs) => {
-                let single = fold(c, |n| n.lipschitz, f64::max, 0.0);
-                let pair = pairs
-                    .iter()
-                    .map(|[i, k]| c[*i].lipschitz + c[*k].lipschitz)
-                    .fold(0.0, f64::max);
-                (union_bounds(c), single.max(pair), first_birth(c))
-            }
-            Op::Warp(bend, child) => (
-                bend.bounds(&child.bounds),
-                child.lipschitz * bend.stretch(&child.bounds),
-                child.birth,
-            ),
+            Op::Difference(a, _) => (a.bounds, a.birth),
+            Op::Warp(bend, child) => (bend.bounds(&child.bounds), child.birth),
             Op::Transform(affine, child) => {
                 let mut b = Bounds::EMPTY;
                 for corner in child.bounds.corners() {
                     b.include(affine.forward.transform_point3(corner));
                 }
-                (b, child.lipschitz * affine.stretch, child.birth)
+                (b, child.birth)
             }
         };
-        Self {
-            op,
-            bounds,
-            lipschitz,
-            birth,
-        }
+        Self { op, bounds, birth }
     }
 
     pub fn leaf(primitive: Primitive, texture: Texture) -> Self {
-        Self::new(Op::Leaf(primitive, texture))
+        Self::new(Op::Leaf(primitive, Box::new(texture)))
     }
 
     /// Blends nested in the children are spliced in: the sum is associative.
@@ -191,12 +164,15 @@ impl Node {
         let birth = child.birth;
         let moved = match child.op {
             Op::Transform(inner, grandchild) => Self::new(Op::Transform(
-                Affine::new(forward * inner.forward),
+                Box::new(Affine::new(forward * inner.forward)),
                 grandchild,
             )),
             op => match similarity_scale(forward) {
                 Some(scale) => Self::new(push(op, forward, scale)),
-                None => Self::new(Op::Transform(Affine::new(forward), Box::new(Self::new(op)))),
+                None => Self::new(Op::Transform(
+                    Box::new(Affine::new(forward)),
+                    Box::new(Self::new(op)),
+                )),
             },
         };
         Node { birth, ..moved }
@@ -239,67 +215,166 @@ impl Node {
             Op::Intersection(c) => fold(c, |n| n.field(p), f64::min, f64::INFINITY),
             Op::Difference(a, b) => difference(a.field(p), b.field(p)),
             Op::Superelliptic(n, c) => with_fields(c, p, |fields| superelliptic(*n, fields)),
-            Op::Controlled(c, pairs) => with_fields(c, p, |fields| controlled(fields, pairs).0),
+            Op::Controlled(c, pairs) => with_fields(c, p, |fields| {
+                controlled(fields.len(), |i| fields[i], pairs).0
+            }),
             Op::Warp(bend, child) => child.field(bend.inverse(p)),
             Op::Transform(affine, child) => child.field(affine.inverse.transform_point3(p)),
         }
     }
 
-    /// The field at `p` and the blended pattern coordinates of the primitives that make it.
-    pub fn paint(&self, p: DVec3) -> (f64, Paint) {
+    /// The field at `p` (as [`Node::field`] gives it), its gradient, exact operator by operator
+    /// (the chain rule through primitives, transforms and bends; the winning child of a union,
+    /// intersection or difference; eq 4's weights (fᵢ/f)ⁿ⁻¹), and the blended pattern
+    /// coordinates of the primitives that make it: all a surface vertex needs, in one walk.
+    pub fn probe(&self, p: DVec3) -> Probe {
         if !self.bounds.contains(p) {
-            return (0.0, Paint::default());
+            return Probe::default();
         }
         match &self.op {
             Op::Leaf(primitive, texture) => {
-                let f = primitive.field(p);
-                (f, Paint::of(texture, p, f))
-            }
-            Op::Blend(c) | Op::Superelliptic(_, c) => {
-                let parts: Vec<(f64, Paint)> = c.iter().map(|n| n.paint(p)).collect();
-                let paint = parts
-                    .iter()
-                    .fold(Paint::default(), |sum, (_, paint)| sum + *paint);
-                let fields: Vec<f64> = parts.iter().map(|(f, _)| *f).collect();
-                let f = match &self.op {
-                    Op::Superelliptic(n, _) => superelliptic(*n, &fields),
-                    _ => fields.iter().sum(),
-                };
-                (f, paint)
-            }
-            Op::Union(c) => strongest(c.iter().map(|n| n.paint(p)), |a, b| a > b),
-            Op::Intersection(c) => strongest(c.iter().map(|n| n.paint(p)), |a, b| a < b),
-            Op::Difference(a, b) => {
-                let (fa, pa) = a.paint(p);
-                let (fb, pb) = b.paint(p);
-                let f = difference(fa, fb);
-                if fb == 0.0 || f == fa {
-                    (f, pa)
-                } else {
-                    (f, pb.carved())
+                let (f, gradient) = primitive.field_gradient(p);
+                Probe {
+                    field: f,
+                    gradient,
+                    paint: Paint::of(texture, p, f),
                 }
             }
-            Op::Controlled(c, pairs) => {
-                let parts: Vec<(f64, Paint)> = c.iter().map(|n| n.paint(p)).collect();
-                let fields: Vec<f64> = parts.iter().map(|(f, _)| *f).collect();
-                let (f, [i, k]) = controlled(&fields, pairs);
-                let paint = if i == k {
-                    parts[i].1
-                } else {
-                    parts[i].1 + parts[k].1
+            Op::Blend(c) => c
+                .iter()
+                .map(|n| n.probe(p))
+                .fold(Probe::default(), |sum, x| Probe {
+                    field: sum.field + x.field,
+                    gradient: sum.gradient + x.gradient,
+                    paint: sum.paint + x.paint,
+                }),
+            Op::Superelliptic(n, c) => with_probes(c, p, |parts| {
+                let fields = |i: usize| parts[i].field;
+                let f = superelliptic_of(*n, parts.len(), fields);
+                let mut out = Probe {
+                    field: f,
+                    ..Probe::default()
                 };
-                (f, paint)
+                for part in parts {
+                    out.paint = out.paint + part.paint;
+                    if part.field > 0.0 {
+                        out.gradient += part.gradient * libm::pow(part.field / f, n - 1.0);
+                    }
+                }
+                out
+            }),
+            Op::Union(c) => strongest(c.iter().map(|n| n.probe(p)), |a, b| a > b),
+            Op::Intersection(c) => strongest(c.iter().map(|n| n.probe(p)), |a, b| a < b),
+            Op::Difference(a, b) => {
+                let (a, b) = (a.probe(p), b.probe(p));
+                let f = difference(a.field, b.field);
+                if b.field == 0.0 || f == a.field {
+                    Probe { field: f, ..a }
+                } else {
+                    Probe {
+                        field: f,
+                        gradient: if f > 0.0 { -b.gradient } else { DVec3::ZERO },
+                        paint: b.paint.carved(),
+                    }
+                }
             }
-            Op::Warp(bend, child) => child.paint(bend.inverse(p)),
-            Op::Transform(affine, child) => child.paint(affine.inverse.transform_point3(p)),
+            Op::Controlled(c, pairs) => with_probes(c, p, |parts| {
+                let (f, [i, k]) = controlled(parts.len(), |i| parts[i].field, pairs);
+                if i == k {
+                    Probe {
+                        field: f,
+                        ..parts[i]
+                    }
+                } else {
+                    Probe {
+                        field: f,
+                        gradient: parts[i].gradient + parts[k].gradient,
+                        paint: parts[i].paint + parts[k].paint,
+                    }
+                }
+            }),
+            Op::Warp(bend, child) => {
+                let (q, jacobian) = bend.inverse_with_jacobian(p);
+                let inner = child.probe(q);
+                Probe {
+                    gradient: jacobian.transpose() * inner.gradient,
+                    ..inner
+                }
+            }
+            Op::Transform(affine, child) => {
+                let inner = child.probe(affine.inverse.transform_point3(p));
+                Probe {
+                    gradient: affine.inverse.matrix3.transpose() * inner.gradient,
+                    ..inner
+                }
+            }
         }
     }
 
-    /// The field's gradient at `p`, where the field is `f`, by forward differences of step `h`
-    /// (three evaluations): the surface normal is its opposite.
-    pub fn gradient(&self, p: DVec3, f: f64, h: f64) -> DVec3 {
-        let d = |e: DVec3| self.field(p + e * h) - f;
-        DVec3::new(d(DVec3::X), d(DVec3::Y), d(DVec3::Z)) / h
+    /// Bounds (lowest, highest) on the field throughout the ball of `reach` about `centre`,
+    /// carried up the tree by interval arithmetic: every operator but the difference is
+    /// increasing in each child's field, so it maps the children's bounds to its own; the ball
+    /// passes through transforms and bends stretched by at most their stretch there.
+    pub fn range(&self, centre: DVec3, reach: f64) -> (f64, f64) {
+        let ball = Bounds {
+            min: centre - reach,
+            max: centre + reach,
+        };
+        if !self.bounds.intersects(&ball) {
+            return (0.0, 0.0);
+        }
+        let each = |c: &[Node]| -> (Vec<f64>, Vec<f64>) {
+            c.iter().map(|n| n.range(centre, reach)).unzip()
+        };
+        match &self.op {
+            Op::Leaf(primitive, _) => primitive.range(centre, reach),
+            Op::Blend(c) => {
+                let (lo, hi) = each(c);
+                (lo.iter().sum(), hi.iter().sum())
+            }
+            Op::Union(c) => {
+                let (lo, hi) = each(c);
+                (
+                    lo.into_iter().fold(0.0, f64::max),
+                    hi.into_iter().fold(0.0, f64::max),
+                )
+            }
+            Op::Intersection(c) => {
+                let (lo, hi) = each(c);
+                let least = |v: Vec<f64>| v.into_iter().fold(f64::INFINITY, f64::min);
+                (least(lo), least(hi))
+            }
+            Op::Difference(a, b) => {
+                let ((la, ha), (lb, hb)) = (a.range(centre, reach), b.range(centre, reach));
+                let hi = if lb == 0.0 {
+                    ha
+                } else {
+                    ha.min(2.0 * ISO - lb).max(0.0)
+                };
+                (la.min(2.0 * ISO - hb).max(0.0), hi)
+            }
+            Op::Superelliptic(n, c) => {
+                let (lo, hi) = each(c);
+                (superelliptic(*n, &lo), superelliptic(*n, &hi))
+            }
+            Op::Controlled(c, pairs) => {
+                let (lo, hi) = each(c);
+                let of = |v: &[f64]| controlled(v.len(), |i| v[i], pairs).0;
+                (of(&lo), of(&hi))
+            }
+            Op::Warp(bend, child) => {
+                let stretch = bend.stretch_within(centre, reach);
+                if stretch.is_finite() {
+                    child.range(bend.inverse(centre), reach * stretch)
+                } else {
+                    (0.0, f64::INFINITY)
+                }
+            }
+            Op::Transform(affine, child) => child.range(
+                affine.inverse.transform_point3(centre),
+                reach * affine.stretch,
+            ),
+        }
     }
 
     /// The part of the tree that matters inside `region` at growth step `step`: subtrees born
@@ -318,7 +393,10 @@ impl Node {
             }
         };
         match &self.op {
-            Op::Leaf(..) => Some(self.clone()),
+            Op::Leaf(primitive, _) => {
+                let reach = (region.max - region.min).length() * 0.5;
+                (!primitive.misses(region.center(), reach)).then(|| self.clone())
+            }
             Op::Blend(c) => many(c, &Node::blend),
             Op::Union(c) => many(c, &Node::union),
             Op::Superelliptic(n, c) => many(c, &|kept| Node::superelliptic(*n, kept)),
@@ -356,8 +434,22 @@ impl Node {
                 }
             }
             Op::Warp(bend, child) => {
-                // The region cannot be carried through the bend exactly: keep the whole child.
-                let child = child.cull(&child.bounds, step)?;
+                // The region's ball maps through the inverse bend into a ball stretched by at
+                // most the bend's stretch there; where that is unbounded, the whole child is
+                // kept.
+                let region = region.intersection(&self.bounds);
+                let reach = (region.max - region.min).length() * 0.5;
+                let stretch = bend.stretch_within(region.center(), reach);
+                let local = if stretch.is_finite() {
+                    let centre = bend.inverse(region.center());
+                    Bounds {
+                        min: centre - reach * stretch,
+                        max: centre + reach * stretch,
+                    }
+                } else {
+                    child.bounds
+                };
+                let child = child.cull(&local, step)?;
                 Some(Node::warp(*bend, child))
             }
             Op::Transform(affine, child) => {
@@ -366,16 +458,17 @@ impl Node {
                     local.include(affine.inverse.transform_point3(corner));
                 }
                 let child = child.cull(&local, step)?;
-                Some(Node::new(Op::Transform(*affine, Box::new(child))))
+                Some(Node::new(Op::Transform(affine.clone(), Box::new(child))))
             }
         }
     }
 }
 
-/// Calls `f` with the children's fields at `p`, kept on the stack for the few children a
-/// culled tree has.
+/// The few children a culled tree has are kept on the stack.
+const FEW: usize = 16;
+
+/// Calls `f` with the children's fields at `p`.
 fn with_fields(children: &[Node], p: DVec3, f: impl FnOnce(&[f64]) -> f64) -> f64 {
-    const FEW: usize = 16;
     if children.len() <= FEW {
         let mut fields = [0.0; FEW];
         for (slot, child) in fields.iter_mut().zip(children) {
@@ -384,6 +477,19 @@ fn with_fields(children: &[Node], p: DVec3, f: impl FnOnce(&[f64]) -> f64) -> f6
         f(&fields[..children.len()])
     } else {
         f(&children.iter().map(|c| c.field(p)).collect::<Vec<f64>>())
+    }
+}
+
+/// Calls `f` with the children's probes at `p`.
+fn with_probes(children: &[Node], p: DVec3, f: impl FnOnce(&[Probe]) -> Probe) -> Probe {
+    if children.len() <= FEW {
+        let mut probes = [Probe::default(); FEW];
+        for (slot, child) in probes.iter_mut().zip(children) {
+            *slot = child.probe(p);
+        }
+        f(&probes[..children.len()])
+    } else {
+        f(&children.iter().map(|c| c.probe(p)).collect::<Vec<Probe>>())
     }
 }
 
@@ -404,7 +510,7 @@ fn similarity_scale(m: DAffine3) -> Option<f64> {
 fn push(op: Op, m: DAffine3, scale: f64) -> Op {
     let all = |c: Vec<Node>| c.into_iter().map(|n| Node::transform(m, n)).collect();
     match op {
-        Op::Leaf(p, t) => Op::Leaf(p.moved(&m, scale), t.moved(m.inverse())),
+        Op::Leaf(p, t) => Op::Leaf(p.moved(&m, scale), Box::new(t.moved(m.inverse()))),
         Op::Blend(c) => Op::Blend(all(c)),
         Op::Union(c) => Op::Union(all(c)),
         Op::Intersection(c) => Op::Intersection(all(c)),
@@ -414,7 +520,10 @@ fn push(op: Op, m: DAffine3, scale: f64) -> Op {
             Box::new(Node::transform(m, *a)),
             Box::new(Node::transform(m, *b)),
         ),
-        Op::Warp(bend, c) => Op::Transform(Affine::new(m), Box::new(Node::new(Op::Warp(bend, c)))),
+        Op::Warp(bend, c) => Op::Transform(
+            Box::new(Affine::new(m)),
+            Box::new(Node::new(Op::Warp(bend, c))),
+        ),
         Op::Transform(..) => unreachable!("transforms are composed, not pushed"),
     }
 }
@@ -424,7 +533,6 @@ fn placeholder() -> Node {
     Node {
         op: Op::Blend(Vec::new()),
         bounds: Bounds::EMPTY,
-        lipschitz: 0.0,
         birth: 0,
     }
 }
@@ -439,13 +547,10 @@ fn first_birth(children: &[Node]) -> u32 {
     children.iter().map(|n| n.birth).min().unwrap_or(0)
 }
 
-/// The child whose field wins the comparison `better`, with its paint.
-fn strongest(
-    parts: impl Iterator<Item = (f64, Paint)>,
-    better: fn(f64, f64) -> bool,
-) -> (f64, Paint) {
+/// The child whose field wins the comparison `better`.
+fn strongest(parts: impl Iterator<Item = Probe>, better: fn(f64, f64) -> bool) -> Probe {
     parts
-        .reduce(|a, b| if better(b.0, a.0) { b } else { a })
+        .reduce(|a, b| if better(b.field, a.field) { b } else { a })
         .unwrap_or_default()
 }
 
@@ -462,28 +567,46 @@ fn difference(fa: f64, fb: f64) -> f64 {
 /// Eq 4, computed as m·(Σ (fᵢ/m)ⁿ)^(1/n) with m the largest field, so that n = 400 neither
 /// overflows nor underflows.
 pub fn superelliptic(n: f64, fields: &[f64]) -> f64 {
-    let m = fields.iter().copied().fold(0.0, f64::max);
+    superelliptic_of(n, fields.len(), |i| fields[i])
+}
+
+/// Eq 4 over the `count` fields that `field` gives by index.
+fn superelliptic_of(n: f64, count: usize, field: impl Fn(usize) -> f64) -> f64 {
+    let m = (0..count).map(&field).fold(0.0, f64::max);
     if m <= 0.0 {
         return 0.0;
     }
-    let sum: f64 = fields.iter().map(|f| libm::pow(f / m, n)).sum();
+    let sum: f64 = (0..count).map(|i| libm::pow(field(i) / m, n)).sum();
     m * libm::pow(sum, 1.0 / n)
 }
 
-/// Eq 6: the largest of the paired sums and the single fields, with the pair that gives it
-/// ([i, i] for a single).
-fn controlled(fields: &[f64], pairs: &[[usize; 2]]) -> (f64, [usize; 2]) {
+/// Eq 6: the largest of the paired sums and the single fields among the `count` that `field`
+/// gives by index, with the pair that gives it ([i, i] for a single).
+fn controlled(
+    count: usize,
+    field: impl Fn(usize) -> f64,
+    pairs: &[[usize; 2]],
+) -> (f64, [usize; 2]) {
     let mut best = (0.0, [0, 0]);
-    for (i, &f) in fields.iter().enumerate() {
+    for i in 0..count {
+        let f = field(i);
         if f > best.0 {
             best = (f, [i, i]);
         }
     }
     for &[i, k] in pairs {
-        let f = fields[i] + fields[k];
+        let f = field(i) + field(k);
         if f > best.0 {
             best = (f, [i, k]);
         }
     }
     best
+}
+
+/// The field, its gradient and the blended pattern coordinates at a point.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Probe {
+    pub field: f64,
+    pub gradient: DVec3,
+    pub paint: Paint,
 }

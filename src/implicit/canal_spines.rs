@@ -40,10 +40,7 @@ pub fn canal_row(
         DVec3::new(cone[3], cone[4], cone[5]),
     );
     let (frame, canal_length) = cone_frame(from, to);
-    let bend = Bend {
-        angle: cone[8].to_radians(),
-        length: canal_length,
-    };
+    let bend = Bend::new(cone[8].to_radians(), canal_length);
     let on_axis = |t: f64| frame.transform_point3(bend.forward(DVec3::X * t * canal_length));
     let n = sizes.len();
     let mut spines = Vec::with_capacity(n);
@@ -86,10 +83,7 @@ pub fn canal_row(
             spine = Node::transform(
                 at,
                 Node::warp(
-                    Bend {
-                        angle: degrees.to_radians(),
-                        length: piece,
-                    },
+                    Bend::new(degrees.to_radians(), piece),
                     Node::transform(at.inverse(), spine),
                 ),
             );

@@ -500,10 +500,7 @@ fn bent_cone(from: DVec3, to: DVec3, radii: [f64; 2], bend: f64, time: f64) -> N
         },
         Texture::around(time).moved(frame),
     );
-    let bend = Bend {
-        angle: bend.to_radians(),
-        length,
-    };
+    let bend = Bend::new(bend.to_radians(), length);
     Node::transform(frame, Node::warp(bend, cone))
 }
 

@@ -7,23 +7,23 @@
 //! surface nets and plain marching cubes are not: both join four faces at one edge where a
 //! voxel face has its diagonal corners on the same side (we met it on our first CSG test with
 //! the `fast-surface-nets` crate). A vertex sits on a grid edge, where the field crosses the
-//! iso-value, found by regula falsi from the two samples; both chunks sharing a boundary
+//! iso-value, found by one Newton step from the two samples; both chunks sharing a boundary
 //! edge compute it from the same global samples, bit for bit, so the chunks' meshes meet
 //! without seams and weld by position into one closed surface.
 //!
 //! A chunk is skipped unseen when the tree culled to it is empty (outside every support) or
-//! when the field at its centre is farther from the iso-value than the field's Lipschitz bound
-//! allows it to change within the chunk (wholly inside or wholly outside). Normals are the
-//! field's gradient, and pattern coordinates the primitives' blended coordinates.
+//! when bounds on the field over the ball around it ([`Node::range`]) keep it on one side of
+//! the iso-value (wholly inside or wholly outside). Normals are the field's exact gradient, and
+//! pattern coordinates the primitives' blended coordinates.
 
-use super::blob_tree::Node;
+use super::blob_tree::{Node, Probe};
 use super::falloff::ISO;
 use crate::mesh::{Bounds, Mesh, Surface, Vertex};
 use glam::DVec3;
 use std::collections::HashMap;
 
 /// Voxels along each side of a chunk.
-pub const CHUNK: u32 = 16;
+pub const CHUNK: u32 = 8;
 
 /// The voxel grid over a box.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -114,9 +114,6 @@ impl Grid {
     }
 }
 
-/// The step of the forward differences that give normals, in voxels.
-const STEP: f64 = 0.25;
-
 /// What meshing a chunk leaves behind for meshing it again after a change confined to a box:
 /// outside that box the field is unchanged, bit for bit, so samples and vertices there are
 /// taken over instead of computed again.
@@ -173,9 +170,20 @@ fn local(i: [usize; 3]) -> usize {
     i[0] + SIDE * (i[1] + SIDE * i[2])
 }
 
+/// Whether the field of `tree` is proven to stay on one side of the iso-value throughout
+/// `region`, by the bounds [`Node::range`] gives over the ball around it. Most chunks near a
+/// surface hold none of it (about two thirds of those a Murex's boxes reach at 256³), and this
+/// spares sampling them.
+fn one_side(tree: &Node, region: &Bounds) -> bool {
+    let (lo, hi) = tree.range(region.center(), (region.max - region.min).length() * 0.5);
+    // A margin for the rounding of the bounds themselves.
+    const MARGIN: f64 = 1e-9;
+    hi < ISO - MARGIN || lo > ISO + MARGIN
+}
+
 /// Samples the field of `tree` at growth step `step` at a chunk's corners into `field`, and
 /// gives the tree culled to the chunk; `None` when the surface does not pass through it
-/// (proven by the bounds or the Lipschitz bound, or seen in the samples).
+/// (proven by the culled tree or the field's range, or seen in the samples).
 fn sample(
     tree: &Node,
     grid: &Grid,
@@ -187,8 +195,7 @@ fn sample(
     let region = grid.region(chunk);
     // One voxel more on every side: the neighbours that decide a pinhole (see `class`).
     let tree = tree.cull(&region.padded(grid.voxel), step)?;
-    let reach = (region.max - region.min).length() * 0.5;
-    if (tree.field(region.center()) - ISO).abs() > tree.lipschitz * reach {
+    if one_side(&tree, &region) {
         return None;
     }
     let first = Grid::first_sample(chunk);
@@ -229,18 +236,23 @@ fn class(tree: &Node, grid: &Grid, first: [i64; 3], field: &[f64], inside: &mut 
             for x in 0..SIDE {
                 let here = local([x, y, z]);
                 let mine = inside[here];
-                let alone = DIRECTIONS.iter().all(|d| {
-                    [1i64, -1].iter().all(|&sign| {
-                        let at = [x, y, z].map(|i| i as i64);
-                        let n: [i64; 3] = std::array::from_fn(|k| at[k] + sign * d[k] as i64);
-                        let neighbour = if n.iter().all(|&i| (0..SIDE as i64).contains(&i)) {
-                            inside[local(n.map(|i| i as usize))]
-                        } else {
-                            tree.field(grid.sample(std::array::from_fn(|k| first[k] + n[k]))) >= ISO
-                        };
-                        neighbour != mine
+                let at = [x, y, z].map(|i| i as i64);
+                let neighbours = DIRECTIONS.iter().flat_map(|d| {
+                    [1i64, -1].map(|sign| -> [i64; 3] {
+                        std::array::from_fn(|k| at[k] + sign * d[k] as i64)
                     })
                 });
+                let within = |n: &[i64; 3]| n.iter().all(|&i| (0..SIDE as i64).contains(&i));
+                // The neighbours in the chunk first: most samples have one of their class there,
+                // and those beyond it cost an evaluation each.
+                let alone = neighbours
+                    .clone()
+                    .filter(within)
+                    .all(|n| inside[local(n.map(|i| i as usize))] != mine)
+                    && neighbours.filter(|n| !within(n)).all(|n| {
+                        let p = grid.sample(std::array::from_fn(|k| first[k] + n[k]));
+                        (tree.field(p) >= ISO) != mine
+                    });
                 if alone {
                     flips.push(here);
                 }
@@ -346,18 +358,17 @@ pub fn mesh_chunk(
                                 (grid.sample(global(lo)), scratch.field[local(lo)]),
                                 (grid.sample(global(hi)), scratch.field[local(hi)]),
                             ];
-                            // The vertex looks at the field along its edge and a step beyond.
+                            // The vertex looks at the field along its edge only.
                             let reach = Bounds {
                                 min: ends[0].0,
                                 max: ends[1].0,
-                            }
-                            .padded(grid.voxel * STEP);
+                            };
                             let kept = changed
                                 .filter(|b| !b.intersects(&reach))
                                 .and_then(|_| cache.vertices.get(&key));
                             mesh.vertices.push(match kept {
                                 Some(v) => *v,
-                                None => surface_vertex(&tree, grid, ends),
+                                None => surface_vertex(&tree, ends),
                             });
                         }
                         scratch.vertex_of[key]
@@ -426,28 +437,30 @@ pub fn mesh_chunk(
 }
 
 /// The vertex where the field crosses the iso-value on the grid edge between two samples
-/// (position, field), found by two steps of regula falsi on the edge and kept off its ends
-/// (so that vertices of different edges never coincide), with the field's gradient (forward
-/// differences) for normal and the primitives' blended pattern coordinates.
-fn surface_vertex(tree: &Node, grid: &Grid, ends: [(DVec3, f64); 2]) -> Vertex {
+/// (position, field): one probe of the tree at the linear interpolation of the samples gives
+/// the field there, its exact gradient (the normal) and the primitives' blended pattern
+/// coordinates, and one Newton step along the edge with that gradient moves the vertex onto
+/// the surface. It is kept off the edge's ends, so that vertices of different edges never
+/// coincide.
+fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
     let [(pa, fa), (pb, fb)] = ends;
-    let (mut lo, mut hi) = ((0.0, fa - ISO), (1.0, fb - ISO));
-    let mut t = 0.5;
-    for _ in 0..2 {
-        t = (lo.0 - lo.1 * (hi.0 - lo.0) / (hi.1 - lo.1)).clamp(1e-3, 1.0 - 1e-3);
-        let f = tree.field(pa + (pb - pa) * t) - ISO;
-        if (f >= 0.0) == (lo.1 >= 0.0) {
-            lo = (t, f);
-        } else {
-            hi = (t, f);
-        }
-    }
-    let p = pa + (pb - pa) * t;
-    let (f, paint) = tree.paint(p);
-    let gradient = tree.gradient(p, f, grid.voxel * STEP);
+    let edge = pb - pa;
+    let guess = ((ISO - fa) / (fb - fa)).clamp(1e-3, 1.0 - 1e-3);
+    let Probe {
+        field,
+        gradient,
+        paint,
+    } = tree.probe(pa + edge * guess);
+    let newton = guess - (field - ISO) / gradient.dot(edge);
+    let t = if newton.is_finite() {
+        newton.clamp(1e-3, 1.0 - 1e-3)
+    } else {
+        guess
+    };
+    let p = pa + edge * t;
     let normal = (-gradient)
         .try_normalize()
-        .unwrap_or((pb - pa).normalize() * -(fb - fa).signum());
+        .unwrap_or(edge.normalize() * -(fb - fa).signum());
     let surface = if paint.inner {
         Surface::Inner
     } else {

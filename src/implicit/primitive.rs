@@ -6,7 +6,7 @@
 //!
 //! [`support_of`]: super::falloff::support_of
 
-use super::falloff::{SLOPE, falloff};
+use super::falloff::{falloff, falloff_slope};
 use crate::mesh::Bounds;
 use glam::{DAffine3, DVec3};
 
@@ -64,6 +64,60 @@ impl Primitive {
         }
     }
 
+    /// The field at `p` with its gradient, by the chain rule through the squared normalised
+    /// distance d² (the field is [`Primitive::field`], bit for bit).
+    pub fn field_gradient(&self, p: DVec3) -> (f64, DVec3) {
+        let (d2, grad_d2) = match *self {
+            Primitive::Point { centre, radius } => {
+                let r2 = radius * radius;
+                (p.distance_squared(centre) / r2, (p - centre) * (2.0 / r2))
+            }
+            Primitive::Cone { from, to, radii } => {
+                let axis = to - from;
+                let length2 = axis.length_squared();
+                let (t, free) = if length2 > 0.0 {
+                    let t = (p - from).dot(axis) / length2;
+                    (t.clamp(0.0, 1.0), t > 0.0 && t < 1.0)
+                } else {
+                    (0.0, false)
+                };
+                let r = radii[0] + t * (radii[1] - radii[0]);
+                let v = p - (from + t * axis);
+                let d2 = p.distance_squared(from + t * axis) / (r * r);
+                // Where t follows p, the radius does too: ∂(1/r²)/∂p = −2 r′ ∇t / r³.
+                let taper = if free {
+                    axis * (-2.0 * d2 * (radii[1] - radii[0]) / (r * length2))
+                } else {
+                    DVec3::ZERO
+                };
+                (d2, v * (2.0 / (r * r)) + taper)
+            }
+            Primitive::Torus {
+                centre,
+                axis,
+                major,
+                radius,
+            } => {
+                let q = p - centre;
+                let h = q.dot(axis);
+                let ring = q - h * axis;
+                let length = ring.length();
+                let rho = length - major;
+                let r2 = radius * radius;
+                let outward = if length > 0.0 {
+                    ring / length
+                } else {
+                    DVec3::ZERO
+                };
+                (
+                    (rho * rho + h * h) / r2,
+                    (outward * rho + axis * h) * (2.0 / r2),
+                )
+            }
+        };
+        (falloff(d2), grad_d2 * falloff_slope(d2))
+    }
+
     /// The primitive moved by a similarity `m` (a map that scales all lengths by `scale`).
     pub fn moved(&self, m: &DAffine3, scale: f64) -> Primitive {
         match *self {
@@ -118,20 +172,71 @@ impl Primitive {
         }
     }
 
-    /// A bound on |∇f|: the falloff's steepest slope over the smallest field radius, times how
-    /// fast the normalised distance can change.
-    pub fn lipschitz(&self) -> f64 {
-        match *self {
-            Primitive::Point { radius, .. } | Primitive::Torus { radius, .. } => SLOPE / radius,
+    /// Bounds (lowest, highest) on the field throughout the ball of `reach` about `centre`:
+    /// the distance to the skeleton changes no faster than the point, and the falloff only
+    /// falls with it.
+    pub fn range(&self, centre: DVec3, reach: f64) -> (f64, f64) {
+        let (distance, [thin, thick]) = match *self {
+            Primitive::Point { centre: c, radius } => (centre.distance(c), [radius, radius]),
             Primitive::Cone { from, to, radii } => {
-                let (small, large) = (radii[0].min(radii[1]), radii[0].max(radii[1]));
-                let length = from.distance(to);
-                let taper = if length > 0.0 {
-                    (radii[1] - radii[0]).abs() / length
+                let axis = to - from;
+                let length2 = axis.length_squared();
+                let t = if length2 > 0.0 {
+                    ((centre - from).dot(axis) / length2).clamp(0.0, 1.0)
                 } else {
                     0.0
                 };
-                SLOPE / small * (1.0 + large / small * taper)
+                (
+                    centre.distance(from + t * axis),
+                    [radii[0].min(radii[1]), radii[0].max(radii[1])],
+                )
+            }
+            Primitive::Torus {
+                centre: c,
+                axis,
+                major,
+                radius,
+            } => {
+                let q = centre - c;
+                let h = q.dot(axis);
+                let rho = (q - h * axis).length() - major;
+                ((rho * rho + h * h).sqrt(), [radius, radius])
+            }
+        };
+        let near = (distance - reach).max(0.0) / thick;
+        let far = (distance + reach) / thin;
+        (falloff(far * far), falloff(near * near))
+    }
+
+    /// Whether the field is zero throughout the ball of `radius` about `centre`: the ball lies
+    /// farther from the skeleton than the field radius. Tighter than the box for long slanted
+    /// cones and for the hole of a torus.
+    pub fn misses(&self, centre: DVec3, radius: f64) -> bool {
+        match *self {
+            Primitive::Point {
+                centre: c,
+                radius: r,
+            } => centre.distance(c) > r + radius,
+            Primitive::Cone { from, to, radii } => {
+                let axis = to - from;
+                let length2 = axis.length_squared();
+                let t = if length2 > 0.0 {
+                    ((centre - from).dot(axis) / length2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                centre.distance(from + t * axis) > radii[0].max(radii[1]) + radius
+            }
+            Primitive::Torus {
+                centre: c,
+                axis,
+                major,
+                radius: r,
+            } => {
+                let q = centre - c;
+                let h = q.dot(axis);
+                let rho = (q - h * axis).length() - major;
+                (rho * rho + h * h).sqrt() > r + radius
             }
         }
     }
@@ -187,7 +292,46 @@ mod tests {
     }
 
     #[test]
-    fn the_field_vanishes_outside_the_bounds_and_changes_no_faster_than_the_bound() {
+    fn the_gradient_matches_central_differences_and_the_field_is_the_same() {
+        let primitives = [
+            Primitive::Point {
+                centre: DVec3::new(0.3, -0.2, 0.1),
+                radius: 0.9,
+            },
+            Primitive::Cone {
+                from: DVec3::new(-1.0, 0.0, 0.2),
+                to: DVec3::new(1.0, 0.5, -0.3),
+                radii: [0.9, 0.3],
+            },
+            Primitive::Torus {
+                centre: DVec3::ZERO,
+                axis: DVec3::new(1.0, 1.0, 0.0).normalize(),
+                major: 0.8,
+                radius: 0.5,
+            },
+        ];
+        for p in &primitives {
+            for i in 0..2000 {
+                let t = f64::from(i);
+                let at = DVec3::new((t * 0.37).sin(), (t * 0.53).cos(), (t * 0.71).sin()) * 1.2;
+                let (f, g) = p.field_gradient(at);
+                assert_eq!(f, p.field(at));
+                let h = 1e-6;
+                let diff = DVec3::new(
+                    p.field(at + DVec3::X * h) - p.field(at - DVec3::X * h),
+                    p.field(at + DVec3::Y * h) - p.field(at - DVec3::Y * h),
+                    p.field(at + DVec3::Z * h) - p.field(at - DVec3::Z * h),
+                ) / (2.0 * h);
+                assert!(
+                    diff.distance(g) < 1e-5 * (1.0 + g.length()),
+                    "{p:?} at {at}: {diff} vs {g}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_field_vanishes_outside_the_bounds_and_stays_within_its_range_over_a_ball() {
         let primitives = [
             Primitive::Point {
                 centre: DVec3::new(0.3, -0.2, 0.1),
@@ -205,22 +349,40 @@ mod tests {
                 radius: 0.4,
             },
         ];
+        let point = |t: f64| DVec3::new((t * 0.37).sin(), (t * 0.53).cos(), (t * 0.71).sin());
         for p in &primitives {
             let b = p.bounds();
-            let l = p.lipschitz();
             for i in 0..4000 {
-                let t = f64::from(i);
-                let at = DVec3::new((t * 0.37).sin(), (t * 0.53).cos(), (t * 0.71).sin()) * 2.0;
+                let at = point(f64::from(i)) * 2.0;
                 if p.field(at) > 0.0 {
                     assert!(
                         at.cmpge(b.min).all() && at.cmple(b.max).all(),
                         "{p:?} at {at}"
                     );
                 }
-                let step = DVec3::new(1e-4, -2e-4, 1.5e-4);
-                let slope = (p.field(at + step) - p.field(at)).abs() / step.length();
-                assert!(slope <= l * 1.0001, "{p:?}: slope {slope} > {l}");
             }
+            let (mut tight, mut missed) = (0, 0);
+            for i in 0..300 {
+                let centre = point(f64::from(i) * 1.3) * 1.5;
+                let reach = 0.05 + 0.3 * f64::from(i % 7) / 7.0;
+                let (lo, hi) = p.range(centre, reach);
+                let misses = p.misses(centre, reach);
+                for j in 0..60 {
+                    let at = centre + point(f64::from(j) * 2.1 + 0.5) * reach / 1.8;
+                    let f = p.field(at);
+                    assert!(lo <= f && f <= hi, "{p:?}: {f} outside [{lo}, {hi}]");
+                    assert!(
+                        !misses || f == 0.0,
+                        "{p:?} misses {centre} but is {f} at {at}"
+                    );
+                }
+                tight += usize::from(hi - lo < 0.5);
+                missed += usize::from(misses);
+            }
+            assert!(
+                tight > 100 && missed > 20,
+                "{p:?}: {tight} tight, {missed} missed"
+            );
         }
     }
 }

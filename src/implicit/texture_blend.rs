@@ -38,10 +38,16 @@ impl Texture {
         }
     }
 
-    /// The position along the curve at the point `p`, as a turn in [0, 1).
-    fn along_at(&self, p: DVec3) -> f64 {
+    /// The direction of the point `p` about the w axis, as (cos, sin) of its angle from +u:
+    /// the position along the curve, without trigonometry. (1, 0) on the axis itself.
+    fn direction_at(&self, p: DVec3) -> (f64, f64) {
         let q = self.frame.transform_point3(p);
-        (libm::atan2(q.y, q.x) / TAU).rem_euclid(1.0)
+        let length = (q.x * q.x + q.y * q.y).sqrt();
+        if length > 0.0 {
+            (q.x / length, q.y / length)
+        } else {
+            (1.0, 0.0)
+        }
     }
 }
 
@@ -59,11 +65,11 @@ pub struct Paint {
 impl Paint {
     /// A primitive's coordinates at local point `p`, weighted by its field `f`.
     pub fn of(texture: &Texture, p: DVec3, f: f64) -> Self {
-        let angle = texture.along_at(p) * TAU;
+        let (cos, sin) = texture.direction_at(p);
         Self {
             weight: f,
-            cos: f * libm::cos(angle),
-            sin: f * libm::sin(angle),
+            cos: f * cos,
+            sin: f * sin,
             time: f * texture.time,
             inner: false,
         }

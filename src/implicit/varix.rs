@@ -242,16 +242,7 @@ fn spine(spec: &VaricesSpec, s: &Standing, sigma_max: f64, thinnest: f64, time: 
         },
         Texture::around(time).moved(frame),
     );
-    Node::transform(
-        frame,
-        Node::warp(
-            Bend {
-                angle: bend,
-                length,
-            },
-            cone,
-        ),
-    )
+    Node::transform(frame, Node::warp(Bend::new(bend, length), cone))
 }
 
 /// The bend in radians of a cone of `length` and largest surface radius `radius` bent by
