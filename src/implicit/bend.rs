@@ -52,52 +52,63 @@ impl Bend {
         DVec3::new(rho * s + beyond * c, (r - rho * c + beyond * s) * sign, q.z)
     }
 
+    /// Which of the three regions the bent point `p` lies in, with its offset d from the
+    /// centre of curvature (0, r) in the bending plane.
+    fn place(&self, p: DVec3) -> Place {
+        if self.angle == 0.0 {
+            return Place::Unbent;
+        }
+        let d = DVec2::new(p.x, p.y * self.angle.signum() - self.radius());
+        if d.x < 0.0 {
+            Place::Unbent
+        } else if d.dot(self.end) > 0.0 {
+            Place::Beyond(d)
+        } else {
+            Place::Arc(d)
+        }
+    }
+
+    /// Where the bent point `p`, in region `place`, came from.
+    fn unbend(&self, p: DVec3, place: Place) -> DVec3 {
+        let (sign, r, end) = (self.angle.signum(), self.radius(), self.end);
+        match place {
+            Place::Unbent => p,
+            Place::Beyond(d) => {
+                let rho = d.dot(DVec2::new(end.y, -end.x));
+                DVec3::new(self.length + d.dot(end), (r - rho) * sign, p.z)
+            }
+            Place::Arc(d) => {
+                let theta = libm::atan2(d.x, -d.y);
+                DVec3::new(theta * r, (r - d.length()) * sign, p.z)
+            }
+        }
+    }
+
     /// Where the bent point `p` came from: the map fields are evaluated through.
     pub fn inverse(&self, p: DVec3) -> DVec3 {
-        if self.angle == 0.0 {
-            return p;
-        }
-        let sign = self.angle.signum();
-        let (r, end) = (self.radius(), self.end);
-        // Relative to the centre of curvature (0, r).
-        let d = DVec2::new(p.x, p.y * sign - r);
-        if d.x < 0.0 {
-            return p;
-        }
-        let beyond = d.dot(end);
-        if beyond > 0.0 {
-            let rho = d.dot(DVec2::new(end.y, -end.x));
-            return DVec3::new(self.length + beyond, (r - rho) * sign, p.z);
-        }
-        let theta = libm::atan2(d.x, -d.y);
-        DVec3::new(theta * r, (r - d.length()) * sign, p.z)
+        self.unbend(p, self.place(p))
     }
 
     /// [`Bend::inverse`] at `p` with its Jacobian J (dq = J dp), so that a field evaluated
     /// through the bend has the gradient Jᵀ ∇f: exact in each of the three regions.
     pub fn inverse_with_jacobian(&self, p: DVec3) -> (DVec3, DMat3) {
-        let q = self.inverse(p);
-        if self.angle == 0.0 {
-            return (q, DMat3::IDENTITY);
-        }
-        let sign = self.angle.signum();
-        let (r, end) = (self.radius(), self.end);
-        let d = DVec2::new(p.x, p.y * sign - r);
-        if d.x < 0.0 {
-            return (q, DMat3::IDENTITY);
-        }
+        let place = self.place(p);
+        let q = self.unbend(p, place);
+        let (sign, r, end) = (self.angle.signum(), self.radius(), self.end);
         // Rows of J in the xy plane: ∂q.x/∂(p.x, p.y) and ∂q.y/∂(p.x, p.y).
-        let (row_x, row_y) = if d.dot(end) > 0.0 {
-            (
+        let (row_x, row_y) = match place {
+            Place::Unbent => return (q, DMat3::IDENTITY),
+            Place::Beyond(_) => (
                 DVec2::new(end.x, end.y * sign),
                 DVec2::new(-end.y * sign, end.x),
-            )
-        } else {
-            let (len2, len) = (d.length_squared(), d.length());
-            (
-                DVec2::new(-d.y, d.x * sign) * (r / len2),
-                DVec2::new(-d.x * sign, -d.y) / len,
-            )
+            ),
+            Place::Arc(d) => {
+                let (len2, len) = (d.length_squared(), d.length());
+                (
+                    DVec2::new(-d.y, d.x * sign) * (r / len2),
+                    DVec2::new(-d.x * sign, -d.y) / len,
+                )
+            }
         };
         let jacobian = DMat3::from_cols(
             DVec3::new(row_x.x, row_y.x, 0.0),
@@ -136,37 +147,46 @@ impl Bend {
         }
     }
 
-    /// How much the inverse map can stretch distances within the ball of `reach` about
-    /// `centre` (in the bent space): along the arc r / ρ at the distance ρ from the centre of
-    /// curvature, rigid before and beyond it; infinite when the ball reaches that centre.
-    pub fn stretch_within(&self, centre: DVec3, reach: f64) -> f64 {
+    /// A ball (centre, radius) in the unbent space holding the inverse image of the ball of
+    /// `reach` about `centre`: the inverse stretches distances along the arc by r / ρ at the
+    /// distance ρ from the centre of curvature and is rigid before and beyond it. `None` when
+    /// the ball reaches the centre of curvature, where the stretch is unbounded.
+    pub fn inverse_ball(&self, centre: DVec3, reach: f64) -> Option<(DVec3, f64)> {
         if self.angle == 0.0 {
-            return 1.0;
+            return Some((centre, reach));
         }
         let r = self.radius();
         let nearest = DVec2::new(centre.x, centre.y * self.angle.signum() - r).length() - reach;
-        if nearest <= 0.0 {
-            f64::INFINITY
-        } else {
-            (r / nearest).max(1.0)
-        }
+        (nearest > 0.0).then(|| (self.inverse(centre), reach * (r / nearest).max(1.0)))
     }
+}
+
+/// Where a bent point lies: before the slab or unbent, beyond the arc's end, or along the arc,
+/// with its offset from the centre of curvature.
+#[derive(Clone, Copy)]
+enum Place {
+    Unbent,
+    Beyond(DVec2),
+    Arc(DVec2),
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// Unbent points before, along and beyond the slab of a bend of length 2.
+    const UNBENT: [DVec3; 4] = [
+        DVec3::new(-0.5, 0.1, 0.2),
+        DVec3::new(0.7, -0.2, 0.0),
+        DVec3::new(1.9, 0.3, -0.1),
+        DVec3::new(2.6, 0.05, 0.4),
+    ];
+
     #[test]
     fn inverse_undoes_forward_before_along_and_beyond_the_arc() {
         for angle in [30f64, -30.0, 9.0, 90.0] {
             let bend = Bend::new(angle.to_radians(), 2.0);
-            for q in [
-                DVec3::new(-0.5, 0.1, 0.2),
-                DVec3::new(0.7, -0.2, 0.0),
-                DVec3::new(1.9, 0.3, -0.1),
-                DVec3::new(2.6, 0.05, 0.4),
-            ] {
+            for q in UNBENT {
                 let back = bend.inverse(bend.forward(q));
                 assert!(back.distance(q) < 1e-12, "{angle}°: {q} → {back}");
             }
@@ -177,12 +197,7 @@ mod tests {
     fn the_jacobian_matches_differences_of_the_inverse_in_every_region() {
         for angle in [30f64, -45.0, 90.0] {
             let bend = Bend::new(angle.to_radians(), 2.0);
-            for q in [
-                DVec3::new(-0.5, 0.1, 0.2),
-                DVec3::new(0.7, -0.2, 0.0),
-                DVec3::new(1.9, 0.3, -0.1),
-                DVec3::new(2.6, 0.05, 0.4),
-            ] {
+            for q in UNBENT {
                 let p = bend.forward(q);
                 let (back, j) = bend.inverse_with_jacobian(p);
                 assert_eq!(back, bend.inverse(p));

@@ -214,10 +214,16 @@ impl Node {
             Op::Union(c) => fold(c, |n| n.field(p), f64::max, 0.0),
             Op::Intersection(c) => fold(c, |n| n.field(p), f64::min, f64::INFINITY),
             Op::Difference(a, b) => difference(a.field(p), b.field(p)),
-            Op::Superelliptic(n, c) => with_fields(c, p, |fields| superelliptic(*n, fields)),
-            Op::Controlled(c, pairs) => with_fields(c, p, |fields| {
-                controlled(fields.len(), |i| fields[i], pairs).0
-            }),
+            Op::Superelliptic(n, c) => with_children(
+                c,
+                |child| child.field(p),
+                |fields| superelliptic(*n, fields),
+            ),
+            Op::Controlled(c, pairs) => with_children(
+                c,
+                |child| child.field(p),
+                |fields| controlled(fields.len(), |i| fields[i], pairs).0,
+            ),
             Op::Warp(bend, child) => child.field(bend.inverse(p)),
             Op::Transform(affine, child) => child.field(affine.inverse.transform_point3(p)),
         }
@@ -248,21 +254,25 @@ impl Node {
                     gradient: sum.gradient + x.gradient,
                     paint: sum.paint + x.paint,
                 }),
-            Op::Superelliptic(n, c) => with_probes(c, p, |parts| {
-                let fields = |i: usize| parts[i].field;
-                let f = superelliptic_of(*n, parts.len(), fields);
-                let mut out = Probe {
-                    field: f,
-                    ..Probe::default()
-                };
-                for part in parts {
-                    out.paint = out.paint + part.paint;
-                    if part.field > 0.0 {
-                        out.gradient += part.gradient * libm::pow(part.field / f, n - 1.0);
+            Op::Superelliptic(n, c) => with_children(
+                c,
+                |child| child.probe(p),
+                |parts| {
+                    let fields = |i: usize| parts[i].field;
+                    let f = superelliptic_of(*n, parts.len(), fields);
+                    let mut out = Probe {
+                        field: f,
+                        ..Probe::default()
+                    };
+                    for part in parts {
+                        out.paint = out.paint + part.paint;
+                        if part.field > 0.0 {
+                            out.gradient += part.gradient * libm::pow(part.field / f, n - 1.0);
+                        }
                     }
-                }
-                out
-            }),
+                    out
+                },
+            ),
             Op::Union(c) => strongest(c.iter().map(|n| n.probe(p)), |a, b| a > b),
             Op::Intersection(c) => strongest(c.iter().map(|n| n.probe(p)), |a, b| a < b),
             Op::Difference(a, b) => {
@@ -278,21 +288,25 @@ impl Node {
                     }
                 }
             }
-            Op::Controlled(c, pairs) => with_probes(c, p, |parts| {
-                let (f, [i, k]) = controlled(parts.len(), |i| parts[i].field, pairs);
-                if i == k {
-                    Probe {
-                        field: f,
-                        ..parts[i]
+            Op::Controlled(c, pairs) => with_children(
+                c,
+                |child| child.probe(p),
+                |parts| {
+                    let (f, [i, k]) = controlled(parts.len(), |i| parts[i].field, pairs);
+                    if i == k {
+                        Probe {
+                            field: f,
+                            ..parts[i]
+                        }
+                    } else {
+                        Probe {
+                            field: f,
+                            gradient: parts[i].gradient + parts[k].gradient,
+                            paint: parts[i].paint + parts[k].paint,
+                        }
                     }
-                } else {
-                    Probe {
-                        field: f,
-                        gradient: parts[i].gradient + parts[k].gradient,
-                        paint: parts[i].paint + parts[k].paint,
-                    }
-                }
-            }),
+                },
+            ),
             Op::Warp(bend, child) => {
                 let (q, jacobian) = bend.inverse_with_jacobian(p);
                 let inner = child.probe(q);
@@ -362,14 +376,10 @@ impl Node {
                 let of = |v: &[f64]| controlled(v.len(), |i| v[i], pairs).0;
                 (of(&lo), of(&hi))
             }
-            Op::Warp(bend, child) => {
-                let stretch = bend.stretch_within(centre, reach);
-                if stretch.is_finite() {
-                    child.range(bend.inverse(centre), reach * stretch)
-                } else {
-                    (0.0, f64::INFINITY)
-                }
-            }
+            Op::Warp(bend, child) => match bend.inverse_ball(centre, reach) {
+                Some((centre, reach)) => child.range(centre, reach),
+                None => (0.0, f64::INFINITY),
+            },
             Op::Transform(affine, child) => child.range(
                 affine.inverse.transform_point3(centre),
                 reach * affine.stretch,
@@ -394,8 +404,9 @@ impl Node {
         };
         match &self.op {
             Op::Leaf(primitive, _) => {
+                // Tighter than the boxes for long slanted cones and the hole of a torus.
                 let reach = (region.max - region.min).length() * 0.5;
-                (!primitive.misses(region.center(), reach)).then(|| self.clone())
+                (primitive.range(region.center(), reach).1 > 0.0).then(|| self.clone())
             }
             Op::Blend(c) => many(c, &Node::blend),
             Op::Union(c) => many(c, &Node::union),
@@ -434,20 +445,16 @@ impl Node {
                 }
             }
             Op::Warp(bend, child) => {
-                // The region's ball maps through the inverse bend into a ball stretched by at
-                // most the bend's stretch there; where that is unbounded, the whole child is
-                // kept.
+                // The ball around the region maps through the inverse bend into a ball;
+                // where that is unbounded, the whole child is kept.
                 let region = region.intersection(&self.bounds);
                 let reach = (region.max - region.min).length() * 0.5;
-                let stretch = bend.stretch_within(region.center(), reach);
-                let local = if stretch.is_finite() {
-                    let centre = bend.inverse(region.center());
-                    Bounds {
-                        min: centre - reach * stretch,
-                        max: centre + reach * stretch,
-                    }
-                } else {
-                    child.bounds
+                let local = match bend.inverse_ball(region.center(), reach) {
+                    Some((centre, reach)) => Bounds {
+                        min: centre - reach,
+                        max: centre + reach,
+                    },
+                    None => child.bounds,
                 };
                 let child = child.cull(&local, step)?;
                 Some(Node::warp(*bend, child))
@@ -464,32 +471,22 @@ impl Node {
     }
 }
 
-/// The few children a culled tree has are kept on the stack.
-const FEW: usize = 16;
-
-/// Calls `f` with the children's fields at `p`.
-fn with_fields(children: &[Node], p: DVec3, f: impl FnOnce(&[f64]) -> f64) -> f64 {
+/// Calls `f` with what `each` gives for every child, kept on the stack for the few children a
+/// culled tree has.
+fn with_children<T: Copy + Default, R>(
+    children: &[Node],
+    each: impl Fn(&Node) -> T,
+    f: impl FnOnce(&[T]) -> R,
+) -> R {
+    const FEW: usize = 16;
     if children.len() <= FEW {
-        let mut fields = [0.0; FEW];
-        for (slot, child) in fields.iter_mut().zip(children) {
-            *slot = child.field(p);
+        let mut values = [T::default(); FEW];
+        for (slot, child) in values.iter_mut().zip(children) {
+            *slot = each(child);
         }
-        f(&fields[..children.len()])
+        f(&values[..children.len()])
     } else {
-        f(&children.iter().map(|c| c.field(p)).collect::<Vec<f64>>())
-    }
-}
-
-/// Calls `f` with the children's probes at `p`.
-fn with_probes(children: &[Node], p: DVec3, f: impl FnOnce(&[Probe]) -> Probe) -> Probe {
-    if children.len() <= FEW {
-        let mut probes = [Probe::default(); FEW];
-        for (slot, child) in probes.iter_mut().zip(children) {
-            *slot = child.probe(p);
-        }
-        f(&probes[..children.len()])
-    } else {
-        f(&children.iter().map(|c| c.probe(p)).collect::<Vec<Probe>>())
+        f(&children.iter().map(each).collect::<Vec<T>>())
     }
 }
 

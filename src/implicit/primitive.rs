@@ -40,13 +40,8 @@ impl Primitive {
                 falloff(p.distance_squared(centre) / (radius * radius))
             }
             Primitive::Cone { from, to, radii } => {
-                let axis = to - from;
-                let length2 = axis.length_squared();
-                let t = if length2 > 0.0 {
-                    ((p - from).dot(axis) / length2).clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
+                let (axis, _, t) = projection(p, from, to);
+                let t = t.clamp(0.0, 1.0);
                 let r = radii[0] + t * (radii[1] - radii[0]);
                 falloff(p.distance_squared(from + t * axis) / (r * r))
             }
@@ -56,9 +51,8 @@ impl Primitive {
                 major,
                 radius,
             } => {
-                let q = p - centre;
-                let h = q.dot(axis);
-                let rho = (q - h * axis).length() - major;
+                let (h, _, length) = ring_offset(p, centre, axis);
+                let rho = length - major;
                 falloff((rho * rho + h * h) / (radius * radius))
             }
         }
@@ -73,14 +67,9 @@ impl Primitive {
                 (p.distance_squared(centre) / r2, (p - centre) * (2.0 / r2))
             }
             Primitive::Cone { from, to, radii } => {
-                let axis = to - from;
-                let length2 = axis.length_squared();
-                let (t, free) = if length2 > 0.0 {
-                    let t = (p - from).dot(axis) / length2;
-                    (t.clamp(0.0, 1.0), t > 0.0 && t < 1.0)
-                } else {
-                    (0.0, false)
-                };
+                let (axis, length2, t) = projection(p, from, to);
+                let free = t > 0.0 && t < 1.0;
+                let t = t.clamp(0.0, 1.0);
                 let r = radii[0] + t * (radii[1] - radii[0]);
                 let v = p - (from + t * axis);
                 let d2 = p.distance_squared(from + t * axis) / (r * r);
@@ -98,10 +87,7 @@ impl Primitive {
                 major,
                 radius,
             } => {
-                let q = p - centre;
-                let h = q.dot(axis);
-                let ring = q - h * axis;
-                let length = ring.length();
+                let (h, ring, length) = ring_offset(p, centre, axis);
                 let rho = length - major;
                 let r2 = radius * radius;
                 let outward = if length > 0.0 {
@@ -179,15 +165,9 @@ impl Primitive {
         let (distance, [thin, thick]) = match *self {
             Primitive::Point { centre: c, radius } => (centre.distance(c), [radius, radius]),
             Primitive::Cone { from, to, radii } => {
-                let axis = to - from;
-                let length2 = axis.length_squared();
-                let t = if length2 > 0.0 {
-                    ((centre - from).dot(axis) / length2).clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
+                let (axis, _, t) = projection(centre, from, to);
                 (
-                    centre.distance(from + t * axis),
+                    centre.distance(from + t.clamp(0.0, 1.0) * axis),
                     [radii[0].min(radii[1]), radii[0].max(radii[1])],
                 )
             }
@@ -197,9 +177,8 @@ impl Primitive {
                 major,
                 radius,
             } => {
-                let q = centre - c;
-                let h = q.dot(axis);
-                let rho = (q - h * axis).length() - major;
+                let (h, _, length) = ring_offset(centre, c, axis);
+                let rho = length - major;
                 ((rho * rho + h * h).sqrt(), [radius, radius])
             }
         };
@@ -207,39 +186,28 @@ impl Primitive {
         let far = (distance + reach) / thin;
         (falloff(far * far), falloff(near * near))
     }
+}
 
-    /// Whether the field is zero throughout the ball of `radius` about `centre`: the ball lies
-    /// farther from the skeleton than the field radius. Tighter than the box for long slanted
-    /// cones and for the hole of a torus.
-    pub fn misses(&self, centre: DVec3, radius: f64) -> bool {
-        match *self {
-            Primitive::Point {
-                centre: c,
-                radius: r,
-            } => centre.distance(c) > r + radius,
-            Primitive::Cone { from, to, radii } => {
-                let axis = to - from;
-                let length2 = axis.length_squared();
-                let t = if length2 > 0.0 {
-                    ((centre - from).dot(axis) / length2).clamp(0.0, 1.0)
-                } else {
-                    0.0
-                };
-                centre.distance(from + t * axis) > radii[0].max(radii[1]) + radius
-            }
-            Primitive::Torus {
-                centre: c,
-                axis,
-                major,
-                radius: r,
-            } => {
-                let q = centre - c;
-                let h = q.dot(axis);
-                let rho = (q - h * axis).length() - major;
-                (rho * rho + h * h).sqrt() > r + radius
-            }
-        }
-    }
+/// The cone's axis `to − from`, its squared length and the parameter t of the projection of `p`
+/// onto the axis's line (0 for a cone of no length), before any clamping.
+fn projection(p: DVec3, from: DVec3, to: DVec3) -> (DVec3, f64, f64) {
+    let axis = to - from;
+    let length2 = axis.length_squared();
+    let t = if length2 > 0.0 {
+        (p - from).dot(axis) / length2
+    } else {
+        0.0
+    };
+    (axis, length2, t)
+}
+
+/// `p` relative to a torus's circle about `axis` through `centre`: its height h along the
+/// axis, its offset from the axis within the circle's plane, and that offset's length.
+fn ring_offset(p: DVec3, centre: DVec3, axis: DVec3) -> (f64, DVec3, f64) {
+    let q = p - centre;
+    let h = q.dot(axis);
+    let ring = q - h * axis;
+    (h, ring, ring.length())
 }
 
 #[cfg(test)]
@@ -366,7 +334,7 @@ mod tests {
                 let centre = point(f64::from(i) * 1.3) * 1.5;
                 let reach = 0.05 + 0.3 * f64::from(i % 7) / 7.0;
                 let (lo, hi) = p.range(centre, reach);
-                let misses = p.misses(centre, reach);
+                let misses = hi == 0.0;
                 for j in 0..60 {
                     let at = centre + point(f64::from(j) * 2.1 + 0.5) * reach / 1.8;
                     let f = p.field(at);
