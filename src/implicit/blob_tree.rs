@@ -13,6 +13,7 @@ use super::primitive::Primitive;
 use super::texture_blend::{Paint, Texture};
 use crate::mesh::Bounds;
 use glam::{DAffine3, DMat3, DVec3};
+use std::rc::Rc;
 
 /// An affine map with its inverse (fields are evaluated through the inverse).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,10 +52,13 @@ fn spectral_norm(m: DMat3) -> f64 {
     lambda.sqrt() * 1.001
 }
 
+/// Bounds (lowest, highest) on a field over a region.
+pub type Range = (f64, f64);
+
 /// What a node does.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Op {
-    Leaf(Primitive, Box<Texture>),
+    Leaf(Primitive, Rc<Texture>),
     /// + : the sum of the fields: everything blends with everything.
     Blend(Vec<Node>),
     /// ∪ : the largest field.
@@ -116,7 +120,7 @@ impl Node {
     }
 
     pub fn leaf(primitive: Primitive, texture: Texture) -> Self {
-        Self::new(Op::Leaf(primitive, Box::new(texture)))
+        Self::new(Op::Leaf(primitive, Rc::new(texture)))
     }
 
     /// Blends nested in the children are spliced in: the sum is associative.
@@ -329,7 +333,7 @@ impl Node {
     /// carried up the tree by interval arithmetic: every operator but the difference is
     /// increasing in each child's field, so it maps the children's bounds to its own; the ball
     /// passes through transforms and bends stretched by at most their stretch there.
-    pub fn range(&self, centre: DVec3, reach: f64) -> (f64, f64) {
+    pub fn range(&self, centre: DVec3, reach: f64) -> Range {
         let ball = Bounds {
             min: centre - reach,
             max: centre + reach,
@@ -337,27 +341,23 @@ impl Node {
         if !self.bounds.intersects(&ball) {
             return (0.0, 0.0);
         }
-        let each = |c: &[Node]| -> (Vec<f64>, Vec<f64>) {
-            c.iter().map(|n| n.range(centre, reach)).unzip()
+        let each = |c: &[Node], f: &dyn Fn(&[Range]) -> Range| {
+            with_children(c, |n| n.range(centre, reach), f)
         };
         match &self.op {
             Op::Leaf(primitive, _) => primitive.range(centre, reach),
-            Op::Blend(c) => {
-                let (lo, hi) = each(c);
-                (lo.iter().sum(), hi.iter().sum())
-            }
-            Op::Union(c) => {
-                let (lo, hi) = each(c);
-                (
-                    lo.into_iter().fold(0.0, f64::max),
-                    hi.into_iter().fold(0.0, f64::max),
-                )
-            }
-            Op::Intersection(c) => {
-                let (lo, hi) = each(c);
-                let least = |v: Vec<f64>| v.into_iter().fold(f64::INFINITY, f64::min);
-                (least(lo), least(hi))
-            }
+            Op::Blend(c) => each(c, &|r| {
+                r.iter().fold((0.0, 0.0), |s, x| (s.0 + x.0, s.1 + x.1))
+            }),
+            Op::Union(c) => each(c, &|r| {
+                r.iter()
+                    .fold((0.0, 0.0), |s, x| (s.0.max(x.0), s.1.max(x.1)))
+            }),
+            Op::Intersection(c) => each(c, &|r| {
+                r.iter().fold((f64::INFINITY, f64::INFINITY), |s, x| {
+                    (s.0.min(x.0), s.1.min(x.1))
+                })
+            }),
             Op::Difference(a, b) => {
                 let ((la, ha), (lb, hb)) = (a.range(centre, reach), b.range(centre, reach));
                 let hi = if lb == 0.0 {
@@ -367,15 +367,18 @@ impl Node {
                 };
                 (la.min(2.0 * ISO - hb).max(0.0), hi)
             }
-            Op::Superelliptic(n, c) => {
-                let (lo, hi) = each(c);
-                (superelliptic(*n, &lo), superelliptic(*n, &hi))
-            }
-            Op::Controlled(c, pairs) => {
-                let (lo, hi) = each(c);
-                let of = |v: &[f64]| controlled(v.len(), |i| v[i], pairs).0;
-                (of(&lo), of(&hi))
-            }
+            Op::Superelliptic(n, c) => each(c, &|r| {
+                (
+                    superelliptic_of(*n, r.len(), |i| r[i].0),
+                    superelliptic_of(*n, r.len(), |i| r[i].1),
+                )
+            }),
+            Op::Controlled(c, pairs) => each(c, &|r| {
+                (
+                    controlled(r.len(), |i| r[i].0, pairs).0,
+                    controlled(r.len(), |i| r[i].1, pairs).0,
+                )
+            }),
             Op::Warp(bend, child) => match bend.inverse_ball(centre, reach) {
                 Some((centre, reach)) => child.range(centre, reach),
                 None => (0.0, f64::INFINITY),
@@ -457,7 +460,12 @@ impl Node {
                     None => child.bounds,
                 };
                 let child = child.cull(&local, step)?;
-                Some(Node::warp(*bend, child))
+                // The bent box of the whole child still holds the culled child's field, and
+                // bending a box anew would cost more than the cull saves.
+                Some(Node {
+                    op: Op::Warp(*bend, Box::new(child)),
+                    ..*self
+                })
             }
             Op::Transform(affine, child) => {
                 let mut local = Bounds::EMPTY;
@@ -465,7 +473,10 @@ impl Node {
                     local.include(affine.inverse.transform_point3(corner));
                 }
                 let child = child.cull(&local, step)?;
-                Some(Node::new(Op::Transform(affine.clone(), Box::new(child))))
+                Some(Node {
+                    op: Op::Transform(affine.clone(), Box::new(child)),
+                    ..*self
+                })
             }
         }
     }
@@ -507,7 +518,7 @@ fn similarity_scale(m: DAffine3) -> Option<f64> {
 fn push(op: Op, m: DAffine3, scale: f64) -> Op {
     let all = |c: Vec<Node>| c.into_iter().map(|n| Node::transform(m, n)).collect();
     match op {
-        Op::Leaf(p, t) => Op::Leaf(p.moved(&m, scale), Box::new(t.moved(m.inverse()))),
+        Op::Leaf(p, t) => Op::Leaf(p.moved(&m, scale), Rc::new(t.moved(m.inverse()))),
         Op::Blend(c) => Op::Blend(all(c)),
         Op::Union(c) => Op::Union(all(c)),
         Op::Intersection(c) => Op::Intersection(all(c)),

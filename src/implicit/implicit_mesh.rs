@@ -155,7 +155,7 @@ impl GrowingShape for ImplicitMesh {
             chunk,
             instance,
             &mut self.scratch,
-            &mut cache,
+            Some(&mut cache),
             Some(&self.reach[instance as usize]),
         );
         if self.last_reach[linear] != instance {
@@ -181,7 +181,6 @@ impl GrowingShape for ImplicitMesh {
         self.pending.clear();
         self.live.clear();
         self.caches.clear();
-        let mut cache = ChunkCache::default();
         for (linear, &reach) in self.last_reach.iter().enumerate() {
             if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
                 let chunk = self.grid.chunk_at(linear);
@@ -191,7 +190,7 @@ impl GrowingShape for ImplicitMesh {
                     chunk,
                     last,
                     &mut self.scratch,
-                    &mut cache,
+                    None,
                     None,
                 ));
             }

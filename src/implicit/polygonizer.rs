@@ -170,20 +170,134 @@ fn local(i: [usize; 3]) -> usize {
     i[0] + SIDE * (i[1] + SIDE * i[2])
 }
 
-/// Whether the field of `tree` is proven to stay on one side of the iso-value throughout
-/// `region`, by the bounds [`Node::range`] gives over the ball around it. Most chunks near a
-/// surface hold none of it (about two thirds of those a Murex's boxes reach at 256³), and this
-/// spares sampling them.
-fn one_side(tree: &Node, region: &Bounds) -> bool {
+/// Which side of the iso-value the field of `tree` is proven to keep throughout `region`, by
+/// the bounds [`Node::range`] gives over the ball around it: `Some(true)` inside, `Some(false)`
+/// outside, `None` when the bounds allow both.
+fn one_side(tree: &Node, region: &Bounds) -> Option<bool> {
     let (lo, hi) = tree.range(region.center(), (region.max - region.min).length() * 0.5);
     // A margin for the rounding of the bounds themselves.
     const MARGIN: f64 = 1e-9;
-    hi < ISO - MARGIN || lo > ISO + MARGIN
+    if lo > ISO + MARGIN {
+        Some(true)
+    } else if hi < ISO - MARGIN {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// What a sample proven inside (outside) by [`one_side`] holds instead of its field, which is
+/// never computed: +∞ (−∞). Only its side matters: a grid edge the surface crosses has both
+/// its ends outside every proven block, since a proven block holds no crossing.
+fn proven(inside: bool) -> f64 {
+    if inside {
+        f64::INFINITY
+    } else {
+        f64::NEG_INFINITY
+    }
+}
+
+/// Blocks of at most this many voxels along a side are sampled whole; larger ones are proven
+/// one-sided or split in eight.
+const SAMPLED_BLOCK: usize = 2;
+/// Voxels along each side of a chunk's octant: each octant is sampled and meshed with the
+/// tree culled to it, smaller and cheaper to evaluate than the chunk's.
+const OCTANT: usize = CHUNK as usize / 2;
+
+/// The octant of a chunk that voxel `v` of it lies in, numbered as voxel corners are.
+fn octant_of(v: [usize; 3]) -> usize {
+    (0..3).map(|k| (v[k] / OCTANT) << k).sum()
+}
+
+/// The samples of one chunk, filled block by block.
+struct Sampler<'a> {
+    grid: &'a Grid,
+    /// Global index of the chunk's first sample.
+    first: [i64; 3],
+    /// The chunk's samples; NaN where not yet filled.
+    field: &'a mut [f64],
+    /// The box the tree changed in since the samples in the slice were taken.
+    reuse: Option<(&'a Bounds, &'a [f64])>,
+}
+
+impl Sampler<'_> {
+    /// The box of the block of `size` voxels whose first sample is `at` (in the chunk).
+    fn region(&self, at: [usize; 3], size: usize) -> Bounds {
+        let corner = |d: usize| {
+            self.grid
+                .sample(std::array::from_fn(|k| self.first[k] + (at[k] + d) as i64))
+        };
+        Bounds {
+            min: corner(0),
+            max: corner(size),
+        }
+    }
+
+    /// Fills the samples of the block of `size` voxels at `at`: marked [`proven`] when the
+    /// range of `tree` keeps it on one side, else split in eight, down to blocks of
+    /// [`SAMPLED_BLOCK`] whose samples are evaluated. Near a surface most blocks hold none of
+    /// it, and so most samples of a chunk the surface passes through are never evaluated.
+    fn block(&mut self, tree: &Node, at: [usize; 3], size: usize) {
+        if let Some(inside) = one_side(tree, &self.region(at, size)) {
+            self.mark(at, size, inside);
+        } else if size > SAMPLED_BLOCK {
+            let half = size / 2;
+            for octant in 0..8 {
+                let o = offset(octant);
+                self.block(tree, std::array::from_fn(|k| at[k] + o[k] * half), half);
+            }
+        } else {
+            let (grid, first, reuse) = (self.grid, self.first, self.reuse);
+            self.each(at, size, |i, f| {
+                if f.is_finite() {
+                    return;
+                }
+                let p = grid.sample(std::array::from_fn(|k| first[k] + i[k] as i64));
+                *f = match reuse {
+                    Some((changed, old)) if !changed.contains(p) && old[local(i)].is_finite() => {
+                        old[local(i)]
+                    }
+                    _ => tree.field(p),
+                };
+            });
+        }
+    }
+
+    /// Marks the samples of a block not filled yet as [`proven`] on one side.
+    fn mark(&mut self, at: [usize; 3], size: usize, inside: bool) {
+        self.each(at, size, |_, f| {
+            if f.is_nan() {
+                *f = proven(inside);
+            }
+        });
+    }
+
+    /// Calls `f` with the index and the sample of every sample of the block of `size` voxels
+    /// at `at`, its faces included.
+    fn each(&mut self, at: [usize; 3], size: usize, mut f: impl FnMut([usize; 3], &mut f64)) {
+        for z in at[2]..=at[2] + size {
+            for y in at[1]..=at[1] + size {
+                for x in at[0]..=at[0] + size {
+                    f([x, y, z], &mut self.field[local([x, y, z])]);
+                }
+            }
+        }
+    }
+}
+
+/// The trees a chunk the surface passes through is meshed with.
+struct Culled {
+    /// Culled to the chunk and one voxel more on every side: the neighbours that decide a
+    /// pinhole (see `class`).
+    chunk: Node,
+    /// Culled to each octant ([`octant_of`]); `None` where the field is zero throughout it.
+    octants: [Option<Node>; 8],
 }
 
 /// Samples the field of `tree` at growth step `step` at a chunk's corners into `field`, and
-/// gives the tree culled to the chunk; `None` when the surface does not pass through it
-/// (proven by the culled tree or the field's range, or seen in the samples).
+/// gives the trees culled to the chunk and its octants; `None` when the surface does not pass
+/// through it (proven by the culled tree or the field's range, or seen in the samples).
+/// Samples in blocks proven one-sided hold [`proven`] values.
 fn sample(
     tree: &Node,
     grid: &Grid,
@@ -191,32 +305,33 @@ fn sample(
     step: u32,
     field: &mut Vec<f64>,
     reuse: Option<(&Bounds, &[f64])>,
-) -> Option<Node> {
+) -> Option<Culled> {
     let region = grid.region(chunk);
-    // One voxel more on every side: the neighbours that decide a pinhole (see `class`).
     let tree = tree.cull(&region.padded(grid.voxel), step)?;
-    if one_side(&tree, &region) {
-        return None;
-    }
-    let first = Grid::first_sample(chunk);
+    one_side(&tree, &region).is_none().then_some(())?;
     field.clear();
-    let (mut inside, mut outside) = (false, false);
-    for z in 0..SIDE {
-        for y in 0..SIDE {
-            for x in 0..SIDE {
-                let at = [x, y, z].map(|i| i as i64);
-                let p = grid.sample(std::array::from_fn(|k| first[k] + at[k]));
-                let f = match reuse {
-                    Some((changed, old)) if !changed.contains(p) => old[field.len()],
-                    _ => tree.field(p),
-                };
-                inside |= f >= ISO;
-                outside |= f < ISO;
-                field.push(f);
-            }
+    field.resize(SIDE * SIDE * SIDE, f64::NAN);
+    let mut sampler = Sampler {
+        grid,
+        first: Grid::first_sample(chunk),
+        field,
+        reuse,
+    };
+    let octants = std::array::from_fn(|octant| {
+        let at = offset(octant).map(|o| o * OCTANT);
+        let culled = tree.cull(&sampler.region(at, OCTANT), step);
+        match &culled {
+            Some(t) => sampler.block(t, at, OCTANT),
+            None => sampler.mark(at, OCTANT, false),
         }
-    }
-    (inside && outside).then_some(tree)
+        culled
+    });
+    let inside = field.iter().any(|&f| f >= ISO);
+    let outside = field.iter().any(|&f| f < ISO);
+    (inside && outside).then_some(Culled {
+        chunk: tree,
+        octants,
+    })
 }
 
 /// Classifies a chunk's samples (`field`, the chunk's first sample at global index `first`)
@@ -290,26 +405,35 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
 
 /// The mesh of the surface of `tree` at growth step `step` inside one chunk; empty when the
 /// chunk is proven to hold none of it. With `changed`, the tree differs from when `cache` was
-/// left only inside that box; the cache is rewritten either way.
+/// left only inside that box; the cache, when there is one, is rewritten either way.
 pub fn mesh_chunk(
     tree: &Node,
     grid: &Grid,
     chunk: ChunkIndex,
     step: u32,
     scratch: &mut Scratch,
-    cache: &mut ChunkCache,
+    cache: Option<&mut ChunkCache>,
     changed: Option<&Bounds>,
 ) -> Mesh {
-    let changed = changed.filter(|_| !cache.field.is_empty());
-    let reuse = changed.map(|b| (b, cache.field.as_slice()));
-    let Some(tree) = sample(tree, grid, chunk, step, &mut scratch.field, reuse) else {
-        cache.field.clear();
-        cache.vertices.clear();
+    let old = cache.as_deref().filter(|c| !c.field.is_empty());
+    let changed = changed.filter(|_| old.is_some());
+    let reuse = changed.zip(old).map(|(b, c)| (b, c.field.as_slice()));
+    let Some(culled) = sample(tree, grid, chunk, step, &mut scratch.field, reuse) else {
+        if let Some(cache) = cache {
+            cache.field.clear();
+            cache.vertices.clear();
+        }
         return Mesh::default();
     };
     let first = Grid::first_sample(chunk);
     let global = |i: [usize; 3]| std::array::from_fn(|k| first[k] + i[k] as i64);
-    class(&tree, grid, first, &scratch.field, &mut scratch.inside);
+    class(
+        &culled.chunk,
+        grid,
+        first,
+        &scratch.field,
+        &mut scratch.inside,
+    );
     scratch
         .vertex_of
         .resize(SIDE * SIDE * SIDE * DIRECTIONS.len(), u32::MAX);
@@ -327,6 +451,11 @@ pub fn mesh_chunk(
                 if mask == 0 || mask == 0xff {
                     continue;
                 }
+                // The octant's tree holds every primitive that reaches this voxel (an octant
+                // without one is proven outside, so none of its voxels gets here).
+                let tree = culled.octants[octant_of([x, y, z])]
+                    .as_ref()
+                    .unwrap_or(&culled.chunk);
                 for tet in TETRAHEDRA {
                     let (mut ins, mut outs) = ([0; 4], [0; 4]);
                     let (mut n_in, mut n_out) = (0, 0);
@@ -365,10 +494,10 @@ pub fn mesh_chunk(
                             };
                             let kept = changed
                                 .filter(|b| !b.intersects(&reach))
-                                .and_then(|_| cache.vertices.get(&key));
+                                .and_then(|_| old?.vertices.get(&key));
                             mesh.vertices.push(match kept {
                                 Some(v) => *v,
-                                None => surface_vertex(&tree, ends),
+                                None => surface_vertex(tree, ends),
                             });
                         }
                         scratch.vertex_of[key]
@@ -425,14 +554,17 @@ pub fn mesh_chunk(
             }
         }
     }
-    cache.vertices.clear();
+    if let Some(cache) = cache {
+        cache.vertices.clear();
+        for &key in &scratch.touched {
+            let vertex = mesh.vertices[scratch.vertex_of[key] as usize];
+            cache.vertices.insert(key, vertex);
+        }
+        std::mem::swap(&mut cache.field, &mut scratch.field);
+    }
     for key in scratch.touched.drain(..) {
-        cache
-            .vertices
-            .insert(key, mesh.vertices[scratch.vertex_of[key] as usize]);
         scratch.vertex_of[key] = u32::MAX;
     }
-    std::mem::swap(&mut cache.field, &mut scratch.field);
     mesh
 }
 
@@ -469,21 +601,91 @@ fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
     Vertex::new(p, normal, paint.coordinates(), surface)
 }
 
-/// Every chunk of `tree` at growth step `step`, meshed and joined in chunk order: the whole
-/// surface at once.
+/// Chunks along each side of the blocks the whole tree is culled to before their chunks are
+/// culled from that: culling a chunk from the whole tree costs more than sampling it.
+const CULLED_CHUNKS: u32 = 4;
+
+/// Every chunk of `tree` at growth step `step`, meshed and joined: the whole surface at once.
 pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
-    let (mut scratch, mut cache) = (Scratch::default(), ChunkCache::default());
+    let mut scratch = Scratch::default();
     let mut mesh = Mesh::default();
+    let mut blocks: Vec<Vec<ChunkIndex>> = Vec::new();
+    let mut block_of = HashMap::new();
     for chunk in grid.chunks_touching(&tree.bounds) {
-        mesh.append(&mesh_chunk(
-            tree,
-            grid,
-            chunk,
-            step,
-            &mut scratch,
-            &mut cache,
-            None,
-        ));
+        let block = chunk.map(|c| c / CULLED_CHUNKS);
+        let n = *block_of.entry(block).or_insert_with(|| {
+            blocks.push(Vec::new());
+            blocks.len() - 1
+        });
+        blocks[n].push(chunk);
+    }
+    for chunks in blocks {
+        let mut region = Bounds::EMPTY;
+        for &chunk in &chunks {
+            region = region.union(&grid.region(chunk));
+        }
+        // As wide as the culls of its chunks reach (see `sample`).
+        let Some(tree) = tree.cull(&region.padded(grid.voxel), step) else {
+            continue;
+        };
+        for chunk in chunks {
+            mesh.append(&mesh_chunk(
+                &tree,
+                grid,
+                chunk,
+                step,
+                &mut scratch,
+                None,
+                None,
+            ));
+        }
     }
     mesh
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::implicit::implicit_whorl::whorl;
+    use crate::spec::form::Form;
+    use crate::species::presets;
+
+    #[test]
+    fn samples_are_exact_or_proven_on_their_side_and_many_are_proven() {
+        let preset = presets().iter().find(|p| p.id == "murex-cabritii");
+        let preset = preset.expect("the Murex preset");
+        let Form::Implicit(spec) = &preset.spec.form else {
+            panic!("the Murex is implicit");
+        };
+        let rows = preset.spec.growth.rows as usize;
+        let shell = whorl(spec, &preset.spec.pattern, preset.spec.seed, rows).expect("a whorl");
+        let (tree, step) = (&shell.tree, shell.instances - 1);
+        let grid = Grid::new(&tree.bounds, 64);
+        let (mut field, mut evaluated, mut proven, mut meshed) = (Vec::new(), 0, 0, 0);
+        for chunk in grid.chunks_touching(&tree.bounds) {
+            if sample(tree, &grid, chunk, step, &mut field, None).is_none() {
+                continue;
+            }
+            meshed += 1;
+            let first = Grid::first_sample(chunk);
+            for (i, &f) in field.iter().enumerate() {
+                let at = [i % SIDE, i / SIDE % SIDE, i / (SIDE * SIDE)];
+                let p = grid.sample(std::array::from_fn(|k| first[k] + at[k] as i64));
+                let exact = tree.field(p);
+                if f.is_finite() {
+                    assert_eq!(f.to_bits(), exact.to_bits(), "the sample at {p}");
+                    evaluated += 1;
+                } else {
+                    assert_eq!(f > 0.0, exact >= ISO, "the side of {p} ({exact})");
+                    proven += 1;
+                }
+            }
+        }
+        assert!(meshed > 100, "{meshed} chunks meshed");
+        // At 64 voxels a spine is a voxel or two thick; at 256 most samples are proven.
+        assert!(
+            3 * proven > evaluated,
+            "{proven} samples proven, {evaluated} evaluated"
+        );
+    }
 }

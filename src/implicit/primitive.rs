@@ -160,15 +160,24 @@ impl Primitive {
 
     /// Bounds (lowest, highest) on the field throughout the ball of `reach` about `centre`:
     /// the distance to the skeleton changes no faster than the point, and the falloff only
-    /// falls with it.
+    /// falls with it. A cone's field radius is taken over the part of its axis the ball
+    /// projects onto (t moves by at most reach / |axis|), so that a tapering spine is bounded
+    /// by its radius there, not by its widest.
     pub fn range(&self, centre: DVec3, reach: f64) -> (f64, f64) {
         let (distance, [thin, thick]) = match *self {
             Primitive::Point { centre: c, radius } => (centre.distance(c), [radius, radius]),
             Primitive::Cone { from, to, radii } => {
-                let (axis, _, t) = projection(centre, from, to);
+                let (axis, length2, t) = projection(centre, from, to);
+                let spread = if length2 > 0.0 {
+                    reach / length2.sqrt()
+                } else {
+                    0.0
+                };
+                let radius = |t: f64| radii[0] + t.clamp(0.0, 1.0) * (radii[1] - radii[0]);
+                let (a, b) = (radius(t - spread), radius(t + spread));
                 (
                     centre.distance(from + t.clamp(0.0, 1.0) * axis),
-                    [radii[0].min(radii[1]), radii[0].max(radii[1])],
+                    [a.min(b), a.max(b)],
                 )
             }
             Primitive::Torus {
@@ -352,5 +361,22 @@ mod tests {
                 "{p:?}: {tight} tight, {missed} missed"
             );
         }
+    }
+
+    #[test]
+    fn a_tapering_cone_is_bounded_by_its_radius_where_the_ball_is() {
+        // A spine: wide at its base, thin at its tip. Beside the tip, the field is zero, and
+        // the range must prove it (the base's radius would allow a field of 0.88).
+        let spine = Primitive::Cone {
+            from: DVec3::ZERO,
+            to: DVec3::new(10.0, 0.0, 0.0),
+            radii: [2.0, 0.2],
+        };
+        let (centre, reach) = (DVec3::new(10.0, 0.5, 0.0), 0.1);
+        assert_eq!(spine.range(centre, reach), (0.0, 0.0));
+        // Along the axis the radius is taken over all the ball projects onto.
+        let (lo, hi) = spine.range(DVec3::new(5.0, 0.0, 0.0), 1.0);
+        let widest = spine.field(DVec3::new(4.0, 0.0, 0.0));
+        assert!(lo <= spine.field(DVec3::new(6.0, 0.9, 0.0)) && widest <= hi);
     }
 }
