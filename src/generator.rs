@@ -15,17 +15,28 @@ pub const GROWTH_BUDGET_MS: f64 = 12.0;
 
 /// A `keep_going` for [`Generator::advance_while`] that spends at most `budget_ms` from now
 /// on the clock `now` (milliseconds): it stops before a step that would end past the budget if
-/// it took as long as the longest step so far.
-pub fn within(now: impl Fn() -> f64, budget_ms: f64) -> impl FnMut() -> bool {
+/// it took as long as the longest step lately. `longest` carries that estimate from frame to
+/// frame, since a step far longer than most (meshing a chunk thick with spines, showing a
+/// finished section) comes once in many frames; it fades by [`LONGEST_FADE`] every frame so
+/// that one slow step does not slow growth for long.
+pub fn within<'a>(
+    now: impl Fn() -> f64 + 'a,
+    budget_ms: f64,
+    longest: &'a mut f64,
+) -> impl FnMut() -> bool + 'a {
     let start = now();
-    let (deadline, mut last, mut longest) = (start + budget_ms, start, 0.0f64);
+    *longest *= LONGEST_FADE;
+    let (deadline, mut last) = (start + budget_ms, start);
     move || {
         let t = now();
-        longest = longest.max(t - last);
+        *longest = longest.max(t - last);
         last = t;
-        t + longest < deadline
+        t + *longest < deadline
     }
 }
+
+/// What is left of the longest step's time after a frame (see [`within`]).
+pub const LONGEST_FADE: f64 = 0.9;
 
 /// What one call to [`Generator::advance`] added.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -245,5 +256,33 @@ impl Generator {
         self.advance_pattern(self.rows);
         self.hash.take();
         self.shape.finish(&mut self.mesh, &mut self.edge);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cell::Cell;
+
+    #[test]
+    fn the_budget_remembers_a_long_step_of_an_earlier_frame() {
+        let clock = Cell::new(0.0);
+        let now = || clock.get();
+        let mut longest = 0.0;
+        {
+            let mut keep_going = within(now, 12.0, &mut longest);
+            clock.set(8.0);
+            assert!(!keep_going(), "a second 8 ms step would end at 16 ms");
+        }
+        // In the next frame the steps take 1 ms, but one like the 8 ms step (faded to 7.2 ms)
+        // may come: the frame stops once it could no longer end in time.
+        clock.set(100.0);
+        let mut keep_going = within(now, 12.0, &mut longest);
+        clock.set(101.0);
+        assert!(keep_going());
+        clock.set(104.0);
+        assert!(keep_going());
+        clock.set(105.0);
+        assert!(!keep_going());
     }
 }

@@ -167,8 +167,15 @@ impl Bounds {
         self.min.cmple(other.max).all() && other.min.cmple(self.max).all()
     }
 
+    /// Whether `p` lies in the box, faces included. Branch-free: the implicit modeller asks it
+    /// at every node of a tree for every point it evaluates.
     pub fn contains(&self, p: DVec3) -> bool {
-        p.cmpge(self.min).all() && p.cmple(self.max).all()
+        (p.x >= self.min.x)
+            & (p.x <= self.max.x)
+            & (p.y >= self.min.y)
+            & (p.y <= self.max.y)
+            & (p.z >= self.min.z)
+            & (p.z <= self.max.z)
     }
 
     /// The box grown by `margin` on every side.

@@ -244,10 +244,16 @@ impl Node {
         match &self.op {
             Op::Leaf(primitive, texture) => {
                 let (f, gradient) = primitive.field_gradient(p);
+                // A primitive adds no weight to the pattern coordinates where its field is zero.
+                let paint = if f > 0.0 {
+                    Paint::of(texture, p, f)
+                } else {
+                    Paint::default()
+                };
                 Probe {
                     field: f,
                     gradient,
-                    paint: Paint::of(texture, p, f),
+                    paint,
                 }
             }
             Op::Blend(c) => c

@@ -122,12 +122,14 @@ impl GrowingShape for ImplicitMesh {
     }
 
     fn capacity(&self) -> Capacity {
-        // An estimate (a whorl at 96 voxels has about 10 r² vertices when grown): the
-        // renderer's buffers and the meshes grow when a shell needs more.
+        // Enough for the shells we know (grown, the Murex at r voxels has about 20 r²
+        // vertices before welding, with 1.75 triangles each; a plain whorl 15 r²), so that
+        // growth never stops to move a large mesh: the renderer's buffers and the meshes still
+        // grow when a shell needs more.
         let r = self.resolution as usize;
         Capacity {
-            vertices: 4 * r * r,
-            indices: 24 * r * r,
+            vertices: 20 * r * r,
+            indices: 108 * r * r,
         }
     }
 

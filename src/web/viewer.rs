@@ -22,6 +22,8 @@ pub struct Growing {
     planar: Option<Planar>,
     /// Bounds of what has grown so far, edge included.
     grown: Bounds,
+    /// The longest growth step lately, in milliseconds (see [`within`]).
+    longest_step: f64,
 }
 
 /// Bounds of a range of a mesh's vertices.
@@ -150,6 +152,7 @@ impl Viewer {
             camera,
             planar,
             grown,
+            longest_step: 0.0,
         });
         let grown = self
             .growing
@@ -186,7 +189,9 @@ impl Viewer {
     /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
         let Some(g) = &mut self.growing else { return };
-        let advance = g.generator.advance_while(rows, within(now, budget_ms));
+        let advance = g
+            .generator
+            .advance_while(rows, within(now, budget_ms, &mut g.longest_step));
         self.upload(&advance);
         self.dirty = true;
     }
