@@ -207,11 +207,22 @@ impl Node {
         self
     }
 
-    /// The field at `p`.
+    /// The field at `p`. The test of the box and the leaves are inlined into the operators
+    /// (most children a point meets are out of range or primitives); operators are calls.
+    #[inline]
     pub fn field(&self, p: DVec3) -> f64 {
         if !self.bounds.contains(p) {
             return 0.0;
         }
+        match &self.op {
+            Op::Leaf(primitive, _) => primitive.field(p),
+            _ => self.operator_field(p),
+        }
+    }
+
+    /// [`Node::field`] of an operator.
+    #[inline(never)]
+    fn operator_field(&self, p: DVec3) -> f64 {
         match &self.op {
             Op::Leaf(primitive, _) => primitive.field(p),
             Op::Blend(c) => c.iter().map(|n| n.field(p)).sum(),
@@ -237,25 +248,22 @@ impl Node {
     /// (the chain rule through primitives, transforms and bends; the winning child of a union,
     /// intersection or difference; eq 4's weights (fᵢ/f)ⁿ⁻¹), and the blended pattern
     /// coordinates of the primitives that make it: all a surface vertex needs, in one walk.
+    #[inline]
     pub fn probe(&self, p: DVec3) -> Probe {
         if !self.bounds.contains(p) {
             return Probe::default();
         }
         match &self.op {
-            Op::Leaf(primitive, texture) => {
-                let (f, gradient) = primitive.field_gradient(p);
-                // A primitive adds no weight to the pattern coordinates where its field is zero.
-                let paint = if f > 0.0 {
-                    Paint::of(texture, p, f)
-                } else {
-                    Paint::default()
-                };
-                Probe {
-                    field: f,
-                    gradient,
-                    paint,
-                }
-            }
+            Op::Leaf(primitive, texture) => leaf_probe(primitive, texture, p),
+            _ => self.operator_probe(p),
+        }
+    }
+
+    /// [`Node::probe`] of an operator.
+    #[inline(never)]
+    fn operator_probe(&self, p: DVec3) -> Probe {
+        match &self.op {
+            Op::Leaf(primitive, texture) => leaf_probe(primitive, texture, p),
             Op::Blend(c) => c
                 .iter()
                 .map(|n| n.probe(p))
@@ -485,6 +493,22 @@ impl Node {
                 })
             }
         }
+    }
+}
+
+/// [`Node::probe`] of a primitive.
+fn leaf_probe(primitive: &Primitive, texture: &Texture, p: DVec3) -> Probe {
+    let (f, gradient) = primitive.field_gradient(p);
+    // A primitive adds no weight to the pattern coordinates where its field is zero.
+    let paint = if f > 0.0 {
+        Paint::of(texture, p, f)
+    } else {
+        Paint::default()
+    };
+    Probe {
+        field: f,
+        gradient,
+        paint,
     }
 }
 
