@@ -91,9 +91,9 @@ fn light(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, t: vec3<f32>, colour: vec3<f3
     let lit = select(0.0, 1.0, diffuse > 0.0);
     let iso = pow(max(dot(n, h), 0.0), shine);
     let hn = max(dot(h, n), 1e-3);
-    let ht = dot(h, t) / 0.55;
+    let ht = dot(h, t) / 0.8;
     let hb = dot(h, cross(n, t)) / 0.09;
-    let aniso = exp(-(ht * ht + hb * hb) / (hn * hn)) * 0.6;
+    let aniso = exp(-(ht * ht + hb * hb) / (hn * hn)) * 1.2;
     let a = g.material.y * select(0.0, 1.0, dot(t, t) > 0.5);
     let specular = mix(iso, aniso, a) * lit * (0.35 + 0.9 * g.material.x);
     let behind = max(-nl, 0.0);

@@ -25,6 +25,10 @@ const FOLLOW_TIME: f32 = 0.35;
 /// The smallest framing while following, as a fraction of the final one (the first rims of a
 /// shell can be a point).
 const SMALLEST_FRAME: f32 = 0.02;
+/// How close the easing comes to its framing, as a fraction of the framing's radius, before it
+/// ends on it exactly: the view then rests, and a picture of the grown shell is the same
+/// however fast the frames came.
+const SETTLE: f32 = 1e-3;
 
 /// Turns shell space into display space (apex up).
 pub fn display_from_shell() -> Mat4 {
@@ -105,7 +109,16 @@ impl OrbitCamera {
         let (t0, r0) = (self.target, self.radius);
         self.target += (target - self.target) * k;
         self.radius += (radius - self.radius) * k;
+        let close = SETTLE * radius;
+        if self.target.distance(target) < close && (self.radius - radius).abs() < close {
+            (self.target, self.radius) = (target, radius);
+        }
         self.target != t0 || self.radius != r0
+    }
+
+    /// Whether the view rests: on its framing of `grown`, or where the user left it.
+    pub fn settled(&self, grown: &Bounds) -> bool {
+        !self.following || self.framing_of(grown) == (self.target, self.radius)
     }
 
     /// Back to the first view; a camera that followed the growth follows it again.
@@ -261,6 +274,27 @@ mod tests {
             (cam.radius - whole.radius() as f32).abs() < 1e-3,
             "it settles on the whole"
         );
+    }
+
+    #[test]
+    fn the_easing_comes_to_rest_on_the_framing_whatever_the_frame_rate() {
+        let whole = grown(2.0);
+        let mut views = Vec::new();
+        for fps in [20.0, 60.0, 144.0] {
+            let mut cam = OrbitCamera::framing(&whole, DVec3::X, 0.0, 0.0).following(&grown(0.1));
+            let mut frames = 0;
+            while cam.follow(&whole, 1.0 / fps) {
+                frames += 1;
+                assert!(
+                    frames < 10_000,
+                    "the easing never ends at {fps} frames a second"
+                );
+            }
+            assert!(cam.settled(&whole));
+            assert!(!cam.settled(&grown(1.0)), "a larger shell moves it again");
+            views.push(cam.eye());
+        }
+        assert!(views.windows(2).all(|w| w[0] == w[1]), "{views:?}");
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! The page as a whole: the gallery or the viewer, chosen by the URL fragment (empty: the
 //! gallery; a link: that shell), the controls and the panel around the viewer, and the signals
-//! on <body> that tests read: `data-view`, `data-state` (gallery, loading, growing, grown,
-//! stopped, error), `data-rows`, `data-playing`, `data-pattern-hash`, `data-mesh` (the grown
+//! on <body> that tests read: `data-view`, `data-state` (gallery, loading, growing, grown —
+//! the whole shell grown and the view come to rest on it —, stopped, error), `data-rows`, `data-playing`, `data-pattern-hash`, `data-mesh` (the grown
 //! mesh's vertex and triangle counts, as the command line prints them), `data-pictures`.
 
 use super::download;
@@ -342,7 +342,7 @@ impl App {
         if let Some(failure) = g.generator.failure() {
             show_message(failure);
             signal("state", "stopped");
-        } else if g.generator.is_done() {
+        } else if g.generator.is_done() && g.view_at_rest() {
             if let Some(p) = g.generator.pattern() {
                 signal("patternHash", &format!("{:016x}", p.hash()));
             }

@@ -26,6 +26,13 @@ pub struct Growing {
     longest_step: f64,
 }
 
+impl Growing {
+    /// Whether the view rests on what has grown (or where the user left it).
+    pub fn view_at_rest(&self) -> bool {
+        self.camera.settled(&self.grown)
+    }
+}
+
 /// Bounds of a range of a mesh's vertices.
 /// How far a slow frame rate may stretch the growth budget of a frame.
 const MAX_BUDGET_FACTOR: f64 = 4.0;
