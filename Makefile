@@ -70,5 +70,5 @@ test: deps lint test-native test-browser test-page
 ## Benchmarks print figures; they assert nothing.
 
 bench: build deps-browser
-	cargo run --release --bin seashells -- bench
+	cargo build --release --bin seashells
 	node tests/page/bench.mjs

@@ -205,6 +205,11 @@ impl App {
         self.viewer.grow(1, GROWTH_BUDGET_MS);
     }
 
+    /// Grows the shell to its end at once.
+    pub fn finish(&mut self) {
+        self.viewer.finish();
+    }
+
     /// Sets the growth speed in rows per frame (part of the link; growth goes on).
     pub fn set_speed(&mut self, speed: f64) {
         let Some((_, spec)) = &mut self.current else {

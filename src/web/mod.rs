@@ -40,6 +40,13 @@ pub fn benchmark() -> String {
     crate::bench::report(&crate::bench::run(&now))
 }
 
+/// The pattern spec of preset `id` as JSON, for the benchmark page's JavaScript reference
+/// solver to run on the same sizes and parameters.
+#[wasm_bindgen]
+pub fn preset_pattern(id: &str) -> Option<String> {
+    crate::species::preset(id).and_then(|p| serde_json::to_string(&p.spec.pattern).ok())
+}
+
 type Shared = Rc<RefCell<App>>;
 
 fn canvas(id: &str) -> Result<HtmlCanvasElement, String> {
@@ -195,6 +202,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("play", app, App::toggle_playing)?;
     on_click("restart", app, App::restart)?;
     on_click("step", app, App::step)?;
+    on_click("finish", app, App::finish)?;
     on_click("reset-camera", app, App::reset_camera)?;
     on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
     on_click("copy-link", app, App::copy_link)?;
@@ -237,6 +245,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             " " => a.toggle_playing(),
             "r" => a.restart(),
             "s" | "ArrowRight" => a.step(),
+            "e" | "End" => a.finish(),
             "c" => a.reset_camera(),
             "f" => a.toggle_fullscreen(),
             "+" | "=" => a.set_speed(a.speed() * 1.5),

@@ -203,6 +203,18 @@ impl Viewer {
         self.dirty = true;
     }
 
+    /// Grows the rest of the shell at once.
+    pub fn finish(&mut self) {
+        let Some(g) = &mut self.growing else { return };
+        if g.generator.is_done() {
+            return;
+        }
+        g.generator.finish();
+        let advance = g.generator.grown();
+        self.upload(&advance);
+        self.dirty = true;
+    }
+
     /// Keeps the drawing buffer at the canvas's size in device pixels.
     fn fit_canvas(&mut self) {
         let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());

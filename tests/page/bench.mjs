@@ -1,17 +1,43 @@
-// The benchmark in the browser: the same core code as `seashells bench`, compiled to wasm and
-// timed with performance.now() in headless Chromium, on a viewer whose shell has finished
-// growing (so the page draws nothing meanwhile). Prints figures; asserts nothing.
-import { serve } from './serve.mjs';
-import { launch, open, waitForState } from './browser.mjs';
+// The benchmark, in one run on this machine: the core code natively (`seashells bench`), the
+// same code compiled to wasm on the page www/bench.html (which draws nothing) in headless
+// Chromium, and there beside it a plain JavaScript solver of eq 9 on the same sizes. Prints the
+// figures, then the ratios wasm / native per pattern model and wasm / JavaScript for eq 9.
+// Asserts nothing.
+import { execFileSync } from 'node:child_process';
+import { session, waitForState } from './browser.mjs';
 
-const server = await serve(new URL('../../www/', import.meta.url).pathname);
-const browser = await launch('WebGL2');
+const root = new URL('../../', import.meta.url).pathname;
+const native = execFileSync(`${root}target/release/seashells`, ['bench'], { encoding: 'utf8' });
+console.log(native);
+
+const { browser, base, close } = await session('WebGL2');
+let text;
 try {
-  const { page } = await open(browser, `http://127.0.0.1:${server.address().port}/#v=1&preset=turbinate&growth.speed=200`);
-  await waitForState(page, ['grown']);
-  const report = await page.evaluate(async () => (await import('./pkg/seashells.js')).benchmark());
-  console.log(`wasm (Chromium ${browser.version()})\n${report}`);
+  const page = await browser.newPage();
+  await page.goto(`${base}bench.html`);
+  const { state } = await waitForState(page, ['done', 'error'], 30 * 60_000);
+  text = await page.textContent('#report');
+  console.log(`(Chromium ${browser.version()})\n${text}`);
+  if (state !== 'done') process.exitCode = 1;
 } finally {
-  await browser.close();
-  server.close();
+  await close();
+}
+
+/** The rates of "ID (model)  N M cell updates/s" lines of one section of a report. */
+function rates(report) {
+  const out = new Map();
+  for (const line of report.split('\n')) {
+    const m = line.match(/^(\S+ \([^)]*\))\s+([\d.]+) M cell updates\/s/);
+    if (m) out.set(m[1], Number(m[2]));
+  }
+  return out;
+}
+const [wasmText, jsText = ''] = text.split('\nJavaScript\n');
+const [nativeRates, wasmRates, jsRates] = [native, wasmText, jsText].map(rates);
+console.log('ratios');
+for (const [what, rate] of wasmRates) {
+  const parts = [];
+  if (nativeRates.has(what)) parts.push(`wasm / native ${(rate / nativeRates.get(what)).toFixed(2)}`);
+  if (jsRates.has(what)) parts.push(`wasm / JavaScript ${(rate / jsRates.get(what)).toFixed(2)}`);
+  console.log(`${what.padEnd(40)} ${parts.join('   ')}`);
 }

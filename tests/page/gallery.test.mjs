@@ -187,6 +187,28 @@ test('the keyboard plays, pauses, steps and restarts', async () => {
   }
 });
 
+test('the finish control and its key grow the shell to its end at once', async () => {
+  // Grown at full speed, the shell's mesh is the reference the finished one must equal.
+  const reference = await open(browser, `${base}#v=1&preset=stripes&growth.speed=200`);
+  const { meshHash } = await waitForState(reference.page, ['grown']);
+  await reference.page.close();
+  for (const [preset, press] of [['stripes', (page) => page.click('#finish')], ['implicit-whorl', (page) => page.keyboard.press('e')]]) {
+    const { page, errors } = await open(browser, `${base}#v=1&preset=${preset}&growth.speed=0.05`);
+    try {
+      await waitForState(page, ['growing']);
+      await page.locator('#shell').click();
+      await press(page);
+      const grown = await waitForState(page, ['grown'], 60_000);
+      const total = Number(await page.getAttribute('#progress', 'max'));
+      assert.ok(total > 100 && Number(grown.rows) === total, `${preset}: ${grown.rows} of ${total} rows`);
+      if (preset === 'stripes') assert.equal(grown.meshHash, meshHash, 'finished as if grown row by row');
+      assert.deepEqual(errors, []);
+    } finally {
+      await page.close();
+    }
+  }
+});
+
 test('the link copies to the clipboard and the mesh downloads as OBJ and STL', async () => {
   const context = await browser.newContext({ permissions: ['clipboard-read', 'clipboard-write'] });
   const page = await context.newPage();
