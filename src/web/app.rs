@@ -1,8 +1,9 @@
 //! The page as a whole: the gallery or the viewer, chosen by the URL fragment (empty: the
 //! gallery; a link: that shell), the controls and the panel around the viewer, and the signals
 //! on <body> that tests read: `data-view`, `data-state` (gallery, loading, growing, grown —
-//! the whole shell grown and the view come to rest on it —, stopped, error), `data-rows`, `data-playing`, `data-pattern-hash`, `data-mesh` (the grown
-//! mesh's vertex and triangle counts, as the command line prints them), `data-pictures`.
+//! the whole shell grown and the view come to rest on it —, stopped, error), `data-rows`,
+//! `data-playing`, `data-pattern-hash`, `data-mesh` (the grown mesh's vertex and triangle
+//! counts, as the command line prints them), `data-pictures`.
 
 use super::download;
 use super::gallery::Pictures;

@@ -34,10 +34,13 @@ pub fn install_panic_hook() {
 
 /// The benchmark's figures in this browser, as text (see `crate::bench`).
 #[wasm_bindgen]
-pub fn benchmark() -> String {
-    let performance = web_sys::window().and_then(|w| w.performance());
-    let now = || performance.as_ref().map_or(0.0, |p| p.now());
-    crate::bench::report(&crate::bench::run(&now))
+pub fn benchmark() -> Result<String, JsValue> {
+    let performance = web_sys::window()
+        .and_then(|w| w.performance())
+        .ok_or("this browser has no clock to time with (window.performance)")?;
+    Ok(crate::bench::report(&crate::bench::run(&|| {
+        performance.now()
+    })))
 }
 
 /// The pattern spec of preset `id` as JSON, for the benchmark page's JavaScript reference
