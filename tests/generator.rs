@@ -42,10 +42,11 @@ fn advance_while_stops_when_told_but_grows_at_least_a_row() {
 
 #[test]
 fn a_diverging_pattern_stops_growth_with_a_message() {
-    let mut spec = preset("stripes").unwrap().spec.clone();
-    if let Model::ActivatorSubstrate(m) = &mut spec.pattern.model {
+    // Unsaturated autocatalysis (κ = 0) against an inhibitor it outruns.
+    let mut spec = preset("oliva-porphyria").unwrap().spec.clone();
+    if let Model::ActivatorInhibitor(m) = &mut spec.pattern.model {
+        m.kappa = 0.0;
         m.rho = 5.0;
-        m.sigma = 1.0;
     }
     let mut g = Generator::new(&spec).unwrap();
     g.finish();

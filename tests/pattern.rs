@@ -18,10 +18,11 @@ fn pattern_of(id: &str) -> PatternSpec {
 /// The recorded rows of `n` rows of a pattern.
 fn rows(spec: &PatternSpec, seed: u64, n: usize) -> Vec<Vec<f64>> {
     let mut model = build(spec, seed).unwrap().unwrap();
-    let mut out = vec![model.recorded().to_vec()];
+    let row = |v: &[f32]| v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>();
+    let mut out = vec![row(model.recorded())];
     for _ in 1..n {
         model.advance_row().unwrap();
-        out.push(model.recorded().to_vec());
+        out.push(row(model.recorded()));
     }
     out
 }
@@ -89,7 +90,7 @@ fn eq_8_keeps_its_analytic_uniform_steady_state() {
     let model_rows = rows(&spec, 1, 300);
     for row in &model_rows {
         for &x in row {
-            assert!((x - a).abs() < 1e-9 * a, "a = {x}, steady state {a}");
+            assert!((x - a).abs() < 1e-6 * a, "a = {x}, steady state {a}");
         }
     }
 }

@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 /// Appends one row.
-pub fn write_row(out: &mut String, values: &[f64]) {
+pub fn write_row(out: &mut String, values: &[f32]) {
     for (i, v) in values.iter().enumerate() {
         if i > 0 {
             out.push(',');

@@ -12,7 +12,7 @@
 //! system is excitable: it starts from `starts` activated cells placed by the seed, and keeps
 //! its waves alive by branching when the hormone lets the inhibitor decay fast.
 
-use super::diffusion::laplacian;
+use super::diffusion;
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
@@ -22,12 +22,13 @@ use crate::spec::pattern::{ActivatorInhibitor as Params, PatternSpec};
 pub struct ActivatorInhibitor {
     p: Params,
     grid: Grid,
-    a: Vec<f64>,
-    h: Vec<f64>,
+    a: Vec<f32>,
+    h: Vec<f32>,
     c: f64,
-    rho: Vec<f64>,
-    lap_a: Vec<f64>,
-    lap_h: Vec<f64>,
+    rho: Vec<f32>,
+    /// The next step's values, swapped in after each step.
+    next_a: Vec<f32>,
+    next_h: Vec<f32>,
 }
 
 impl ActivatorInhibitor {
@@ -40,7 +41,7 @@ impl ActivatorInhibitor {
         }
         let grid = Grid::new(spec);
         let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
-        let mut a = vec![p.a_init; grid.cells];
+        let mut a = vec![p.a_init as f32; grid.cells];
         starts::place(
             &mut a,
             p.starts,
@@ -52,10 +53,10 @@ impl ActivatorInhibitor {
         Ok(Self {
             p: p.clone(),
             a,
-            h: vec![p.h_init; grid.cells],
+            h: vec![p.h_init as f32; grid.cells],
             c: p.c_init,
-            lap_a: vec![0.0; grid.cells],
-            lap_h: vec![0.0; grid.cells],
+            next_a: vec![0.0; grid.cells],
+            next_h: vec![0.0; grid.cells],
             rho,
             grid,
         })
@@ -63,27 +64,58 @@ impl ActivatorInhibitor {
 
     fn step(&mut self) {
         let p = &self.p;
-        let dt = self.grid.dt;
-        let (da, dh) = (self.grid.diffusion(p.d_a), self.grid.diffusion(p.d_h));
-        laplacian(&self.a, self.grid.boundary, &mut self.lap_a);
-        laplacian(&self.h, self.grid.boundary, &mut self.lap_h);
-        let mean = self.a.iter().sum::<f64>() / self.grid.cells as f64;
+        let (dt, n) = (self.grid.dt, self.grid.cells);
+        let da = self.grid.diffusion(p.d_a) as f32;
+        let dh = self.grid.diffusion(p.d_h) as f32;
+        let mean = f64::from(mean(&self.a));
         // Decay factor 1/(1 + Δt ν/c), written so that c = 0 gives 0 rather than a division.
         let keep = if p.nu == 0.0 {
             1.0
         } else {
-            self.c / (self.c + dt * p.nu)
+            (self.c / (self.c + dt * p.nu)) as f32
         };
-        for i in 0..self.grid.cells {
-            let (a, h) = (self.a[i], self.h[i]);
-            let auto = a * a / (1.0 + p.kappa * a * a);
-            self.a[i] = a
-                + dt * (self.rho[i] / (h + p.h0) * (auto + p.rho0) - p.mu * a)
-                + da * self.lap_a[i];
-            self.h[i] = (h + dt * (p.sigma + self.rho[i] * auto) + dh * self.lap_h[i]) * keep;
-        }
+        let (kappa, h0, rho0) = (p.kappa as f32, p.h0 as f32, p.rho0 as f32);
+        let (mu, sigma, step) = (p.mu as f32, p.sigma as f32, dt as f32);
+        let (a, h, rho) = (&self.a[..n], &self.h[..n], &self.rho[..n]);
+        let (next_a, next_h) = (&mut self.next_a[..n], &mut self.next_h[..n]);
+        diffusion::step(
+            [a, h],
+            self.grid.boundary,
+            #[inline(always)]
+            |i, [lap_a, lap_h]| {
+                // With q = 1 + κa² and g = h + h₀, the saturated autocatalysis a²/q and the
+                // inhibited production ρ(a²/q + ρ₀)/g share the denominator qg: one division.
+                let (a, h) = (a[i], h[i]);
+                let (q, g) = (1.0 + kappa * a * a, h + h0);
+                let per = rho[i] / (q * g);
+                let made = per * (a * a + rho0 * q);
+                let auto = per * g * a * a;
+                next_a[i] = diffusion::flush(a + step * (made - mu * a) + da * lap_a);
+                next_h[i] = diffusion::flush((h + step * (sigma + auto) + dh * lap_h) * keep);
+            },
+        );
+        std::mem::swap(&mut self.a, &mut self.next_a);
+        std::mem::swap(&mut self.h, &mut self.next_h);
         self.c += dt * (p.rho_c * mean - p.eta * self.c);
     }
+}
+
+/// The mean of `v`, summed in eight interleaved partial sums (cell i into sum i mod 8) that
+/// are then added pairwise: a fixed order, so every target gives the same bits, and one the
+/// compiler can run as vectors instead of a chain of dependent additions.
+fn mean(v: &[f32]) -> f32 {
+    let mut sums = [0.0f32; 8];
+    let chunks = v.chunks_exact(8);
+    for (sum, &x) in sums.iter_mut().zip(chunks.remainder()) {
+        *sum += x;
+    }
+    for chunk in chunks {
+        for (sum, &x) in sums.iter_mut().zip(chunk) {
+            *sum += x;
+        }
+    }
+    let [s0, s1, s2, s3, s4, s5, s6, s7] = sums;
+    (((s0 + s1) + (s2 + s3)) + ((s4 + s5) + (s6 + s7))) / v.len() as f32
 }
 
 impl EdgeModel for ActivatorInhibitor {
@@ -95,11 +127,11 @@ impl EdgeModel for ActivatorInhibitor {
             "the autocatalysis outran its inhibition; raise κ (saturation), h₀ or μ, or lower ρ";
         check_finite("activator", &self.a, hint)?;
         check_finite("inhibitor", &self.h, hint)?;
-        check_finite("hormone", std::slice::from_ref(&self.c), hint)?;
+        check_finite("hormone", &[self.c as f32], hint)?;
         Ok(())
     }
 
-    fn recorded(&self) -> &[f64] {
+    fn recorded(&self) -> &[f32] {
         &self.a
     }
 }

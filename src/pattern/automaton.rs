@@ -16,7 +16,7 @@ pub struct Automaton {
     p: Vec<u8>,
     next_x: Vec<u32>,
     next_p: Vec<u8>,
-    recorded: Vec<f64>,
+    recorded: Vec<f32>,
     generations: u32,
     boundary: Boundary,
     colour_by: ColourBy,
@@ -57,7 +57,7 @@ impl Automaton {
         }
         Ok(Self {
             rule,
-            recorded: x.iter().map(|&v| f64::from(v)).collect(),
+            recorded: x.iter().map(|&v| v as f32).collect(),
             next_x: x.clone(),
             next_p: activity.clone(),
             x,
@@ -99,13 +99,13 @@ impl EdgeModel for Automaton {
             self.generation();
         }
         for (r, &x) in self.recorded.iter_mut().zip(&self.x) {
-            *r = f64::from(x);
+            *r = x as f32;
         }
         Ok(())
     }
 
     /// The prepigment counts.
-    fn recorded(&self) -> &[f64] {
+    fn recorded(&self) -> &[f32] {
         &self.recorded
     }
 
@@ -113,7 +113,7 @@ impl EdgeModel for Automaton {
     /// pigment, inactive ones their prepigment up to 60 %.
     fn pigment(&self, low: f64, high: f64, out: &mut [f32]) {
         for ((out, &x), &p) in out.iter_mut().zip(&self.recorded).zip(&self.p) {
-            let pre = ((x - low) / (high - low)).clamp(0.0, 1.0) as f32;
+            let pre = ((f64::from(x) - low) / (high - low)).clamp(0.0, 1.0) as f32;
             *out = match self.colour_by {
                 ColourBy::Prepigment => pre,
                 ColourBy::Activity => f32::from(p),

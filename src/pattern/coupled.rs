@@ -24,7 +24,7 @@
 //!
 //! Explicit Euler with Δt = Δx = 1 (unrefined), as for the paper's models.
 
-use super::diffusion::laplacian;
+use super::diffusion;
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
@@ -34,12 +34,14 @@ use crate::spec::pattern::{Coupled as Params, PatternSpec};
 pub struct Coupled {
     p: Params,
     grid: Grid,
-    a: Vec<f64>,
-    e: Vec<f64>,
-    f: Vec<f64>,
-    rho: Vec<f64>,
-    lap_a: Vec<f64>,
-    lap_e: Vec<f64>,
+    a: Vec<f32>,
+    e: Vec<f32>,
+    f: Vec<f32>,
+    rho: Vec<f32>,
+    /// The next step's values, swapped in after each step.
+    next_a: Vec<f32>,
+    next_e: Vec<f32>,
+    next_f: Vec<f32>,
 }
 
 impl Coupled {
@@ -60,8 +62,9 @@ impl Coupled {
             a,
             e: vec![0.0; grid.cells],
             f: vec![1.0; grid.cells],
-            lap_a: vec![0.0; grid.cells],
-            lap_e: vec![0.0; grid.cells],
+            next_a: vec![0.0; grid.cells],
+            next_e: vec![0.0; grid.cells],
+            next_f: vec![0.0; grid.cells],
             rho,
             grid,
         })
@@ -69,23 +72,41 @@ impl Coupled {
 
     fn step(&mut self) {
         let p = &self.p;
-        let dt = self.grid.dt;
-        let (da, de) = (self.grid.diffusion(p.d_a), self.grid.diffusion(p.d_e));
-        laplacian(&self.a, self.grid.boundary, &mut self.lap_a);
-        laplacian(&self.e, self.grid.boundary, &mut self.lap_e);
-        let theta4 = p.theta * p.theta * p.theta * p.theta;
-        for i in 0..self.grid.cells {
-            let (a, e, f) = (self.a[i], self.e[i], self.f[i]);
-            let e2 = e * e;
-            let extinction = p.gamma * a * e2 * e2 / (theta4 + e2 * e2);
-            let reaction =
-                self.rho[i] * (a * a / (1.0 + p.kappa * a * a) + p.rho0) - p.mu * a - extinction;
-            let enabled = p.rho_e * f * a / (a + p.k_a);
-            let burst = enabled * e2 / (1.0 + e2);
-            self.a[i] = a + dt * reaction + da * self.lap_a[i];
-            self.e[i] = e + dt * (burst + enabled * p.rho_e0 - p.mu_e * e) + de * self.lap_e[i];
-            self.f[i] = f + dt * (p.nu_f * (1.0 - f) - p.eps_f * burst);
-        }
+        let (dt, n) = (self.grid.dt as f32, self.grid.cells);
+        let da = self.grid.diffusion(p.d_a) as f32;
+        let de = self.grid.diffusion(p.d_e) as f32;
+        let [kappa, rho0, mu, gamma, theta] =
+            [p.kappa, p.rho0, p.mu, p.gamma, p.theta].map(|x| x as f32);
+        let [rho_e, rho_e0, mu_e, k_a] = [p.rho_e, p.rho_e0, p.mu_e, p.k_a].map(|x| x as f32);
+        let [nu_f, eps_f] = [p.nu_f, p.eps_f].map(|x| x as f32);
+        let theta4 = theta * theta * theta * theta;
+        let (a, e, f, rho) = (&self.a[..n], &self.e[..n], &self.f[..n], &self.rho[..n]);
+        let (next_a, next_e, next_f) = (
+            &mut self.next_a[..n],
+            &mut self.next_e[..n],
+            &mut self.next_f[..n],
+        );
+        diffusion::step(
+            [a, e],
+            self.grid.boundary,
+            #[inline(always)]
+            |i, [lap_a, lap_e]| {
+                let (a, e, f) = (a[i], e[i], f[i]);
+                let e2 = e * e;
+                let extinction = gamma * a * e2 * e2 / (theta4 + e2 * e2);
+                let reaction =
+                    rho[i] * (a * a / (1.0 + kappa * a * a) + rho0) - mu * a - extinction;
+                let enabled = rho_e * f * a / (a + k_a);
+                let burst = enabled * e2 / (1.0 + e2);
+                next_a[i] = diffusion::flush(a + dt * reaction + da * lap_a);
+                next_e[i] =
+                    diffusion::flush(e + dt * (burst + enabled * rho_e0 - mu_e * e) + de * lap_e);
+                next_f[i] = diffusion::flush(f + dt * (nu_f * (1.0 - f) - eps_f * burst));
+            },
+        );
+        std::mem::swap(&mut self.a, &mut self.next_a);
+        std::mem::swap(&mut self.e, &mut self.next_e);
+        std::mem::swap(&mut self.f, &mut self.next_f);
     }
 }
 
@@ -100,7 +121,7 @@ impl EdgeModel for Coupled {
         check_nonnegative("extinguisher's substrate", &self.f, "lower ε_f or ρₑ")
     }
 
-    fn recorded(&self) -> &[f64] {
+    fn recorded(&self) -> &[f32] {
         &self.a
     }
 }

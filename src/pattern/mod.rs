@@ -10,6 +10,7 @@ pub mod coupled;
 pub mod diffusion;
 pub mod grid;
 pub mod noise;
+pub mod parameter_map;
 pub mod run;
 pub mod starts;
 
@@ -31,13 +32,14 @@ pub trait EdgeModel {
     fn advance_row(&mut self) -> Result<(), PatternError>;
 
     /// The quantity the pattern records, one value per cell: the activator concentration, or
-    /// the prepigment count of the automaton.
-    fn recorded(&self) -> &[f64];
+    /// the prepigment count of the automaton. Single precision: the models' statistics (stripe
+    /// spacing, wave counts, periods) hold in it, and it halves the work of every step.
+    fn recorded(&self) -> &[f32];
 
     /// Pigment density in [0, 1] per cell, from the recorded value mapped from `low..high`.
     fn pigment(&self, low: f64, high: f64, out: &mut [f32]) {
         for (p, &x) in out.iter_mut().zip(self.recorded()) {
-            *p = ((x - low) / (high - low)).clamp(0.0, 1.0) as f32;
+            *p = ((f64::from(x) - low) / (high - low)).clamp(0.0, 1.0) as f32;
         }
     }
 }
@@ -146,7 +148,7 @@ pub fn build(spec: &PatternSpec, seed: u64) -> Result<Option<Box<dyn EdgeModel>>
 }
 
 /// Refuses concentrations that explicit Euler drove below zero.
-pub fn check_nonnegative(name: &str, values: &[f64], hint: &str) -> Result<(), PatternError> {
+pub fn check_nonnegative(name: &str, values: &[f32], hint: &str) -> Result<(), PatternError> {
     match values.iter().position(|&v| v < -1e-9) {
         None => Ok(()),
         Some(i) => Err(PatternError(format!(
@@ -156,7 +158,7 @@ pub fn check_nonnegative(name: &str, values: &[f64], hint: &str) -> Result<(), P
 }
 
 /// Refuses concentrations that are no longer numbers, or that left any sensible range.
-pub fn check_finite(name: &str, values: &[f64], hint: &str) -> Result<(), PatternError> {
+pub fn check_finite(name: &str, values: &[f32], hint: &str) -> Result<(), PatternError> {
     match values.iter().position(|v| !v.is_finite() || v.abs() > 1e12) {
         None => Ok(()),
         Some(i) => Err(PatternError(format!(

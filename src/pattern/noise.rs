@@ -27,9 +27,9 @@ impl Noise {
 
     /// `count` values `mean` · (1 ± `fraction`), uniform: a parameter that fluctuates from cell
     /// to cell (ρ ± 2.5 % in the paper's figures).
-    pub fn fluctuating(&mut self, mean: f64, fraction: f64, count: usize) -> Vec<f64> {
+    pub fn fluctuating(&mut self, mean: f64, fraction: f64, count: usize) -> Vec<f32> {
         (0..count)
-            .map(|_| mean * (1.0 + fraction * self.signed()))
+            .map(|_| (mean * (1.0 + fraction * self.signed())) as f32)
             .collect()
     }
 

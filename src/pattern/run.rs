@@ -71,9 +71,10 @@ impl PatternRun {
             self.hash.write(&x.to_bits().to_le_bytes());
         }
         self.model.pigment(self.low, self.high, &mut self.shade);
-        for &p in &self.shade {
-            let c = self.ground.mix(self.pigment, p);
-            self.rgba.extend_from_slice(&[c.0[0], c.0[1], c.0[2], 255]);
+        let start = self.rgba.len();
+        self.rgba.resize(start + self.cells * 4, 255);
+        for (pixel, &p) in self.rgba[start..].chunks_exact_mut(4).zip(&self.shade) {
+            pixel[..3].copy_from_slice(&self.ground.mix(self.pigment, p).0);
         }
         self.rows += 1;
     }
@@ -103,7 +104,7 @@ impl PatternRun {
     }
 
     /// The recorded values of the latest row.
-    pub fn recorded(&self) -> &[f64] {
+    pub fn recorded(&self) -> &[f32] {
         self.model.recorded()
     }
 

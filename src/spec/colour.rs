@@ -22,11 +22,13 @@ impl Rgb {
         })
     }
 
-    /// Linear interpolation in sRGB space, `x` in [0, 1].
+    /// Linear interpolation in sRGB space, `x` in [0, 1], to the nearest step. Rounded by
+    /// adding ½ and truncating (the channel is never negative): `f32::round` is a library call
+    /// on both targets, and this runs for every cell of every row of a pattern.
     pub fn mix(self, other: Rgb, x: f32) -> Rgb {
         let x = x.clamp(0.0, 1.0);
         Rgb(std::array::from_fn(|i| {
-            (f32::from(self.0[i]) * (1.0 - x) + f32::from(other.0[i]) * x).round() as u8
+            (f32::from(self.0[i]) * (1.0 - x) + f32::from(other.0[i]) * x + 0.5) as u8
         }))
     }
 }

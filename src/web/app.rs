@@ -3,16 +3,19 @@
 //! on <body> that tests read: `data-view`, `data-state` (gallery, loading, growing, grown —
 //! the whole shell grown and the view come to rest on it —, stopped, error), `data-rows`,
 //! `data-playing`, `data-pattern-hash`, `data-mesh` (the grown mesh's vertex and triangle
-//! counts, as the command line prints them), `data-pictures`.
+//! counts, as the command line prints them), `data-pictures`, `data-preview` (filling, whole,
+//! stopped: the planar view's preview of a pattern slider being dragged, or empty).
 
 use super::download;
 use super::gallery::Pictures;
+use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
-use super::panel::{OnChange, Panel};
+use super::panel::{Change, OnChange, Panel};
 use super::viewer::{Viewer, now};
 use crate::export::{self, MeshFormat};
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::spec::ShellSpec;
+use crate::spec::fields::Group;
 use crate::spec::link::{self, Decoded, Problem};
 use crate::species::Preset;
 use wasm_bindgen::JsCast;
@@ -26,6 +29,7 @@ const URL_DELAY_MS: f64 = 300.0;
 pub struct App {
     viewer: Viewer,
     pictures: Pictures,
+    map: MapView,
     current: Option<(&'static Preset, ShellSpec)>,
     panel: Option<Panel>,
     on_change: Option<OnChange>,
@@ -47,6 +51,12 @@ fn say(problems: &[Problem]) {
     }
 }
 
+/// Whether dragging the field `key` previews the whole pattern: a field of the pattern model
+/// (the colours and the seed have no sliders).
+fn previews(key: &str) -> bool {
+    crate::spec::fields::field(key).is_some_and(|f| f.group == Group::Pattern)
+}
+
 fn location_hash() -> String {
     web_sys::window()
         .and_then(|w| w.location().hash().ok())
@@ -60,6 +70,7 @@ impl App {
         Self {
             viewer,
             pictures,
+            map: MapView::default(),
             current: None,
             panel: None,
             on_change: None,
@@ -78,8 +89,9 @@ impl App {
         &mut self.viewer
     }
 
-    /// Follows the URL fragment.
+    /// Follows the URL fragment (closing the parameter map, whose tiles are links).
     pub fn route(&mut self) {
+        self.map.close();
         let fragment = location_hash();
         if fragment.trim_start_matches('#').is_empty() {
             self.show(true);
@@ -144,8 +156,10 @@ impl App {
         self.set_playing(true);
     }
 
-    /// A value changed in the panel: read it as a link's value, restart growth with the result.
-    pub fn edit(&mut self, key: &str, value: String) {
+    /// A value changed in the panel: read it as a link's value. Set, growth restarts with the
+    /// result; passed by a dragged slider of the pattern, the planar view shows the whole
+    /// pattern of the result while the shell waits.
+    pub fn edit(&mut self, key: &str, value: String, change: Change) {
         let Some((preset, spec)) = &self.current else {
             return;
         };
@@ -154,6 +168,17 @@ impl App {
             spec: next,
             problems,
         } = link::with(preset, spec, key, &value);
+        if change == Change::Moving {
+            if previews(key) {
+                match self.viewer.preview(&next) {
+                    Ok(()) => say(&problems),
+                    Err(message) => show_message(&message),
+                }
+                signal("preview", self.viewer.preview_state());
+            }
+            return;
+        }
+        self.viewer.end_preview();
         say(&problems);
         if self.current.as_ref().is_some_and(|(_, s)| *s == next) {
             if let (Some(panel), Some((_, s))) = (&self.panel, &self.current) {
@@ -330,7 +355,14 @@ impl App {
         if self.url_due.is_some_and(|due| now() >= due) {
             self.update_url();
         }
-        if !self.viewer.frame(GROWTH_BUDGET_MS)? {
+        if self.map.is_open() {
+            // The map covers the shell, which waits meanwhile.
+            self.map.work(GROWTH_BUDGET_MS);
+            return Ok(());
+        }
+        let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;
+        signal("preview", self.viewer.preview_state());
+        if !drawn {
             return Ok(());
         }
         let Some(g) = self.viewer.growing() else {
@@ -367,6 +399,29 @@ impl App {
             signal("state", "growing");
         }
         Ok(())
+    }
+
+    /// Shows the parameter map of the shell shown.
+    pub fn open_map(&mut self) {
+        if let Some((preset, spec)) = &self.current {
+            self.map.open(preset, spec);
+        }
+    }
+
+    /// Draws the map anew over the axes its controls now describe.
+    pub fn draw_map(&mut self) {
+        if let Some((preset, spec)) = &self.current {
+            self.map.draw(preset, spec);
+        }
+    }
+
+    /// A parameter was chosen for the map's axis `name` ("x" or "y").
+    pub fn map_chose(&mut self, name: &str) {
+        self.map.chose(name);
+    }
+
+    pub fn close_map(&mut self) {
+        self.map.close();
     }
 
     /// Follows a change of the page's light or dark theme.

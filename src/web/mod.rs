@@ -5,6 +5,7 @@ mod app;
 mod dom;
 mod download;
 mod gallery;
+mod map;
 mod page;
 mod panel;
 mod planar;
@@ -86,9 +87,9 @@ pub async fn start() -> Result<(), JsValue> {
     )));
     let weak = Rc::downgrade(&app);
     app.borrow_mut()
-        .set_on_change(Rc::new(move |key: &str, value: String| {
+        .set_on_change(Rc::new(move |key: &str, value: String, change| {
             if let Some(app) = weak.upgrade() {
-                app.borrow_mut().edit(key, value);
+                app.borrow_mut().edit(key, value, change);
             }
         }));
     app.borrow_mut().route();
@@ -212,6 +213,16 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     for what in ["picture", "pattern", "obj", "stl"] {
         on_click(&format!("download-{what}"), app, move |a| a.download(what))?;
     }
+    on_click("map-open", app, App::open_map)?;
+    on_click("map-draw", app, App::draw_map)?;
+    on_click("map-close", app, App::close_map)?;
+    for name in ["x", "y"] {
+        if let Some(select) = page::element(&format!("map-{name}")) {
+            on(&select.into(), "change", app, move |a, _: Event| {
+                a.map_chose(name)
+            })?;
+        }
+    }
     on_click("panel-toggle", app, |_| {
         if let (Some(panel), Some(button)) = (page::element("panel"), page::element("panel-toggle"))
         {
@@ -245,6 +256,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             return;
         }
         match e.key().as_str() {
+            "Escape" => a.close_map(),
             " " => a.toggle_playing(),
             "r" => a.restart(),
             "s" | "ArrowRight" => a.step(),

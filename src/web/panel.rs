@@ -1,7 +1,8 @@
 //! The parameter panel, generated from the spec's own description of its fields
 //! (`spec::fields`): for every field the current spec has, grouped as the table groups them, a
 //! control with the paper's symbol and name, its range, and a number beside each slider. Every
-//! change is handed back as `key=value` text and read exactly as a link's value would be.
+//! change is handed back as `key=value` text and read exactly as a link's value would be, and a
+//! slider also hands back every value it passes while it is dragged.
 
 use super::dom::{append, attr, clear, create, typed};
 use crate::spec::ShellSpec;
@@ -17,8 +18,15 @@ use web_sys::{Element, Event, HtmlInputElement, HtmlOptionElement, HtmlSelectEle
 /// Fields with a control of their own elsewhere on the page.
 const ELSEWHERE: &[&str] = &["growth.speed"];
 
-/// What the panel calls when a value changes: (key, value as link text).
-pub type OnChange = Rc<dyn Fn(&str, String)>;
+/// Whether a value is set, or passed by a slider still being dragged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Change {
+    Moving,
+    Set,
+}
+
+/// What the panel calls when a value changes: (key, value as link text, which change).
+pub type OnChange = Rc<dyn Fn(&str, String, Change)>;
 
 /// The controls that show one field.
 enum Control {
@@ -68,7 +76,7 @@ fn report(
     let on_change = Rc::clone(on_change);
     listen(target, "change", move |e| {
         if let Some(v) = read(&e) {
-            on_change(key, v);
+            on_change(key, v, Change::Set);
         }
     });
 }
@@ -83,7 +91,7 @@ fn has_slider(kind: Kind) -> bool {
 }
 
 /// A slider over [lo, hi] with a number field beside it: the number follows the slider while
-/// it moves, and either reports its value when let go.
+/// it moves, every value passed is reported as moving, and either reports its value when set.
 fn slider(
     field: &'static Field,
     id: &str,
@@ -108,14 +116,19 @@ fn slider(
     number.set_min(&lo.to_string());
     number.set_max(&hi.to_string());
     number.set_step("any");
-    let (shown, kind) = (number.clone(), field.kind);
+    let (shown, kind, key) = (number.clone(), field.kind, field.key);
+    let moving = Rc::clone(on_change);
     listen(&range, "input", move |e| {
         if let Some(p) = input(&e).and_then(|i| i.value().parse::<f64>().ok()) {
-            shown.set_value(&display(kind.slider_value(p)));
+            let value = display(kind.slider_value(p));
+            shown.set_value(&value);
+            moving(key, value, Change::Moving);
         }
     });
-    let (value, slid, key) = (number.clone(), Rc::clone(on_change), field.key);
-    listen(&range, "change", move |_| slid(key, value.value()));
+    let (value, slid) = (number.clone(), Rc::clone(on_change));
+    listen(&range, "change", move |_| {
+        slid(key, value.value(), Change::Set)
+    });
     report(&number, field.key, on_change, |e| {
         input(e).map(|i| i.value())
     });

@@ -50,11 +50,10 @@ impl Planar {
             // Drawing into our own canvas cannot fail for in-range coordinates.
             let _ = self.context.put_image_data(&image, 0.0, f64::from(first));
         }
-        self.follow(first + rows);
     }
 
     /// Scrolls the view so that row `row` stays in sight.
-    fn follow(&self, row: u32) {
+    pub fn follow(&self, row: u32) {
         let Some(scroller) = self.canvas.parent_element() else {
             return;
         };

@@ -1,13 +1,16 @@
 //! A viewer: one canvas and its renderer, a shell growing on it, optionally its planar pattern,
 //! and the camera the pointer turns. Loading another spec restarts growth without reloading the
 //! page. The page's main view is one viewer, whose camera follows the growing shell; the
-//! gallery's pictures are drawn by another, framed on the whole shell.
+//! gallery's pictures are drawn by another, framed on the whole shell. While a pattern slider
+//! is dragged, the planar view previews the whole pattern of its values instead.
 
+use super::page::show_message;
 use super::planar::Planar;
 use crate::camera::OrbitCamera;
 use crate::generator::{Advance, Generator, within};
 use crate::gestures::{Pointers, wheel_zoom};
 use crate::mesh::{Bounds, Mesh};
+use crate::pattern::run::PatternRun;
 use crate::render::{Renderer, ShellLook};
 use crate::spec::ShellSpec;
 use crate::species::Preset;
@@ -20,6 +23,10 @@ pub struct Growing {
     pub generator: Generator,
     camera: OrbitCamera,
     planar: Option<Planar>,
+    /// The planar view's cells and rows for this shell's pattern.
+    planar_size: Option<(u32, u32)>,
+    /// The pattern of values being dragged, shown in the planar view while growth waits.
+    preview: Option<Preview>,
     /// Bounds of what has grown so far, edge included.
     grown: Bounds,
     /// The longest growth step lately, in milliseconds (see [`within`]).
@@ -33,10 +40,38 @@ impl Growing {
     }
 }
 
-/// Bounds of a range of a mesh's vertices.
+/// The whole pattern of a spec being edited, computed from its first row a frame's budget at a
+/// time and drawn into the planar view as it comes.
+struct Preview {
+    run: PatternRun,
+    rows: usize,
+    failed: bool,
+}
+
+impl Preview {
+    /// Computes rows until all are done, the pattern fails (said on the page), or the clock
+    /// passes `until`; draws the new ones.
+    fn fill(&mut self, until: f64, planar: Option<&Planar>) {
+        let first = self.run.rows();
+        while !self.failed && self.run.rows() < self.rows && now() < until {
+            if let Err(e) = self.run.advance() {
+                self.failed = true;
+                show_message(&format!("With these values the pattern stops {e}."));
+            }
+        }
+        if let Some(planar) = planar {
+            planar.draw_rows(
+                first as u32,
+                &self.run.rgba()[first * self.run.cells() * 4..],
+            );
+        }
+    }
+}
+
 /// How far a slow frame rate may stretch the growth budget of a frame.
 const MAX_BUDGET_FACTOR: f64 = 4.0;
 
+/// Bounds of a range of a mesh's vertices.
 fn include(bounds: &mut Bounds, mesh: &Mesh, range: std::ops::Range<usize>) {
     for v in &mesh.vertices[range] {
         bounds.include(glam::DVec3::from(v.position.map(f64::from)));
@@ -158,6 +193,8 @@ impl Viewer {
             generator,
             camera,
             planar,
+            planar_size: pattern,
+            preview: None,
             grown,
             longest_step: 0.0,
         });
@@ -190,11 +227,66 @@ impl Viewer {
             .upload(g.generator.mesh(), g.generator.edge(), advance, rgba);
         if let Some(planar) = &g.planar {
             planar.draw_rows(advance.rows.start as u32, rgba);
+            planar.follow(advance.rows.end as u32);
+        }
+    }
+
+    /// Shows the whole pattern of `spec` in the planar view, computed over the next frames,
+    /// while the shell's growth waits (until [`Self::end_preview`] or another spec is loaded).
+    /// Values that give no pattern at all are refused with the reason.
+    pub fn preview(&mut self, spec: &ShellSpec) -> Result<(), String> {
+        let Some(g) = &mut self.growing else {
+            return Ok(());
+        };
+        let run = match PatternRun::new(spec) {
+            Ok(Some(run)) => run,
+            Ok(None) => return Ok(()),
+            Err(e) => return Err(format!("With these values there is no pattern: {e}.")),
+        };
+        g.planar = self
+            .planar_canvas
+            .clone()
+            .and_then(|c| Planar::new(c, Some((run.cells() as u32, spec.growth.rows))));
+        if let Some(planar) = &g.planar {
+            planar.draw_rows(0, run.rgba());
+        }
+        g.preview = Some(Preview {
+            run,
+            rows: spec.growth.rows as usize,
+            failed: false,
+        });
+        Ok(())
+    }
+
+    /// Back from a preview to the growing shell's own pattern in the planar view.
+    pub fn end_preview(&mut self) {
+        let Some(g) = &mut self.growing else { return };
+        if g.preview.take().is_none() {
+            return;
+        }
+        g.planar = self
+            .planar_canvas
+            .clone()
+            .and_then(|c| Planar::new(c, g.planar_size));
+        if let (Some(planar), Some(pattern)) = (&g.planar, g.generator.pattern()) {
+            planar.draw_rows(0, pattern.rgba());
+            planar.follow(pattern.rows() as u32);
+        }
+    }
+
+    /// The preview's state for the page's signal: "filling", "whole", "stopped", or "" for none.
+    pub fn preview_state(&self) -> &'static str {
+        match self.growing.as_ref().and_then(|g| g.preview.as_ref()) {
+            None => "",
+            Some(p) if p.failed => "stopped",
+            Some(p) if p.run.rows() < p.rows => "filling",
+            Some(_) => "whole",
         }
     }
 
     /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
+        self.end_preview();
         let Some(g) = &mut self.growing else { return };
         let advance = g
             .generator
@@ -205,6 +297,7 @@ impl Viewer {
 
     /// Grows the rest of the shell at once.
     pub fn finish(&mut self) {
+        self.end_preview();
         let Some(g) = &mut self.growing else { return };
         if g.generator.is_done() {
             return;
@@ -237,10 +330,15 @@ impl Viewer {
             return Err(failure);
         }
         self.fit_canvas();
+        if let Some(g) = &mut self.growing
+            && let Some(preview) = &mut g.preview
+        {
+            preview.fill(now() + budget_ms, g.planar.as_ref());
+        }
         let growing = self
             .growing
             .as_ref()
-            .is_some_and(|g| !g.generator.is_done());
+            .is_some_and(|g| !g.generator.is_done() && g.preview.is_none());
         if growing && self.playing {
             self.carry += self.speed;
             let rows = self.carry.floor();

@@ -69,3 +69,82 @@ test('the planar view shows the pattern and downloads as a PNG of cells × rows'
     await page.close();
   }
 });
+
+test('dragging a pattern slider redraws the whole pattern in the planar view while the shell waits', async () => {
+  const { page, errors } = await open(browser, `${base}#v=1&preset=oliva-porphyria&growth.speed=1`);
+  /** Pixels of the planar view's last 200 rows that are drawn, and their distinct colours. */
+  const bottom = () => page.evaluate(() => {
+    const c = document.getElementById('planar');
+    const { data } = c.getContext('2d').getImageData(0, c.height - 200, c.width, 200);
+    const seen = new Set();
+    let drawn = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (data[i + 3] === 0) continue;
+      drawn += 1;
+      seen.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+    }
+    return { drawn, colours: seen.size };
+  });
+  /** Moves the slider of `key` to a fraction of its range, as a drag passes it. */
+  const drag = (key, fraction, event) => page.evaluate(([key, fraction, event]) => {
+    const range = document.querySelector(`.field[data-key="${key}"] input[type=range]`);
+    range.value = String(Math.round(Number(range.max) * fraction));
+    range.dispatchEvent(new Event(event, { bubbles: true }));
+    return document.getElementById(`field-${key}`).value;
+  }, [key, fraction, event]);
+  try {
+    await waitForState(page, ['growing']);
+    assert.equal((await bottom()).drawn, 0, 'the end of the pattern is not grown yet');
+    for (const fraction of [0.04, 0.05]) {
+      await drag('pattern.model.d_a', fraction, 'input');
+      await page.waitForFunction(() => document.body.dataset.preview === 'whole', null, { timeout: 60_000 });
+    }
+    const filled = await bottom();
+    const state = await page.evaluate(() => ({ ...document.body.dataset }));
+    assert.equal(state.state, 'growing', 'the whole pattern came before the shell grew');
+    assert.ok(Number(state.rows) < 1000, `the shell waited at row ${state.rows}`);
+    assert.equal(filled.drawn, 400 * 200, 'every cell of the last rows is drawn');
+    assert.ok(filled.colours > 5, `the last rows have only ${filled.colours} colours`);
+    const value = await drag('pattern.model.d_a', 0.05, 'change');
+    await page.waitForFunction(() => document.body.dataset.preview === '' && Number(document.body.dataset.rows) < 50);
+    await page.waitForFunction((v) => location.hash.includes(`pattern.model.d_a=${v}`), value);
+    assert.equal((await bottom()).drawn, 0, 'let go, the shell grows its pattern again from the start');
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test('the parameter map fills a grid of patterns, and a chosen tile opens that shell with its two values', async () => {
+  const { page, errors } = await open(browser, `${base}#v=1&preset=oliva-porphyria`);
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await page.click('#map-open');
+    const started = Date.now();
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 60_000 });
+    const seconds = (Date.now() - started) / 1000;
+    const tiles = await page.evaluate(() => [...document.querySelectorAll('#map-grid .tile')].map((a) => {
+      const c = a.querySelector('canvas');
+      return { href: a.getAttribute('href'), title: a.title, failed: a.classList.contains('failed'), width: c.width, picture: c.toDataURL() };
+    }));
+    await page.screenshot({ path: `${SHOTS}parameter-map.png` });
+    assert.equal(tiles.length, 64);
+    const painted = tiles.filter((t) => !t.failed && t.width === 100);
+    assert.ok(painted.length >= 56, `only ${painted.length} of 64 tiles have a pattern`);
+    assert.ok(new Set(painted.map((t) => t.picture)).size >= painted.length - 4, 'the patterns differ from tile to tile');
+    console.log(`# the map of oliva-porphyria filled in ${seconds.toFixed(1)} s`);
+    const [x, y] = await page.evaluate(() => [document.getElementById('map-x').value, document.getElementById('map-y').value]);
+    const chosen = tiles[5 * 8 + 2];
+    await page.click(`#map-grid .tile:nth-child(${5 * 8 + 3})`);
+    await page.waitForFunction((h) => location.hash === h && document.body.dataset.state === 'growing', chosen.href);
+    assert.equal(await page.evaluate(() => document.body.dataset.map), '');
+    assert.ok(await page.isHidden('#map'));
+    for (const key of [x, y]) {
+      const shown = await page.inputValue(`[id="field-${key}"]`);
+      assert.ok(chosen.href.includes(`${key}=${shown}`), `${chosen.href} has ${key}=${shown}`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});

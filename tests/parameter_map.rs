@@ -1,0 +1,131 @@
+//! The map of a pattern model's parameter space: tiles spaced as the axes say, each the pattern
+//! of the spec its link reopens, computed deterministically, with tiles that cannot be
+//! integrated refused with their reason while the others fill.
+#![cfg(not(target_arch = "wasm32"))]
+
+use seashells_core::pattern::parameter_map::{Axis, ParameterMap, first_axes, parameters};
+use seashells_core::spec::fields::field;
+use seashells_core::spec::link::{decode, flatten};
+use seashells_core::species::preset;
+
+fn value(spec: &seashells_core::spec::ShellSpec, key: &str) -> f64 {
+    flatten(&serde_json::to_value(spec).unwrap())[key]
+        .as_f64()
+        .unwrap()
+}
+
+fn filled(map: &mut ParameterMap) {
+    let mut steps = 0;
+    while !map.finished() {
+        map.work(|| {
+            steps += 1;
+            steps % 100 != 0
+        });
+    }
+}
+
+#[test]
+fn axes_step_evenly_or_by_equal_ratios_and_refuse_what_cannot_span_a_map() {
+    let linear = Axis::new("pattern.model.d_a", 0.01, 0.03, 5).unwrap();
+    assert_eq!(linear.values, [0.01, 0.015, 0.02, 0.025, 0.03]);
+    let ratios = Axis::new("pattern.model.sigma", 0.0001, 0.01, 3).unwrap();
+    assert_eq!(ratios.values, [0.0001, 0.001, 0.01]);
+    for (key, from, to, count, why) in [
+        ("pattern.model.d_a", 0.01, 0.9, 8, "leaves that range"),
+        ("pattern.model.d_a", 0.01, 0.01, 8, "two different numbers"),
+        ("pattern.cells", 10.0, 20.0, 8, "not a real number"),
+        (
+            "form.spiral.whorls",
+            1.0,
+            2.0,
+            8,
+            "not a parameter of a pattern model",
+        ),
+        ("pattern.model.d_a", 0.01, 0.02, 1, "at least two values"),
+    ] {
+        let e = Axis::new(key, from, to, count).unwrap_err();
+        assert!(e.contains(why), "{key}: {e}");
+    }
+    let d_a = field("pattern.model.d_a").unwrap();
+    assert_eq!(
+        Axis::around(d_a, 0.015, 3).unwrap().values,
+        [0.0075, 0.01875, 0.03]
+    );
+    assert_eq!(Axis::around(d_a, 0.0, 2).unwrap().values, [0.0, 0.125]);
+}
+
+#[test]
+fn every_tile_is_the_pattern_of_its_own_link_and_the_map_is_the_same_every_time() {
+    let oliva = preset("oliva-porphyria").unwrap();
+    let spec = &oliva.spec;
+    let offered = parameters(spec);
+    let names: Vec<&str> = offered.iter().map(|(f, _)| f.key).collect();
+    assert!(names.contains(&"pattern.model.d_a") && names.contains(&"pattern.model.nu"));
+    assert!(
+        names.iter().all(|k| k.starts_with("pattern.model.")),
+        "{names:?}"
+    );
+    let (x, y) = first_axes(&offered);
+    assert_eq!(
+        (names[x], names[y]),
+        ("pattern.model.d_a", "pattern.model.sigma")
+    );
+    assert_eq!(offered[x].1, 0.015, "with the shell's value");
+    let map = || {
+        let x = Axis::new("pattern.model.d_a", 0.005, 0.04, 3).unwrap();
+        let y = Axis::new("pattern.model.nu", 0.005, 0.03, 3).unwrap();
+        let mut map = ParameterMap::new(oliva, spec, x, y);
+        filled(&mut map);
+        map
+    };
+    let (a, b) = (map(), map());
+    assert_eq!(a.rows, 400, "as many rows as cells");
+    let mut distinct = Vec::new();
+    for (j, &ny) in a.y.values.iter().enumerate() {
+        for (i, &dx) in a.x.values.iter().enumerate() {
+            let tile = a.tile(i, j);
+            assert_eq!(tile.failure, None);
+            assert_eq!(value(&tile.spec, "pattern.model.d_a"), dx);
+            assert_eq!(value(&tile.spec, "pattern.model.nu"), ny);
+            let opened = decode(&tile.link);
+            assert!(opened.problems.is_empty(), "{:?}", opened.problems);
+            assert_eq!(opened.spec, tile.spec, "the link reopens the tile's shell");
+            let picture = tile.picture.as_ref().unwrap();
+            assert_eq!(
+                (picture.width, picture.height),
+                (100, 100),
+                "400 cells averaged by 4"
+            );
+            assert_eq!(
+                Some(picture),
+                b.tile(i, j).picture.as_ref(),
+                "deterministic"
+            );
+            if !distinct.contains(&picture.rgba) {
+                distinct.push(picture.rgba.clone());
+            }
+        }
+    }
+    assert_eq!(
+        distinct.len(),
+        9,
+        "every pair of values draws its own pattern"
+    );
+}
+
+#[test]
+fn tiles_that_cannot_be_integrated_say_why_and_the_others_fill() {
+    let stripes = preset("stripes").unwrap();
+    // D_a with μ = 0.01 is stable up to (2 − μ)/4 = 0.4975.
+    let x = Axis::new("pattern.model.d_a", 0.002, 0.5, 2).unwrap();
+    let y = Axis::new("pattern.model.d_s", 0.1, 0.4, 2).unwrap();
+    let mut map = ParameterMap::new(stripes, &stripes.spec, x, y);
+    filled(&mut map);
+    for j in 0..2 {
+        assert!(map.tile(0, j).picture.is_some());
+        let refused = map.tile(1, j);
+        assert!(refused.picture.is_none());
+        let why = refused.failure.as_deref().unwrap();
+        assert!(why.contains("D_a") && why.contains("stabl"), "{why}");
+    }
+}
