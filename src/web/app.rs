@@ -4,7 +4,8 @@
 //! the whole shell grown and the view come to rest on it —, stopped, error), `data-rows`,
 //! `data-playing`, `data-pattern-hash`, `data-mesh` (the grown mesh's vertex and triangle
 //! counts, as the command line prints them), `data-pictures`, `data-preview` (filling, whole,
-//! stopped: the planar view's preview of a pattern slider being dragged, or empty).
+//! stopped: the planar view's preview of a pattern slider being dragged, or empty), `data-map`
+//! (filling, whole, refused, none: the parameter map, or empty when it is closed).
 
 use super::download;
 use super::gallery::Pictures;
