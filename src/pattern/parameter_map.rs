@@ -220,11 +220,6 @@ impl ParameterMap {
         self.next >= self.tiles.len()
     }
 
-    /// Tiles computed so far.
-    pub fn done(&self) -> usize {
-        self.next
-    }
-
     /// Computes rows, tile after tile, while `more()` says so; returns the tiles it finished.
     pub fn work(&mut self, mut more: impl FnMut() -> bool) -> std::ops::Range<usize> {
         let first = self.next;
