@@ -4,6 +4,7 @@
 
 use super::dom::{append, attr, clear, create, typed};
 use super::page::{element, set_text, signal};
+use super::panel::label;
 use super::viewer::now;
 use crate::pattern::parameter_map::{Axis, ParameterMap, SIDE, first_axes, parameters};
 use crate::spec::ShellSpec;
@@ -40,11 +41,7 @@ impl AxisControls {
         for (field, _) in parameters {
             let option: HtmlOptionElement = typed("option", "");
             option.set_value(field.key);
-            option.set_text(&if field.symbol.is_empty() {
-                field.name.to_string()
-            } else {
-                format!("{} — {}", field.symbol, field.name)
-            });
+            option.set_text(&label(field));
             append(&self.select, &[&option]);
         }
         if let Some((field, _)) = parameters.get(chosen) {
@@ -87,6 +84,8 @@ impl AxisControls {
 /// The map over the view: its controls, its tiles, and the map being filled.
 #[derive(Default)]
 pub struct MapView {
+    /// Whether the map is shown (over the shell, which waits meanwhile).
+    open: bool,
     map: Option<ParameterMap>,
     tiles: Vec<Element>,
     parameters: Vec<(&'static Field, f64)>,
@@ -95,7 +94,7 @@ pub struct MapView {
 impl MapView {
     /// Whether the map is shown.
     pub fn is_open(&self) -> bool {
-        element("map").is_some_and(|m| !m.has_attribute("hidden"))
+        self.open
     }
 
     /// Shows the map for `spec`, over its first two parameters, and starts filling it.
@@ -108,6 +107,7 @@ impl MapView {
             return;
         };
         section.remove_attribute("hidden").ok();
+        self.open = true;
         self.parameters = parameters(spec);
         if self.parameters.len() < 2 {
             self.map = None;
@@ -130,6 +130,7 @@ impl MapView {
         if let Some(section) = element("map") {
             attr(&section, "hidden", "");
         }
+        self.open = false;
         self.map = None;
         signal("map", "");
     }

@@ -135,7 +135,8 @@ fn slider(
     Control::Slider { range, number }
 }
 
-fn label(field: &Field) -> String {
+/// A field's name with the paper's symbol before it, where it has one.
+pub(super) fn label(field: &Field) -> String {
     if field.symbol.is_empty() {
         field.name.to_string()
     } else {
