@@ -25,7 +25,8 @@ pub struct ActivatorInhibitor {
     a: Vec<f32>,
     h: Vec<f32>,
     c: f64,
-    rho: Vec<f32>,
+    /// Δt·ρ per cell (ρ fluctuates by ±`rho_noise`): the production per step.
+    rho_dt: Vec<f32>,
     /// The next step's values, swapped in after each step.
     next_a: Vec<f32>,
     next_h: Vec<f32>,
@@ -40,7 +41,11 @@ impl ActivatorInhibitor {
             )));
         }
         let grid = Grid::new(spec);
-        let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
+        let rho_dt = Noise::new(seed, 1)
+            .fluctuating(p.rho, p.rho_noise, grid.cells)
+            .iter()
+            .map(|&rho| (f64::from(rho) * grid.dt) as f32)
+            .collect();
         let mut a = vec![p.a_init as f32; grid.cells];
         starts::place(
             &mut a,
@@ -57,7 +62,7 @@ impl ActivatorInhibitor {
             c: p.c_init,
             next_a: vec![0.0; grid.cells],
             next_h: vec![0.0; grid.cells],
-            rho,
+            rho_dt,
             grid,
         })
     }
@@ -65,8 +70,7 @@ impl ActivatorInhibitor {
     fn step(&mut self) {
         let p = &self.p;
         let (dt, n) = (self.grid.dt, self.grid.cells);
-        let da = self.grid.diffusion(p.d_a) as f32;
-        let dh = self.grid.diffusion(p.d_h) as f32;
+        let (da, dh) = (self.grid.diffusion(p.d_a), self.grid.diffusion(p.d_h));
         let mean = f64::from(mean(&self.a));
         // Decay factor 1/(1 + Δt ν/c), written so that c = 0 gives 0 rather than a division.
         let keep = if p.nu == 0.0 {
@@ -74,24 +78,28 @@ impl ActivatorInhibitor {
         } else {
             (self.c / (self.c + dt * p.nu)) as f32
         };
-        let (kappa, h0, rho0) = (p.kappa as f32, p.h0 as f32, p.rho0 as f32);
-        let (mu, sigma, step) = (p.mu as f32, p.sigma as f32, dt as f32);
-        let (a, h, rho) = (&self.a[..n], &self.h[..n], &self.rho[..n]);
+        // The weights of a cell's own value (see `diffusion`): a′ = w_a a + D_a (a₋ + a₊) + …,
+        // h′ = (w_h h + D_h (h₋ + h₊) + …)·keep.
+        let [w_a, w_h] = [1.0 - 2.0 * da - dt * p.mu, 1.0 - 2.0 * dh].map(|w| w as f32);
+        let [da, dh, kappa, h0, rho0, sigma_dt] =
+            [da, dh, p.kappa, p.h0, p.rho0, p.sigma * dt].map(|x| x as f32);
+        let (a, h, rho_dt) = (&self.a[..n], &self.h[..n], &self.rho_dt[..n]);
         let (next_a, next_h) = (&mut self.next_a[..n], &mut self.next_h[..n]);
         diffusion::step(
             [a, h],
             self.grid.boundary,
             #[inline(always)]
-            |i, [lap_a, lap_h]| {
+            |i, [near_a, near_h]| {
                 // With q = 1 + κa² and g = h + h₀, the saturated autocatalysis a²/q and the
                 // inhibited production ρ(a²/q + ρ₀)/g share the denominator qg: one division.
                 let (a, h) = (a[i], h[i]);
-                let (q, g) = (1.0 + kappa * a * a, h + h0);
-                let per = rho[i] / (q * g);
-                let made = per * (a * a + rho0 * q);
-                let auto = per * g * a * a;
-                next_a[i] = diffusion::flush(a + step * (made - mu * a) + da * lap_a);
-                next_h[i] = diffusion::flush((h + step * (sigma + auto) + dh * lap_h) * keep);
+                let aa = a * a;
+                let (q, g) = (1.0 + kappa * aa, h + h0);
+                let per = rho_dt[i] / (q * g);
+                let made = per * (aa + rho0 * q);
+                let auto = per * g * aa;
+                next_a[i] = diffusion::flush(w_a * a + da * near_a + made);
+                next_h[i] = diffusion::flush((w_h * h + dh * near_h + sigma_dt + auto) * keep);
             },
         );
         std::mem::swap(&mut self.a, &mut self.next_a);

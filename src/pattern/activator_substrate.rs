@@ -25,8 +25,10 @@ pub struct ActivatorSubstrate {
     grid: Grid,
     a: Vec<f32>,
     s: Vec<f32>,
-    rho: Vec<f32>,
-    sigma: Vec<f32>,
+    /// Δt·ρ per cell (ρ fluctuates by ±`rho_noise`).
+    rho_dt: Vec<f32>,
+    /// Δt·σ(x) per cell: the substrate's supply per step.
+    sigma_dt: Vec<f32>,
     /// The next step's values, swapped in after each step.
     next_a: Vec<f32>,
     next_s: Vec<f32>,
@@ -35,11 +37,16 @@ pub struct ActivatorSubstrate {
 impl ActivatorSubstrate {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
-        let sigma = (0..grid.cells)
+        let rho_dt = Noise::new(seed, 1)
+            .fluctuating(p.rho, p.rho_noise, grid.cells)
+            .iter()
+            .map(|&rho| (f64::from(rho) * grid.dt) as f32)
+            .collect();
+        let sigma_dt = (0..grid.cells)
             .map(|i| {
                 let phase = TAU * grid.position(i) / p.sigma_period;
-                (p.sigma * (1.0 - p.sigma_depth * (1.0 - libm::cos(phase)) / 2.0)) as f32
+                let sigma = p.sigma * (1.0 - p.sigma_depth * (1.0 - libm::cos(phase)) / 2.0);
+                (sigma * grid.dt) as f32
             })
             .collect();
         Ok(Self {
@@ -48,36 +55,40 @@ impl ActivatorSubstrate {
             s: vec![p.s_init as f32; grid.cells],
             next_a: vec![0.0; grid.cells],
             next_s: vec![0.0; grid.cells],
-            rho,
-            sigma,
+            rho_dt,
+            sigma_dt,
             grid,
         })
     }
 
     fn step(&mut self) {
         let p = &self.p;
-        let (dt, n) = (self.grid.dt as f32, self.grid.cells);
-        let da = self.grid.diffusion(p.d_a) as f32;
-        let ds = self.grid.diffusion(p.d_s) as f32;
-        let (kappa, rho0) = (p.kappa as f32, p.rho0 as f32);
-        let (mu, nu) = (p.mu as f32, p.nu as f32);
-        let (a, s, rho, sigma) = (&self.a[..n], &self.s[..n], &self.rho[..n], &self.sigma[..n]);
+        let (dt, n) = (self.grid.dt, self.grid.cells);
+        let (da, ds) = (self.grid.diffusion(p.d_a), self.grid.diffusion(p.d_s));
+        // The weights of a cell's own value (see `diffusion`): a′ = w_a a + D_a (a₋ + a₊) + …,
+        // and the substrate's supply w_s s + D_s (s₋ + s₊) + Δt σ.
+        let [w_a, w_s] = [1.0 - 2.0 * da - dt * p.mu, 1.0 - 2.0 * ds].map(|w| w as f32);
+        let [da, ds, kappa, rho0, kept] =
+            [da, ds, p.kappa, p.rho0, 1.0 + dt * p.nu].map(|x| x as f32);
+        let (a, s) = (&self.a[..n], &self.s[..n]);
+        let (rho_dt, sigma_dt) = (&self.rho_dt[..n], &self.sigma_dt[..n]);
         let (next_a, next_s) = (&mut self.next_a[..n], &mut self.next_s[..n]);
         diffusion::step(
             [a, s],
             self.grid.boundary,
             #[inline(always)]
-            |i, [lap_a, lap_s]| {
-                // With q = 1 + κa² and made = a² + ρ₀q, the gain per unit substrate is
-                // ρ·made/q; the implicit substrate s′ = supply/(1 + Δt(ρ·made/q + ν)) is
-                // supply·q/(q + Δt(ρ·made + νq)), and the production ρ·made/q · s′ has the
-                // same denominator: one division for both.
+            |i, [near_a, near_s]| {
+                // With q = 1 + κa² and made = Δtρ(a² + ρ₀q), the gain per unit substrate in a
+                // step is made/q; the implicit substrate s′ = supply/(1 + made/q + Δtν) is
+                // supply·q/(q(1 + Δtν) + made), and the production made/q · s′ has the same
+                // denominator: one division for both.
                 let (a, s) = (a[i], s[i]);
-                let q = 1.0 + kappa * a * a;
-                let made = rho[i] * (a * a + rho0 * q);
-                let supply = s + dt * sigma[i] + ds * lap_s;
-                let per = supply / (q + dt * (made + nu * q));
-                next_a[i] = diffusion::flush(a + dt * (made * per - mu * a) + da * lap_a);
+                let aa = a * a;
+                let q = 1.0 + kappa * aa;
+                let made = rho_dt[i] * (aa + rho0 * q);
+                let supply = w_s * s + ds * near_s + sigma_dt[i];
+                let per = supply / (q * kept + made);
+                next_a[i] = diffusion::flush(w_a * a + da * near_a + made * per);
                 next_s[i] = diffusion::flush(q * per);
             },
         );

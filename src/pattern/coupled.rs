@@ -37,7 +37,8 @@ pub struct Coupled {
     a: Vec<f32>,
     e: Vec<f32>,
     f: Vec<f32>,
-    rho: Vec<f32>,
+    /// Δt·ρ per cell (ρ fluctuates by ±`rho_noise`).
+    rho_dt: Vec<f32>,
     /// The next step's values, swapped in after each step.
     next_a: Vec<f32>,
     next_e: Vec<f32>,
@@ -47,7 +48,11 @@ pub struct Coupled {
 impl Coupled {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let rho = Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells);
+        let rho_dt = Noise::new(seed, 1)
+            .fluctuating(p.rho, p.rho_noise, grid.cells)
+            .iter()
+            .map(|&rho| (f64::from(rho) * grid.dt) as f32)
+            .collect();
         let mut a = vec![0.0; grid.cells];
         starts::place(
             &mut a,
@@ -65,22 +70,28 @@ impl Coupled {
             next_a: vec![0.0; grid.cells],
             next_e: vec![0.0; grid.cells],
             next_f: vec![0.0; grid.cells],
-            rho,
+            rho_dt,
             grid,
         })
     }
 
     fn step(&mut self) {
         let p = &self.p;
-        let (dt, n) = (self.grid.dt as f32, self.grid.cells);
-        let da = self.grid.diffusion(p.d_a) as f32;
-        let de = self.grid.diffusion(p.d_e) as f32;
-        let [kappa, rho0, mu, gamma, theta] =
-            [p.kappa, p.rho0, p.mu, p.gamma, p.theta].map(|x| x as f32);
-        let [rho_e, rho_e0, mu_e, k_a] = [p.rho_e, p.rho_e0, p.mu_e, p.k_a].map(|x| x as f32);
-        let [nu_f, eps_f] = [p.nu_f, p.eps_f].map(|x| x as f32);
+        let (dt, n) = (self.grid.dt, self.grid.cells);
+        let (da, de) = (self.grid.diffusion(p.d_a), self.grid.diffusion(p.d_e));
+        // The weights of a cell's own value (see `diffusion`): x′ = w x + D (x₋ + x₊) + …
+        let [w_a, w_e, w_f] = [
+            1.0 - 2.0 * da - dt * p.mu,
+            1.0 - 2.0 * de - dt * p.mu_e,
+            1.0 - dt * p.nu_f,
+        ]
+        .map(|w| w as f32);
+        let [da, de, kappa, rho0, gamma_dt, theta] =
+            [da, de, p.kappa, p.rho0, p.gamma * dt, p.theta].map(|x| x as f32);
+        let [rho_e_dt, rho_e0, k_a, nu_f_dt, eps_f] =
+            [p.rho_e * dt, p.rho_e0, p.k_a, p.nu_f * dt, p.eps_f].map(|x| x as f32);
         let theta4 = theta * theta * theta * theta;
-        let (a, e, f, rho) = (&self.a[..n], &self.e[..n], &self.f[..n], &self.rho[..n]);
+        let (a, e, f, rho_dt) = (&self.a[..n], &self.e[..n], &self.f[..n], &self.rho_dt[..n]);
         let (next_a, next_e, next_f) = (
             &mut self.next_a[..n],
             &mut self.next_e[..n],
@@ -90,18 +101,17 @@ impl Coupled {
             [a, e],
             self.grid.boundary,
             #[inline(always)]
-            |i, [lap_a, lap_e]| {
+            |i, [near_a, near_e]| {
+                // Every rate below is per step (Δt folded into its constant).
                 let (a, e, f) = (a[i], e[i], f[i]);
-                let e2 = e * e;
-                let extinction = gamma * a * e2 * e2 / (theta4 + e2 * e2);
-                let reaction =
-                    rho[i] * (a * a / (1.0 + kappa * a * a) + rho0) - mu * a - extinction;
-                let enabled = rho_e * f * a / (a + k_a);
+                let (aa, e2) = (a * a, e * e);
+                let extinction = gamma_dt * a * e2 * e2 / (theta4 + e2 * e2);
+                let made = rho_dt[i] * (aa / (1.0 + kappa * aa) + rho0);
+                let enabled = rho_e_dt * f * a / (a + k_a);
                 let burst = enabled * e2 / (1.0 + e2);
-                next_a[i] = diffusion::flush(a + dt * reaction + da * lap_a);
-                next_e[i] =
-                    diffusion::flush(e + dt * (burst + enabled * rho_e0 - mu_e * e) + de * lap_e);
-                next_f[i] = diffusion::flush(f + dt * (nu_f * (1.0 - f) - eps_f * burst));
+                next_a[i] = diffusion::flush(w_a * a + da * near_a + made - extinction);
+                next_e[i] = diffusion::flush(w_e * e + de * near_e + burst + enabled * rho_e0);
+                next_f[i] = diffusion::flush(w_f * f + nu_f_dt - eps_f * burst);
             },
         );
         std::mem::swap(&mut self.a, &mut self.next_a);
