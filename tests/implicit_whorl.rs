@@ -166,7 +166,7 @@ fn bad_numbers_get_messages_that_name_the_key() {
         ),
         (
             "form.generator.pairs",
-            Box::new(|i| i.generator.pairs = vec![[0, 2]]),
+            Box::new(|i| i.generator.pairs = vec![[0, 9]]),
         ),
         ("form.spiral.lambda", Box::new(|i| i.spiral.lambda = 0.9)),
         ("form.surfaces", Box::new(|i| i.surfaces = 64 * 40)),

@@ -365,8 +365,9 @@ fn the_aperture_is_open_at_every_stage_the_grid_resolves() {
     // From the centre of the newest generating surface forward along the growth direction,
     // the field stays below the iso-value: the hollow reaches through the growing edge. A
     // whorl shows a hollow once its generating surface spans some ten voxels; the preset's
-    // resolution (96) resolves the last whorl, 256 voxels the last three.
-    for (resolution, spanned) in [(96, 8.0), (256, 10.0)] {
+    // resolution (112) resolves the last whorl, 256 voxels the last three.
+    let preset = implicit(&mut spec_of("murex-cabritii")).resolution;
+    for (resolution, spanned) in [(preset, 8.0), (256, 10.0)] {
         let mut spec = spec_of("murex-cabritii");
         implicit(&mut spec).resolution = resolution;
         let rows = spec.growth.rows as usize;

@@ -98,6 +98,7 @@ impl Default for VaricesSpec {
 }
 
 /// The axial rows of spines on the canal, one below each of the last three varices (table 2).
+/// They stand on the canal: the generator's first cone present at the varix's whorl.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct CanalSpinesSpec {
