@@ -72,3 +72,8 @@ test: deps lint test-native test-browser test-page
 bench: build deps-browser
 	cargo build --release --bin seashells
 	node tests/page/bench.mjs
+
+## Pictures of one shell from four sides, to look at: make screenshots LINK='v=1&preset=…'
+
+screenshots: build deps-browser
+	node tests/page/views.mjs '$(or $(LINK),v=1&preset=murex-cabritii)' tests/page/screenshots/views
