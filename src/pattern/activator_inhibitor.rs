@@ -41,11 +41,12 @@ impl ActivatorInhibitor {
             )));
         }
         let grid = Grid::new(spec);
-        let rho_dt = Noise::new(seed, 1)
-            .fluctuating(p.rho, p.rho_noise, grid.cells)
-            .iter()
-            .map(|&rho| (f64::from(rho) * grid.dt) as f32)
-            .collect();
+        let rho_dt = grid.per_step(
+            Noise::new(seed, 1)
+                .fluctuating(p.rho, p.rho_noise, grid.cells)
+                .into_iter()
+                .map(f64::from),
+        );
         let mut a = vec![p.a_init as f32; grid.cells];
         starts::place(
             &mut a,

@@ -37,18 +37,16 @@ pub struct ActivatorSubstrate {
 impl ActivatorSubstrate {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let rho_dt = Noise::new(seed, 1)
-            .fluctuating(p.rho, p.rho_noise, grid.cells)
-            .iter()
-            .map(|&rho| (f64::from(rho) * grid.dt) as f32)
-            .collect();
-        let sigma_dt = (0..grid.cells)
-            .map(|i| {
-                let phase = TAU * grid.position(i) / p.sigma_period;
-                let sigma = p.sigma * (1.0 - p.sigma_depth * (1.0 - libm::cos(phase)) / 2.0);
-                (sigma * grid.dt) as f32
-            })
-            .collect();
+        let rho_dt = grid.per_step(
+            Noise::new(seed, 1)
+                .fluctuating(p.rho, p.rho_noise, grid.cells)
+                .into_iter()
+                .map(f64::from),
+        );
+        let sigma_dt = grid.per_step((0..grid.cells).map(|i| {
+            let phase = TAU * grid.position(i) / p.sigma_period;
+            p.sigma * (1.0 - p.sigma_depth * (1.0 - libm::cos(phase)) / 2.0)
+        }));
         Ok(Self {
             p: p.clone(),
             a: vec![p.a_init as f32; grid.cells],

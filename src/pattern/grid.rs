@@ -39,6 +39,12 @@ impl Grid {
         d * f64::from(self.refinement * self.refinement) * self.dt
     }
 
+    /// Rates per unit time (a rate per cell) as amounts per step: each times Δt, rounded once to
+    /// single precision, so that the step's arithmetic does not multiply by Δt again.
+    pub fn per_step(&self, rates: impl IntoIterator<Item = f64>) -> Vec<f32> {
+        rates.into_iter().map(|r| (r * self.dt) as f32).collect()
+    }
+
     /// Position of cell i in unrefined cells (its centre).
     pub fn position(&self, i: usize) -> f64 {
         (i as f64 + 0.5) / f64::from(self.refinement)
