@@ -41,12 +41,7 @@ impl ActivatorInhibitor {
             )));
         }
         let grid = Grid::new(spec);
-        let rho_dt = grid.per_step(
-            Noise::new(seed, 1)
-                .fluctuating(p.rho, p.rho_noise, grid.cells)
-                .into_iter()
-                .map(f64::from),
-        );
+        let rho_dt = grid.per_step(Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells));
         let mut a = vec![p.a_init as f32; grid.cells];
         starts::place(
             &mut a,

@@ -37,12 +37,7 @@ pub struct ActivatorSubstrate {
 impl ActivatorSubstrate {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let rho_dt = grid.per_step(
-            Noise::new(seed, 1)
-                .fluctuating(p.rho, p.rho_noise, grid.cells)
-                .into_iter()
-                .map(f64::from),
-        );
+        let rho_dt = grid.per_step(Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells));
         let sigma_dt = grid.per_step((0..grid.cells).map(|i| {
             let phase = TAU * grid.position(i) / p.sigma_period;
             p.sigma * (1.0 - p.sigma_depth * (1.0 - libm::cos(phase)) / 2.0)

@@ -48,12 +48,7 @@ pub struct Coupled {
 impl Coupled {
     pub fn new(p: &Params, spec: &PatternSpec, seed: u64) -> Result<Self, PatternError> {
         let grid = Grid::new(spec);
-        let rho_dt = grid.per_step(
-            Noise::new(seed, 1)
-                .fluctuating(p.rho, p.rho_noise, grid.cells)
-                .into_iter()
-                .map(f64::from),
-        );
+        let rho_dt = grid.per_step(Noise::new(seed, 1).fluctuating(p.rho, p.rho_noise, grid.cells));
         let mut a = vec![0.0; grid.cells];
         starts::place(
             &mut a,

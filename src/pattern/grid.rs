@@ -41,8 +41,11 @@ impl Grid {
 
     /// Rates per unit time (a rate per cell) as amounts per step: each times Δt, rounded once to
     /// single precision, so that the step's arithmetic does not multiply by Δt again.
-    pub fn per_step(&self, rates: impl IntoIterator<Item = f64>) -> Vec<f32> {
-        rates.into_iter().map(|r| (r * self.dt) as f32).collect()
+    pub fn per_step<R: Into<f64>>(&self, rates: impl IntoIterator<Item = R>) -> Vec<f32> {
+        rates
+            .into_iter()
+            .map(|r| (r.into() * self.dt) as f32)
+            .collect()
     }
 
     /// Position of cell i in unrefined cells (its centre).

@@ -15,12 +15,12 @@ try {
   const canvas = page.locator('#shell');
   const box = await canvas.boundingBox();
   const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  await page.evaluate(() => {
+    for (const e of document.querySelectorAll('body *')) e.style.visibility = 'hidden';
+    document.getElementById('shell').style.visibility = 'visible';
+  });
   for (let side = 0; side < 4; side++) {
     await page.waitForTimeout(400);
-    await page.evaluate(() => {
-      for (const e of document.querySelectorAll('body *')) e.style.visibility = 'hidden';
-      document.getElementById('shell').style.visibility = 'visible';
-    });
     const file = `${dir}/side-${side}.png`;
     await canvas.screenshot({ path: file });
     console.log(file);
