@@ -7,7 +7,9 @@
 
 use super::blob_tree::Node;
 use super::implicit_whorl::{Whorl, whorl};
-use super::polygonizer::{ChunkCache, ChunkIndex, Grid, Scratch, mesh_chunk, surface_box};
+use super::polygonizer::{
+    ChunkCache, ChunkIndex, Grid, Memory, Scratch, Seams, mesh_chunk, surface_box,
+};
 use crate::growing_shape::{GeometryError, GrowingShape};
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::implicit::ImplicitSpec;
@@ -157,8 +159,10 @@ impl GrowingShape for ImplicitMesh {
             chunk,
             instance,
             &mut self.scratch,
-            Some(&mut cache),
-            Some(&self.reach[instance as usize]),
+            Memory::Cache {
+                cache: &mut cache,
+                changed: &self.reach[instance as usize],
+            },
         );
         if self.last_reach[linear] != instance {
             self.caches.insert(linear, cache);
@@ -183,6 +187,7 @@ impl GrowingShape for ImplicitMesh {
         self.pending.clear();
         self.live.clear();
         self.caches.clear();
+        let mut seams = Seams::default();
         for (linear, &reach) in self.last_reach.iter().enumerate() {
             if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
                 let chunk = self.grid.chunk_at(linear);
@@ -192,8 +197,7 @@ impl GrowingShape for ImplicitMesh {
                     chunk,
                     last,
                     &mut self.scratch,
-                    None,
-                    None,
+                    Memory::Seams(&mut seams),
                 ));
             }
         }

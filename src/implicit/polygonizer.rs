@@ -14,7 +14,10 @@
 //! A chunk is skipped unseen when the tree culled to it is empty (outside every support) or
 //! when bounds on the field over the ball around it ([`Node::range`]) keep it on one side of
 //! the iso-value (wholly inside or wholly outside). Normals are the field's exact gradient, and
-//! pattern coordinates the primitives' blended coordinates.
+//! pattern coordinates the primitives' blended coordinates. When a whole surface is meshed at
+//! once, each chunk hands the samples and vertices on its faces to the neighbours that share
+//! them ([`Seams`]); a chunk meshed again as it grows takes over what it computed before,
+//! outside the box its tree changed in ([`ChunkCache`]).
 
 use super::blob_tree::{Node, Probe};
 use super::falloff::ISO;
@@ -125,6 +128,95 @@ pub struct ChunkCache {
     vertices: HashMap<usize, Vertex>,
 }
 
+/// The samples and vertices on the faces between chunks, each handed by the chunk that meshed
+/// it to the neighbour across the face: when every chunk is meshed from one tree at one growth
+/// step, both would compute them, bit for bit alike. At 256³ the Murex's chunks share a third
+/// of their evaluated samples and a seventh of their vertices so.
+#[derive(Debug, Default)]
+pub struct Seams {
+    /// What each chunk is handed across its low face on each axis.
+    faces: HashMap<(ChunkIndex, usize), Face>,
+}
+
+/// What a chunk hands across its high face on one axis, indexed as in the chunk receiving it.
+#[derive(Debug, Default)]
+struct Face {
+    /// The evaluated samples, by sample index.
+    samples: Vec<(usize, f64)>,
+    /// The vertices on edges within the face, by edge key.
+    vertices: Vec<(usize, Vertex)>,
+}
+
+impl Seams {
+    /// What the neighbours below `chunk` on each axis handed it, taken out.
+    fn take(&mut self, chunk: ChunkIndex) -> Vec<Face> {
+        (0..3)
+            .filter_map(|axis| self.faces.remove(&(chunk, axis)))
+            .collect()
+    }
+
+    /// Hands the samples of `chunk` (empty when it was never sampled) and the vertices of its
+    /// edges (by key) to its neighbours above it on each axis.
+    fn hand_over(
+        &mut self,
+        grid: &Grid,
+        chunk: ChunkIndex,
+        field: &[f64],
+        vertices: impl Iterator<Item = (usize, Vertex)> + Clone,
+    ) {
+        let top = CHUNK as usize;
+        for axis in 0..3 {
+            if chunk[axis] + 1 >= grid.chunks[axis] {
+                continue;
+            }
+            // A sample or edge on the high face is the same one on the neighbour's low face.
+            let across = |mut i: [usize; 3]| {
+                i[axis] = 0;
+                local(i)
+            };
+            let mut face = Face::default();
+            if !field.is_empty() {
+                for a in 0..SIDE {
+                    for b in 0..SIDE {
+                        let mut i = [top; 3];
+                        i[(axis + 1) % 3] = a;
+                        i[(axis + 2) % 3] = b;
+                        let f = field[local(i)];
+                        if f.is_finite() {
+                            face.samples.push((across(i), f));
+                        }
+                    }
+                }
+            }
+            for (key, vertex) in vertices.clone() {
+                let (lo, direction) = edge_of(key);
+                if lo[axis] == top && DIRECTIONS[direction][axis] == 0 {
+                    face.vertices
+                        .push((edge_key(across(lo), direction), vertex));
+                }
+            }
+            if !face.samples.is_empty() || !face.vertices.is_empty() {
+                let mut neighbour = chunk;
+                neighbour[axis] += 1;
+                self.faces.insert((neighbour, axis), face);
+            }
+        }
+    }
+}
+
+/// What meshing a chunk takes over instead of computing it.
+pub enum Memory<'a> {
+    /// What meshing the same chunk left before the tree changed inside `changed` (growth);
+    /// the cache is rewritten.
+    Cache {
+        cache: &'a mut ChunkCache,
+        changed: &'a Bounds,
+    },
+    /// What the neighbours meshed before it from the same tree at the same step handed it; it
+    /// hands on its own faces in turn.
+    Seams(&'a mut Seams),
+}
+
 /// Buffers reused from chunk to chunk.
 #[derive(Default)]
 pub struct Scratch {
@@ -134,6 +226,8 @@ pub struct Scratch {
     /// Vertex of each (sample, direction) edge met so far in this chunk, or `u32::MAX`.
     vertex_of: Vec<u32>,
     touched: Vec<usize>,
+    /// Vertices taken over from a [`Memory`], by edge key.
+    known: HashMap<usize, Vertex>,
 }
 
 /// Samples along each side of a chunk: the corners of its voxels.
@@ -168,6 +262,21 @@ fn offset(corner: usize) -> [usize; 3] {
 
 fn local(i: [usize; 3]) -> usize {
     i[0] + SIDE * (i[1] + SIDE * i[2])
+}
+
+/// The sample with index `n` in a chunk: the inverse of [`local`].
+fn at_local(n: usize) -> [usize; 3] {
+    [n % SIDE, n / SIDE % SIDE, n / (SIDE * SIDE)]
+}
+
+/// The key of the grid edge from sample `lo` (its index in a chunk) along a direction.
+fn edge_key(lo: usize, direction: usize) -> usize {
+    lo * DIRECTIONS.len() + direction
+}
+
+/// The first sample and the direction of the edge with key `key`: the inverse of [`edge_key`].
+fn edge_of(key: usize) -> ([usize; 3], usize) {
+    (at_local(key / DIRECTIONS.len()), key % DIRECTIONS.len())
 }
 
 /// Which side of the iso-value the field of `tree` is proven to keep throughout `region`, by
@@ -216,8 +325,6 @@ struct Sampler<'a> {
     first: [i64; 3],
     /// The chunk's samples; NaN where not yet filled.
     field: &'a mut [f64],
-    /// The box the tree changed in since the samples in the slice were taken.
-    reuse: Option<(&'a Bounds, &'a [f64])>,
 }
 
 impl Sampler<'_> {
@@ -235,8 +342,9 @@ impl Sampler<'_> {
 
     /// Fills the samples of the block of `size` voxels at `at`: marked [`proven`] when the
     /// range of `tree` keeps it on one side, else split in eight, down to blocks of
-    /// [`SAMPLED_BLOCK`] whose samples are evaluated. Near a surface most blocks hold none of
-    /// it, and so most samples of a chunk the surface passes through are never evaluated.
+    /// [`SAMPLED_BLOCK`] whose samples are evaluated, but for those known already. Near a
+    /// surface most blocks hold none of it, and so most samples of a chunk the surface passes
+    /// through are never evaluated.
     fn block(&mut self, tree: &Node, at: [usize; 3], size: usize) {
         if let Some(inside) = one_side(tree, &self.region(at, size)) {
             self.mark(at, size, inside);
@@ -247,18 +355,11 @@ impl Sampler<'_> {
                 self.block(tree, std::array::from_fn(|k| at[k] + o[k] * half), half);
             }
         } else {
-            let (grid, first, reuse) = (self.grid, self.first, self.reuse);
+            let (grid, first) = (self.grid, self.first);
             self.each(at, size, |i, f| {
-                if f.is_finite() {
-                    return;
+                if !f.is_finite() {
+                    *f = tree.field(grid.sample(std::array::from_fn(|k| first[k] + i[k] as i64)));
                 }
-                let p = grid.sample(std::array::from_fn(|k| first[k] + i[k] as i64));
-                *f = match reuse {
-                    Some((changed, old)) if !changed.contains(p) && old[local(i)].is_finite() => {
-                        old[local(i)]
-                    }
-                    _ => tree.field(p),
-                };
             });
         }
     }
@@ -297,25 +398,26 @@ struct Culled {
 /// Samples the field of `tree` at growth step `step` at a chunk's corners into `field`, and
 /// gives the trees culled to the chunk and its octants; `None` when the surface does not pass
 /// through it (proven by the culled tree or the field's range, or seen in the samples).
-/// Samples in blocks proven one-sided hold [`proven`] values.
+/// `known` first fills in the samples known already (exact, or left NaN). Samples in blocks
+/// proven one-sided hold [`proven`] values; `field` is left empty when none was sampled.
 fn sample(
     tree: &Node,
     grid: &Grid,
     chunk: ChunkIndex,
     step: u32,
     field: &mut Vec<f64>,
-    reuse: Option<(&Bounds, &[f64])>,
+    known: impl FnOnce(&mut [f64]),
 ) -> Option<Culled> {
+    field.clear();
     let region = grid.region(chunk);
     let tree = tree.cull(&region.padded(grid.voxel), step)?;
     one_side(&tree, &region).is_none().then_some(())?;
-    field.clear();
     field.resize(SIDE * SIDE * SIDE, f64::NAN);
+    known(field);
     let mut sampler = Sampler {
         grid,
         first: Grid::first_sample(chunk),
         field,
-        reuse,
     };
     let octants = std::array::from_fn(|octant| {
         let at = offset(octant).map(|o| o * OCTANT);
@@ -385,7 +487,7 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
     let mut field = Vec::new();
     let mut inside = Bounds::EMPTY;
     for chunk in grid.chunks_touching(&tree.bounds) {
-        if sample(tree, grid, chunk, step, &mut field, None).is_none() {
+        if sample(tree, grid, chunk, step, &mut field, |_| {}).is_none() {
             continue;
         }
         let first = Grid::first_sample(chunk);
@@ -404,29 +506,74 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
 }
 
 /// The mesh of the surface of `tree` at growth step `step` inside one chunk; empty when the
-/// chunk is proven to hold none of it. With `changed`, the tree differs from when `cache` was
-/// left only inside that box; the cache, when there is one, is rewritten either way.
+/// chunk is proven to hold none of it. Samples and vertices that `memory` holds are taken
+/// over instead of computed.
 pub fn mesh_chunk(
     tree: &Node,
     grid: &Grid,
     chunk: ChunkIndex,
     step: u32,
     scratch: &mut Scratch,
-    cache: Option<&mut ChunkCache>,
-    changed: Option<&Bounds>,
+    mut memory: Memory,
 ) -> Mesh {
-    let old = cache.as_deref().filter(|c| !c.field.is_empty());
-    let changed = changed.filter(|_| old.is_some());
-    let reuse = changed.zip(old).map(|(b, c)| (b, c.field.as_slice()));
-    let Some(culled) = sample(tree, grid, chunk, step, &mut scratch.field, reuse) else {
-        if let Some(cache) = cache {
-            cache.field.clear();
-            cache.vertices.clear();
+    let first = Grid::first_sample(chunk);
+    let global = |i: [usize; 3]| std::array::from_fn(|k| first[k] + i[k] as i64);
+    // The grid edge with key `key` and the box it spans: a vertex looks at the field there only.
+    let edge = |key: usize| {
+        let (lo, direction) = edge_of(key);
+        let hi = std::array::from_fn(|k| lo[k] + DIRECTIONS[direction][k]);
+        (lo, hi)
+    };
+    let received = match &mut memory {
+        Memory::Seams(seams) => seams.take(chunk),
+        _ => Vec::new(),
+    };
+    scratch.known.clear();
+    let culled = match &memory {
+        Memory::Cache { cache, changed } if !cache.field.is_empty() => {
+            let unchanged = |(lo, hi): ([usize; 3], [usize; 3])| {
+                let reach = Bounds {
+                    min: grid.sample(global(lo)),
+                    max: grid.sample(global(hi)),
+                };
+                !changed.intersects(&reach)
+            };
+            scratch.known.extend(
+                (cache.vertices.iter())
+                    .filter(|(key, _)| unchanged(edge(**key)))
+                    .map(|(key, v)| (*key, *v)),
+            );
+            sample(tree, grid, chunk, step, &mut scratch.field, |field| {
+                for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
+                    if old.is_finite() && !changed.contains(grid.sample(global(at_local(i)))) {
+                        *f = *old;
+                    }
+                }
+            })
+        }
+        _ => {
+            for face in &received {
+                scratch.known.extend(face.vertices.iter().copied());
+            }
+            sample(tree, grid, chunk, step, &mut scratch.field, |field| {
+                for &(i, f) in received.iter().flat_map(|face| &face.samples) {
+                    field[i] = f;
+                }
+            })
+        }
+    };
+    let Some(culled) = culled else {
+        match memory {
+            Memory::Cache { cache, .. } => {
+                cache.field.clear();
+                cache.vertices.clear();
+            }
+            Memory::Seams(seams) => {
+                seams.hand_over(grid, chunk, &scratch.field, std::iter::empty());
+            }
         }
         return Mesh::default();
     };
-    let first = Grid::first_sample(chunk);
-    let global = |i: [usize; 3]| std::array::from_fn(|k| first[k] + i[k] as i64);
     class(
         &culled.chunk,
         grid,
@@ -479,25 +626,19 @@ pub fn mesh_chunk(
                             .iter()
                             .position(|d| (0..3).all(|k| lo[k] + d[k] == hi[k]))
                             .expect("Kuhn edges join dominating corners");
-                        let key = local(lo) * DIRECTIONS.len() + direction;
+                        let key = edge_key(local(lo), direction);
                         if scratch.vertex_of[key] == u32::MAX {
                             scratch.vertex_of[key] = mesh.next_index();
                             scratch.touched.push(key);
-                            let ends = [
-                                (grid.sample(global(lo)), scratch.field[local(lo)]),
-                                (grid.sample(global(hi)), scratch.field[local(hi)]),
-                            ];
-                            // The vertex looks at the field along its edge only.
-                            let reach = Bounds {
-                                min: ends[0].0,
-                                max: ends[1].0,
-                            };
-                            let kept = changed
-                                .filter(|b| !b.intersects(&reach))
-                                .and_then(|_| old?.vertices.get(&key));
-                            mesh.vertices.push(match kept {
+                            mesh.vertices.push(match scratch.known.get(&key) {
                                 Some(v) => *v,
-                                None => surface_vertex(tree, ends),
+                                None => surface_vertex(
+                                    tree,
+                                    [
+                                        (grid.sample(global(lo)), scratch.field[local(lo)]),
+                                        (grid.sample(global(hi)), scratch.field[local(hi)]),
+                                    ],
+                                ),
                             });
                         }
                         scratch.vertex_of[key]
@@ -554,13 +695,17 @@ pub fn mesh_chunk(
             }
         }
     }
-    if let Some(cache) = cache {
-        cache.vertices.clear();
-        for &key in &scratch.touched {
-            let vertex = mesh.vertices[scratch.vertex_of[key] as usize];
-            cache.vertices.insert(key, vertex);
+    let made = scratch
+        .touched
+        .iter()
+        .map(|&key| (key, mesh.vertices[scratch.vertex_of[key] as usize]));
+    match memory {
+        Memory::Cache { cache, .. } => {
+            cache.vertices.clear();
+            cache.vertices.extend(made);
+            std::mem::swap(&mut cache.field, &mut scratch.field);
         }
-        std::mem::swap(&mut cache.field, &mut scratch.field);
+        Memory::Seams(seams) => seams.hand_over(grid, chunk, &scratch.field, made),
     }
     for key in scratch.touched.drain(..) {
         scratch.vertex_of[key] = u32::MAX;
@@ -608,6 +753,7 @@ const CULLED_CHUNKS: u32 = 4;
 /// Every chunk of `tree` at growth step `step`, meshed and joined: the whole surface at once.
 pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
     let mut scratch = Scratch::default();
+    let mut seams = Seams::default();
     let mut mesh = Mesh::default();
     let mut blocks: Vec<Vec<ChunkIndex>> = Vec::new();
     let mut block_of = HashMap::new();
@@ -635,8 +781,7 @@ pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
                 chunk,
                 step,
                 &mut scratch,
-                None,
-                None,
+                Memory::Seams(&mut seams),
             ));
         }
     }
@@ -663,7 +808,7 @@ mod tests {
         let grid = Grid::new(&tree.bounds, 64);
         let (mut field, mut evaluated, mut proven, mut meshed) = (Vec::new(), 0, 0, 0);
         for chunk in grid.chunks_touching(&tree.bounds) {
-            if sample(tree, &grid, chunk, step, &mut field, None).is_none() {
+            if sample(tree, &grid, chunk, step, &mut field, |_| {}).is_none() {
                 continue;
             }
             meshed += 1;
