@@ -325,16 +325,23 @@ impl Node {
                     }
                 },
             ),
+            // Where the child has no field, neither has it a gradient to carry back.
             Op::Warp(bend, child) => {
-                let (q, jacobian) = bend.inverse_with_jacobian(p);
-                let inner = child.probe(q);
+                let place = bend.place(p);
+                let inner = child.probe(bend.unbend(p, place));
+                if inner.field == 0.0 {
+                    return inner;
+                }
                 Probe {
-                    gradient: jacobian.transpose() * inner.gradient,
+                    gradient: bend.jacobian(place).transpose() * inner.gradient,
                     ..inner
                 }
             }
             Op::Transform(affine, child) => {
                 let inner = child.probe(affine.inverse.transform_point3(p));
+                if inner.field == 0.0 {
+                    return inner;
+                }
                 Probe {
                     gradient: affine.inverse.matrix3.transpose() * inner.gradient,
                     ..inner

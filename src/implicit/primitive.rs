@@ -59,12 +59,18 @@ impl Primitive {
     }
 
     /// The field at `p` with its gradient, by the chain rule through the squared normalised
-    /// distance d² (the field is [`Primitive::field`], bit for bit).
+    /// distance d² (the field is [`Primitive::field`], bit for bit). Beyond the support both
+    /// are zero, and the gradient is not worked out.
     pub fn field_gradient(&self, p: DVec3) -> (f64, DVec3) {
+        const NONE: (f64, DVec3) = (0.0, DVec3::ZERO);
         let (d2, grad_d2) = match *self {
             Primitive::Point { centre, radius } => {
                 let r2 = radius * radius;
-                (p.distance_squared(centre) / r2, (p - centre) * (2.0 / r2))
+                let d2 = p.distance_squared(centre) / r2;
+                if d2 >= 1.0 {
+                    return NONE;
+                }
+                (d2, (p - centre) * (2.0 / r2))
             }
             Primitive::Cone { from, to, radii } => {
                 let (axis, length2, t) = projection(p, from, to);
@@ -73,6 +79,9 @@ impl Primitive {
                 let r = radii[0] + t * (radii[1] - radii[0]);
                 let v = p - (from + t * axis);
                 let d2 = p.distance_squared(from + t * axis) / (r * r);
+                if d2 >= 1.0 {
+                    return NONE;
+                }
                 // Where t follows p, the radius does too: ∂(1/r²)/∂p = −2 r′ ∇t / r³.
                 let taper = if free {
                     axis * (-2.0 * d2 * (radii[1] - radii[0]) / (r * length2))
@@ -90,15 +99,16 @@ impl Primitive {
                 let (h, ring, length) = ring_offset(p, centre, axis);
                 let rho = length - major;
                 let r2 = radius * radius;
+                let d2 = (rho * rho + h * h) / r2;
+                if d2 >= 1.0 {
+                    return NONE;
+                }
                 let outward = if length > 0.0 {
                     ring / length
                 } else {
                     DVec3::ZERO
                 };
-                (
-                    (rho * rho + h * h) / r2,
-                    (outward * rho + axis * h) * (2.0 / r2),
-                )
+                (d2, (outward * rho + axis * h) * (2.0 / r2))
             }
         };
         (falloff(d2), grad_d2 * falloff_slope(d2))
