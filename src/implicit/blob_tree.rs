@@ -75,7 +75,7 @@ pub enum Op {
     /// w : the child seen through a bend.
     Warp(Bend, Box<Node>),
     /// t, s, r : the child moved by an affine map.
-    Transform(Box<Affine>, Box<Node>),
+    Transform(Rc<Affine>, Box<Node>),
 }
 
 /// A BlobTree node with what evaluation and culling need to know of it.
@@ -168,13 +168,13 @@ impl Node {
         let birth = child.birth;
         let moved = match child.op {
             Op::Transform(inner, grandchild) => Self::new(Op::Transform(
-                Box::new(Affine::new(forward * inner.forward)),
+                Rc::new(Affine::new(forward * inner.forward)),
                 grandchild,
             )),
             op => match similarity_scale(forward) {
                 Some(scale) => Self::new(push(op, forward, scale)),
                 None => Self::new(Op::Transform(
-                    Box::new(Affine::new(forward)),
+                    Rc::new(Affine::new(forward)),
                     Box::new(Self::new(op)),
                 )),
             },
@@ -566,7 +566,7 @@ fn push(op: Op, m: DAffine3, scale: f64) -> Op {
             Box::new(Node::transform(m, *b)),
         ),
         Op::Warp(bend, c) => Op::Transform(
-            Box::new(Affine::new(m)),
+            Rc::new(Affine::new(m)),
             Box::new(Node::new(Op::Warp(bend, c))),
         ),
         Op::Transform(..) => unreachable!("transforms are composed, not pushed"),

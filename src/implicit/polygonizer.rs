@@ -162,20 +162,17 @@ impl Seams {
         grid: &Grid,
         chunk: ChunkIndex,
         field: &[f64],
-        vertices: impl Iterator<Item = (usize, Vertex)> + Clone,
+        vertices: impl Iterator<Item = (usize, Vertex)>,
     ) {
         let top = CHUNK as usize;
-        for axis in 0..3 {
-            if chunk[axis] + 1 >= grid.chunks[axis] {
-                continue;
-            }
-            // A sample or edge on the high face is the same one on the neighbour's low face.
-            let across = |mut i: [usize; 3]| {
-                i[axis] = 0;
-                local(i)
-            };
-            let mut face = Face::default();
-            if !field.is_empty() {
+        // A sample or edge on the high face is the same one on the neighbour's low face.
+        let across = |mut i: [usize; 3], axis: usize| {
+            i[axis] = 0;
+            local(i)
+        };
+        let mut faces: [Face; 3] = Default::default();
+        if !field.is_empty() {
+            for (axis, face) in faces.iter_mut().enumerate() {
                 for a in 0..SIDE {
                     for b in 0..SIDE {
                         let mut i = [top; 3];
@@ -183,21 +180,26 @@ impl Seams {
                         i[(axis + 2) % 3] = b;
                         let f = field[local(i)];
                         if f.is_finite() {
-                            face.samples.push((across(i), f));
+                            face.samples.push((across(i, axis), f));
                         }
                     }
                 }
             }
-            for (key, vertex) in vertices.clone() {
-                let (lo, direction) = edge_of(key);
+        }
+        for (key, vertex) in vertices {
+            let (lo, direction) = edge_of(key);
+            for (axis, face) in faces.iter_mut().enumerate() {
                 if lo[axis] == top && DIRECTIONS[direction][axis] == 0 {
                     face.vertices
-                        .push((edge_key(across(lo), direction), vertex));
+                        .push((edge_key(across(lo, axis), direction), vertex));
                 }
             }
-            if !face.samples.is_empty() || !face.vertices.is_empty() {
-                let mut neighbour = chunk;
-                neighbour[axis] += 1;
+        }
+        for (axis, face) in faces.into_iter().enumerate() {
+            let mut neighbour = chunk;
+            neighbour[axis] += 1;
+            let empty = face.samples.is_empty() && face.vertices.is_empty();
+            if neighbour[axis] < grid.chunks[axis] && !empty {
                 self.faces.insert((neighbour, axis), face);
             }
         }
@@ -226,8 +228,38 @@ pub struct Scratch {
     /// Vertex of each (sample, direction) edge met so far in this chunk, or `u32::MAX`.
     vertex_of: Vec<u32>,
     touched: Vec<usize>,
-    /// Vertices taken over from a [`Memory`], by edge key.
-    known: HashMap<usize, Vertex>,
+    /// Vertices taken over from a [`Memory`].
+    known: Known,
+}
+
+/// The vertices a chunk takes over from a [`Memory`], in a table over all its edges by key,
+/// cleared through the keys set.
+#[derive(Default)]
+struct Known {
+    table: Vec<Option<Vertex>>,
+    keys: Vec<usize>,
+}
+
+impl Known {
+    fn clear(&mut self) {
+        for key in self.keys.drain(..) {
+            self.table[key] = None;
+        }
+        self.table.resize(EDGES, None);
+    }
+
+    fn get(&self, key: usize) -> Option<Vertex> {
+        self.table[key]
+    }
+}
+
+impl Extend<(usize, Vertex)> for Known {
+    fn extend<I: IntoIterator<Item = (usize, Vertex)>>(&mut self, vertices: I) {
+        for (key, vertex) in vertices {
+            self.table[key] = Some(vertex);
+            self.keys.push(key);
+        }
+    }
 }
 
 /// Samples along each side of a chunk: the corners of its voxels.
@@ -244,6 +276,9 @@ const DIRECTIONS: [[usize; 3]; 7] = [
     [0, 1, 1],
     [1, 1, 1],
 ];
+
+/// Grid edges a chunk has, by [`edge_key`]: one in each direction from each sample.
+const EDGES: usize = SIDE * SIDE * SIDE * DIRECTIONS.len();
 
 /// The six tetrahedra of a voxel, as corner numbers (bit k: offset along axis k): each walks
 /// from corner 0 to corner 7 adding one axis at a time, in one of the six orders.
@@ -581,9 +616,7 @@ pub fn mesh_chunk(
         &scratch.field,
         &mut scratch.inside,
     );
-    scratch
-        .vertex_of
-        .resize(SIDE * SIDE * SIDE * DIRECTIONS.len(), u32::MAX);
+    scratch.vertex_of.resize(EDGES, u32::MAX);
     let mut mesh = Mesh::default();
     for z in 0..CHUNK as usize {
         for y in 0..CHUNK as usize {
@@ -630,8 +663,8 @@ pub fn mesh_chunk(
                         if scratch.vertex_of[key] == u32::MAX {
                             scratch.vertex_of[key] = mesh.next_index();
                             scratch.touched.push(key);
-                            mesh.vertices.push(match scratch.known.get(&key) {
-                                Some(v) => *v,
+                            mesh.vertices.push(match scratch.known.get(key) {
+                                Some(v) => v,
                                 None => surface_vertex(
                                     tree,
                                     [
