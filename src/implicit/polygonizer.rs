@@ -426,7 +426,8 @@ struct Culled {
     /// Culled to the chunk and one voxel more on every side: the neighbours that decide a
     /// pinhole (see `class`).
     chunk: Node,
-    /// Culled to each octant ([`octant_of`]); `None` where the field is zero throughout it.
+    /// Culled to each octant ([`octant_of`]); `None` where the field is zero throughout it or
+    /// proven on one side of the iso-value.
     octants: [Option<Node>; 8],
 }
 
@@ -456,7 +457,13 @@ fn sample(
     };
     let octants = std::array::from_fn(|octant| {
         let at = offset(octant).map(|o| o * OCTANT);
-        let culled = tree.cull(&sampler.region(at, OCTANT), step);
+        let region = sampler.region(at, OCTANT);
+        // An octant the chunk's tree keeps on one side (a third of them) is never culled.
+        if let Some(inside) = one_side(&tree, &region) {
+            sampler.mark(at, OCTANT, inside);
+            return None;
+        }
+        let culled = tree.cull(&region, step);
         match &culled {
             Some(t) => sampler.block(t, at, OCTANT),
             None => sampler.mark(at, OCTANT, false),
@@ -632,7 +639,7 @@ pub fn mesh_chunk(
                     continue;
                 }
                 // The octant's tree holds every primitive that reaches this voxel (an octant
-                // without one is proven outside, so none of its voxels gets here).
+                // without one is proven on one side, so none of its voxels gets here).
                 let tree = culled.octants[octant_of([x, y, z])]
                     .as_ref()
                     .unwrap_or(&culled.chunk);
