@@ -291,7 +291,129 @@ const TETRAHEDRA: [[usize; 4]; 6] = [
     [0, 4, 6, 7],
 ];
 
-fn offset(corner: usize) -> [usize; 3] {
+/// A grid edge of a voxel, from corner `lo` to the corner `hi` that dominates it, along
+/// [`DIRECTIONS`]`[direction]`.
+#[derive(Clone, Copy)]
+struct Edge {
+    lo: usize,
+    hi: usize,
+    direction: usize,
+}
+
+/// How the surface cuts a tetrahedron with a given set of corners inside: the edges its
+/// vertices lie on, in the order they are made; its triangles over them; and the direction
+/// from the inside corners' mean to the outside corners' mean, which the triangles face.
+#[derive(Clone, Copy)]
+struct Cut {
+    edges: [Edge; 4],
+    edge_count: usize,
+    triangles: [[usize; 3]; 2],
+    triangle_count: usize,
+    outward: [f64; 3],
+}
+
+/// The cut of each tetrahedron of [`TETRAHEDRA`] for each set of its corners inside (bit i:
+/// its corner i): one inside corner (or one outside) gives a triangle over the three edges from
+/// it; two give the quad a0–b0, a0–b1, a1–b1, a1–b0 as two triangles.
+static CUTS: [[Cut; 16]; 6] = {
+    const NONE: Edge = Edge {
+        lo: 0,
+        hi: 0,
+        direction: 0,
+    };
+    const EMPTY: Cut = Cut {
+        edges: [NONE; 4],
+        edge_count: 0,
+        triangles: [[0; 3]; 2],
+        triangle_count: 0,
+        outward: [0.0; 3],
+    };
+    const fn edge(a: usize, b: usize) -> Edge {
+        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+        let (l, h) = (offset(lo), offset(hi));
+        let mut direction = 0;
+        while !(l[0] + DIRECTIONS[direction][0] == h[0]
+            && l[1] + DIRECTIONS[direction][1] == h[1]
+            && l[2] + DIRECTIONS[direction][2] == h[2])
+        {
+            direction += 1;
+        }
+        Edge { lo, hi, direction }
+    }
+    const fn mean(corners: &[usize; 4], count: usize) -> [f64; 3] {
+        let mut sum = [0.0; 3];
+        let mut i = 0;
+        while i < count {
+            let o = offset(corners[i]);
+            sum = [
+                sum[0] + o[0] as f64,
+                sum[1] + o[1] as f64,
+                sum[2] + o[2] as f64,
+            ];
+            i += 1;
+        }
+        let n = count as f64;
+        [sum[0] / n, sum[1] / n, sum[2] / n]
+    }
+    let mut cuts = [[EMPTY; 16]; 6];
+    let mut t = 0;
+    while t < 6 {
+        let tet = TETRAHEDRA[t];
+        let mut mask = 1;
+        while mask < 15 {
+            let (mut ins, mut outs) = ([0; 4], [0; 4]);
+            let (mut n_in, mut n_out) = (0, 0);
+            let mut i = 0;
+            while i < 4 {
+                if mask & 1 << i != 0 {
+                    ins[n_in] = tet[i];
+                    n_in += 1;
+                } else {
+                    outs[n_out] = tet[i];
+                    n_out += 1;
+                }
+                i += 1;
+            }
+            let (a, b) = (mean(&outs, n_out), mean(&ins, n_in));
+            let mut cut = Cut {
+                outward: [a[0] - b[0], a[1] - b[1], a[2] - b[2]],
+                ..EMPTY
+            };
+            if n_in == 2 {
+                cut.edges = [
+                    edge(ins[0], outs[0]),
+                    edge(ins[0], outs[1]),
+                    edge(ins[1], outs[1]),
+                    edge(ins[1], outs[0]),
+                ];
+                cut.edge_count = 4;
+                cut.triangles = [[0, 1, 2], [0, 2, 3]];
+                cut.triangle_count = 2;
+            } else {
+                let (apex, base) = if n_in == 1 {
+                    (ins[0], outs)
+                } else {
+                    (outs[0], ins)
+                };
+                cut.edges = [
+                    edge(apex, base[0]),
+                    edge(apex, base[1]),
+                    edge(apex, base[2]),
+                    NONE,
+                ];
+                cut.edge_count = 3;
+                cut.triangle_count = 1;
+                cut.triangles[0] = [0, 1, 2];
+            }
+            cuts[t][mask] = cut;
+            mask += 1;
+        }
+        t += 1;
+    }
+    cuts
+};
+
+const fn offset(corner: usize) -> [usize; 3] {
     [corner & 1, (corner >> 1) & 1, (corner >> 2) & 1]
 }
 
@@ -643,30 +765,13 @@ pub fn mesh_chunk(
                 let tree = culled.octants[octant_of([x, y, z])]
                     .as_ref()
                     .unwrap_or(&culled.chunk);
-                for tet in TETRAHEDRA {
-                    let (mut ins, mut outs) = ([0; 4], [0; 4]);
-                    let (mut n_in, mut n_out) = (0, 0);
-                    for c in tet {
-                        if mask & 1 << c != 0 {
-                            ins[n_in] = c;
-                            n_in += 1;
-                        } else {
-                            outs[n_out] = c;
-                            n_out += 1;
-                        }
-                    }
-                    if n_in == 0 || n_out == 0 {
-                        continue;
-                    }
-                    let (ins, outs) = (&ins[..n_in], &outs[..n_out]);
-                    let mut vertex = |a: usize, b: usize| {
-                        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-                        let (lo, hi) = (corner(lo), corner(hi));
-                        let direction = DIRECTIONS
-                            .iter()
-                            .position(|d| (0..3).all(|k| lo[k] + d[k] == hi[k]))
-                            .expect("Kuhn edges join dominating corners");
-                        let key = edge_key(local(lo), direction);
+                for (tet, cuts) in TETRAHEDRA.iter().zip(&CUTS) {
+                    let inside = (0..4).filter(|&i| mask & 1 << tet[i] != 0);
+                    let cut = &cuts[inside.fold(0, |m, i| m | 1 << i)];
+                    let mut made = [0; 4];
+                    for (slot, edge) in made.iter_mut().zip(&cut.edges[..cut.edge_count]) {
+                        let (lo, hi) = (corner(edge.lo), corner(edge.hi));
+                        let key = edge_key(local(lo), edge.direction);
                         if scratch.vertex_of[key] == u32::MAX {
                             scratch.vertex_of[key] = mesh.next_index();
                             scratch.touched.push(key);
@@ -681,54 +786,15 @@ pub fn mesh_chunk(
                                 ),
                             });
                         }
-                        scratch.vertex_of[key]
-                    };
-                    let inward = |p: &Mesh, t: [u32; 3]| {
+                        *slot = scratch.vertex_of[key];
+                    }
+                    for triangle in &cut.triangles[..cut.triangle_count] {
+                        let t = triangle.map(|i| made[i]);
                         // Whether the triangle faces from the inside corners to the outside ones.
                         let at =
-                            |i: u32| DVec3::from(p.vertices[i as usize].position.map(f64::from));
+                            |i: u32| DVec3::from(mesh.vertices[i as usize].position.map(f64::from));
                         let face = (at(t[1]) - at(t[0])).cross(at(t[2]) - at(t[0]));
-                        let mean = |cs: &[usize]| {
-                            cs.iter()
-                                .map(|&c| {
-                                    let o = offset(c);
-                                    DVec3::new(o[0] as f64, o[1] as f64, o[2] as f64)
-                                })
-                                .sum::<DVec3>()
-                                / cs.len() as f64
-                        };
-                        face.dot(mean(outs) - mean(ins)) < 0.0
-                    };
-                    let (triangles, count) = match n_in {
-                        1 => {
-                            let t = [
-                                vertex(ins[0], outs[0]),
-                                vertex(ins[0], outs[1]),
-                                vertex(ins[0], outs[2]),
-                            ];
-                            ([t, t], 1)
-                        }
-                        3 => {
-                            let t = [
-                                vertex(outs[0], ins[0]),
-                                vertex(outs[0], ins[1]),
-                                vertex(outs[0], ins[2]),
-                            ];
-                            ([t, t], 1)
-                        }
-                        _ => {
-                            // Two in, two out: the quad a0–b0, a0–b1, a1–b1, a1–b0.
-                            let q = [
-                                vertex(ins[0], outs[0]),
-                                vertex(ins[0], outs[1]),
-                                vertex(ins[1], outs[1]),
-                                vertex(ins[1], outs[0]),
-                            ];
-                            ([[q[0], q[1], q[2]], [q[0], q[2], q[3]]], 2)
-                        }
-                    };
-                    for &t in &triangles[..count] {
-                        let flip = inward(&mesh, t);
+                        let flip = face.dot(DVec3::from(cut.outward)) < 0.0;
                         mesh.triangle(t, flip);
                     }
                 }
