@@ -130,8 +130,8 @@ pub struct ChunkCache {
 
 /// The samples and vertices on the faces between chunks, each handed by the chunk that meshed
 /// it to the neighbour across the face: when every chunk is meshed from one tree at one growth
-/// step, both would compute them, bit for bit alike. At 256³ the Murex's chunks share a third
-/// of their evaluated samples and a seventh of their vertices so.
+/// step, both would compute them, bit for bit alike: at 256³ the Murex's chunks would evaluate
+/// 1.42 M samples for 1.08 M distinct ones and probe 0.97 M vertices for 0.84 M.
 #[derive(Debug, Default)]
 pub struct Seams {
     /// What each chunk is handed across its low face on each axis.
