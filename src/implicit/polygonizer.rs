@@ -901,8 +901,8 @@ mod tests {
     use crate::spec::form::Form;
     use crate::species::presets;
 
-    #[test]
-    fn samples_are_exact_or_proven_on_their_side_and_many_are_proven() {
+    /// The whole Murex's tree and its last growth step.
+    fn murex() -> (Node, u32) {
         let preset = presets().iter().find(|p| p.id == "murex-cabritii");
         let preset = preset.expect("the Murex preset");
         let Form::Implicit(spec) = &preset.spec.form else {
@@ -910,7 +910,37 @@ mod tests {
         };
         let rows = preset.spec.growth.rows as usize;
         let shell = whorl(spec, &preset.spec.pattern, preset.spec.seed, rows).expect("a whorl");
-        let (tree, step) = (&shell.tree, shell.instances - 1);
+        (shell.tree, shell.instances - 1)
+    }
+
+    #[test]
+    fn chunks_handing_on_their_faces_mesh_as_chunks_meshed_alone() {
+        let (tree, step) = murex();
+        let grid = Grid::new(&tree.bounds, 64);
+        let whole = polygonize(&tree, &grid, step);
+        let (mut scratch, mut alone) = (Scratch::default(), Mesh::default());
+        for chunk in grid.chunks_touching(&tree.bounds) {
+            // A cache left by nothing: every sample and vertex is computed.
+            let mut cache = ChunkCache::default();
+            let memory = Memory::Cache {
+                cache: &mut cache,
+                changed: &tree.bounds,
+            };
+            alone.append(&mesh_chunk(&tree, &grid, chunk, step, &mut scratch, memory));
+        }
+        assert!(
+            whole.triangle_count() > 10_000,
+            "{}",
+            whole.triangle_count()
+        );
+        assert_eq!(whole.triangle_count(), alone.triangle_count());
+        assert_eq!(whole.content_hash(), alone.content_hash());
+    }
+
+    #[test]
+    fn samples_are_exact_or_proven_on_their_side_and_many_are_proven() {
+        let (tree, step) = murex();
+        let tree = &tree;
         let grid = Grid::new(&tree.bounds, 64);
         let (mut field, mut evaluated, mut proven, mut meshed) = (Vec::new(), 0, 0, 0);
         for chunk in grid.chunks_touching(&tree.bounds) {
