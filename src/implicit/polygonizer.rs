@@ -657,8 +657,8 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
         let first = Grid::first_sample(chunk);
         for (i, f) in field.iter().enumerate() {
             if *f >= ISO {
-                let at = [i % SIDE, i / SIDE % SIDE, i / (SIDE * SIDE)].map(|i| i as i64);
-                inside.include(grid.sample(std::array::from_fn(|k| first[k] + at[k])));
+                let at = at_local(i);
+                inside.include(grid.sample(std::array::from_fn(|k| first[k] + at[k] as i64)));
             }
         }
     }
@@ -950,7 +950,7 @@ mod tests {
             meshed += 1;
             let first = Grid::first_sample(chunk);
             for (i, &f) in field.iter().enumerate() {
-                let at = [i % SIDE, i / SIDE % SIDE, i / (SIDE * SIDE)];
+                let at = at_local(i);
                 let p = grid.sample(std::array::from_fn(|k| first[k] + at[k] as i64));
                 let exact = tree.field(p);
                 if f.is_finite() {
