@@ -6,14 +6,14 @@
 //! a second each, printed with its spread, so that a browser's coarse clock cannot quantise
 //! it; frame times are the distribution of single frames, as a user sees them.
 
+use crate::blobtree::falloff::ISO;
+use crate::blobtree::polygonizer::{Grid, polygonize};
+use crate::forms::murex::implicit_whorl::whorl;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
-use crate::implicit::falloff::ISO;
-use crate::implicit::implicit_whorl::whorl;
-use crate::implicit::polygonizer::{Grid, polygonize};
 use crate::pattern::build;
+use crate::presets::{Preset, presets};
 use crate::spec::form::Form;
 use crate::spec::pattern::Model;
-use crate::species::{Preset, presets};
 use std::fmt::Write;
 
 /// Frames timed per species, in each of the [`REPEATS`] growths.

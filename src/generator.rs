@@ -3,9 +3,11 @@
 //! `rows − 1` the opening). The cost of a call depends on the rows it adds, never on the age
 //! of the shell.
 
-use crate::growing_shape::{GrowingShape, shape_for};
+use crate::forms::shape_for;
 use crate::mesh::{Bounds, Capacity, Mesh};
+use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
+use crate::shape::{GrowingShape, ShapeError};
 use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
@@ -66,20 +68,36 @@ pub struct Generator {
 
 /// Why a generator cannot be built from a spec.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct BuildError(pub String);
+pub enum BuildError {
+    /// The form cannot be built.
+    Shape(ShapeError),
+    /// The pattern model cannot start.
+    Pattern(PatternError),
+}
 
 impl std::fmt::Display for BuildError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        match self {
+            BuildError::Shape(e) => e.fmt(f),
+            BuildError::Pattern(e) => write!(f, "the pattern cannot be computed: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for BuildError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            BuildError::Shape(e) => Some(e),
+            BuildError::Pattern(e) => Some(e),
+        }
     }
 }
 
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
         let rows = spec.growth.rows.max(2) as usize;
-        let shape = shape_for(spec, rows).map_err(|e| BuildError(e.0))?;
-        let pattern = PatternRun::new(spec)
-            .map_err(|e| BuildError(format!("the pattern cannot be computed: {e}")))?;
+        let shape = shape_for(spec, rows).map_err(BuildError::Shape)?;
+        let pattern = PatternRun::new(spec).map_err(BuildError::Pattern)?;
         let mut generator = Self {
             mesh: Mesh::with_capacity(shape.capacity()),
             edge: Mesh::with_capacity(shape.edge_capacity()),

@@ -1,20 +1,19 @@
-//! Seashells grown rim by rim: the pure core (geometry, pattern models, the spec and its link
-//! codec, presets) and, on wasm32, the thin renderer and web adapters.
+//! Seashells grown rim by rim: the pure core (the spec, the forms of four papers, the BlobTree
+//! engine, the pattern models, the link codec and the presets) and, on wasm32, the thin
+//! renderer and web adapters. Layers point down only; the README draws them.
 
 pub mod bench;
-pub mod camera;
+pub mod blobtree;
 pub mod export;
+pub mod forms;
 pub mod generator;
-pub mod geometry;
-pub mod gestures;
-pub mod growing_shape;
-pub mod growth;
-pub mod implicit;
 pub mod mesh;
 pub mod pattern;
+pub mod presets;
+pub mod shape;
+pub mod share;
 pub mod spec;
-pub mod species;
-pub mod texture_layout;
+pub mod view;
 
 #[cfg(target_arch = "wasm32")]
 pub mod render;

@@ -112,6 +112,10 @@ impl Mesh {
     }
 }
 
+/// Most vertices a shell's mesh may have (72 MB of vertex data): a spec whose form would
+/// make more is repaired.
+pub const MAX_VERTICES: u64 = 2_000_000;
+
 /// Sizes a mesh reaches when fully grown, so buffers can be allocated once.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Capacity {

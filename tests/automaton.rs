@@ -5,9 +5,9 @@
 
 use seashells_core::pattern::automaton::Automaton;
 use seashells_core::pattern::{EdgeModel, build};
-use seashells_core::spec::link::{decode, encode};
+use seashells_core::presets::preset;
+use seashells_core::share::link::{decode, encode};
 use seashells_core::spec::pattern::{Boundary, Model, PatternSpec};
-use seashells_core::species::preset;
 
 /// A ring of `cells` cells under `rule`, starting from `starts` with one prepigment each.
 fn ring(rule: &str, cells: u32, starts: &[u32]) -> PatternSpec {

@@ -8,16 +8,16 @@
 mod common;
 
 use proptest::prelude::*;
+use seashells_core::forms::kawaguchi::branching::branching_mesh::BranchingMesh;
+use seashells_core::forms::kawaguchi::branching::branching_tree::{BranchingTree, MAX_SEGMENTS};
+use seashells_core::forms::kawaguchi::branching::tendril::Tendril;
 use seashells_core::generator::Generator;
-use seashells_core::growing_shape::GrowingShape;
-use seashells_core::growth::branching_mesh::BranchingMesh;
-use seashells_core::growth::branching_tree::{BranchingTree, MAX_SEGMENTS};
-use seashells_core::growth::tendril::Tendril;
 use seashells_core::mesh::Mesh;
+use seashells_core::presets::preset;
+use seashells_core::shape::GrowingShape;
+use seashells_core::share::link::decode;
 use seashells_core::spec::branching::{BranchingSpec, KnotSpec};
 use seashells_core::spec::form::Form;
-use seashells_core::spec::link::decode;
-use seashells_core::species::preset;
 
 const PRESETS: [&str; 5] = [
     "kawaguchi-spiral-plant",
@@ -274,9 +274,6 @@ fn bad_parameters_get_messages_that_name_them() {
     let (mut spec, seed) = form("kawaguchi-coral");
     spec.stop = 0.0;
     let e = BranchingTree::new(&spec, seed).err().expect("refused");
-    assert!(
-        e.0.contains("form.stop: the stop size must be above 0"),
-        "{}",
-        e.0
-    );
+    assert_eq!(e.key, "form.stop");
+    assert!(e.message.contains("the stop size must be above 0"), "{e}");
 }

@@ -2,10 +2,10 @@
 //! tests/webdriver.json): the renderer comes up and draws a shell the core grew.
 #![cfg(target_arch = "wasm32")]
 
-use seashells_core::camera::OrbitCamera;
 use seashells_core::generator::Generator;
+use seashells_core::presets;
 use seashells_core::render::{Renderer, ShellLook};
-use seashells_core::species;
+use seashells_core::view::camera::OrbitCamera;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
@@ -58,7 +58,7 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
         .await
         .expect("a renderer on WebGL2");
     assert_eq!(renderer.backend(), "WebGL2");
-    let preset = species::preset("turbinate").expect("preset");
+    let preset = presets::preset("turbinate").expect("preset");
     let mut generator = Generator::new(&preset.spec).expect("generator");
     generator.finish();
     renderer.set_background([0, 0, 0]);
@@ -68,7 +68,7 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
         ShellLook::new(
             &preset.spec.colours,
             &preset.spec.material,
-            preset.spec.rows_per_whorl(),
+            seashells_core::forms::rows_per_whorl(&preset.spec),
         ),
     );
     renderer.upload(generator.mesh(), generator.edge(), &generator.grown(), &[]);

@@ -9,13 +9,13 @@ mod common;
 
 use glam::DVec3;
 use proptest::prelude::*;
-use seashells_core::generator::Generator;
-use seashells_core::growth::chamber_stack::{ChamberStack, RingKind};
+use seashells_core::forms::kawaguchi::chambers::chamber_stack::{ChamberStack, RingKind};
+use seashells_core::generator::{BuildError, Generator};
+use seashells_core::presets::preset;
+use seashells_core::share::link::decode;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::chambers::{ChambersSpec, Look, Triple};
 use seashells_core::spec::form::{Form, Handedness};
-use seashells_core::spec::link::decode;
-use seashells_core::species::preset;
 
 fn spec_of(id: &str) -> ShellSpec {
     preset(id).expect("preset").spec.clone()
@@ -311,7 +311,11 @@ fn bad_parameters_get_messages_that_name_them() {
     let mut spec = spec_of("kawaguchi-shell");
     chambers_of(&mut spec).chamber.ratio = 0.0;
     let e = Generator::new(&spec).err().expect("refused");
-    assert!(e.0.contains("growth ratio r must be above 0"), "{e}");
+    let BuildError::Shape(e) = e else {
+        panic!("a shape error, not {e}")
+    };
+    assert_eq!(e.key, "form.chamber.ratio");
+    assert!(e.message.contains("growth ratio r must be above 0"), "{e}");
 }
 
 #[test]

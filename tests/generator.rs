@@ -3,8 +3,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::generator::Generator;
+use seashells_core::presets::{preset, presets};
 use seashells_core::spec::pattern::Model;
-use seashells_core::species::{preset, presets};
 
 #[test]
 fn every_row_the_clock_counts_is_a_row_of_the_pattern() {

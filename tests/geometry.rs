@@ -8,13 +8,14 @@ use proptest::prelude::*;
 mod common;
 
 use seashells_core::export::{obj, stl};
+use seashells_core::forms::sweep::frame::Frame;
+use seashells_core::forms::sweep::helico_spiral::HelicoSpiral;
+use seashells_core::forms::sweep::surface::Sweep;
 use seashells_core::generator::Generator;
-use seashells_core::geometry::frame::{Frame, FrameMode};
-use seashells_core::geometry::helico_spiral::HelicoSpiral;
-use seashells_core::geometry::sweep::Sweep;
+use seashells_core::presets::preset;
 use seashells_core::spec::ShellSpec;
+use seashells_core::spec::form::FrameMode;
 use seashells_core::spec::form::{Form, Handedness, RibSpec, SweepSpec};
-use seashells_core::species::preset;
 use std::collections::HashMap;
 
 fn turbinate() -> ShellSpec {

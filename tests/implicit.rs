@@ -8,11 +8,11 @@ mod common;
 use common::{assert_closed_and_outward, share_of_normals_agreeing, signed_volume};
 use glam::DVec3;
 use proptest::prelude::*;
-use seashells_core::implicit::blob_tree::{Node, superelliptic};
-use seashells_core::implicit::falloff::{ISO, support_of};
-use seashells_core::implicit::polygonizer::{Grid, polygonize};
-use seashells_core::implicit::primitive::Primitive;
-use seashells_core::implicit::texture_blend::Texture;
+use seashells_core::blobtree::blob_tree::{Node, superelliptic};
+use seashells_core::blobtree::falloff::{ISO, support_of};
+use seashells_core::blobtree::polygonizer::{Grid, polygonize};
+use seashells_core::blobtree::primitive::Primitive;
+use seashells_core::blobtree::texture_blend::Texture;
 use seashells_core::mesh::Mesh;
 use std::f64::consts::PI;
 

@@ -7,16 +7,16 @@ mod common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit};
 use glam::DVec3;
+use seashells_core::forms::murex::implicit_whorl::{Helix, MAX_RESOLUTION};
 use seashells_core::generator::Generator;
-use seashells_core::implicit::implicit_whorl::{Helix, MAX_RESOLUTION};
 use seashells_core::mesh::Mesh;
+use seashells_core::presets::{self, Group};
 use seashells_core::spec::form::Handedness;
 use seashells_core::spec::implicit::{HelixSpec, ImplicitSpec};
-use seashells_core::species::{self, Group};
 use std::f64::consts::TAU;
 
-fn implicit_presets() -> Vec<&'static species::Preset> {
-    species::presets()
+fn implicit_presets() -> Vec<&'static presets::Preset> {
+    presets::presets()
         .iter()
         .filter(|p| p.group == Group::Implicit)
         .collect()
@@ -115,7 +115,7 @@ fn every_implicit_preset_grows_closed_and_ends_as_it_would_all_at_once() {
 #[test]
 fn growth_is_deterministic_and_controlled_blending_keeps_whorls_apart() {
     let grown = |id: &str| {
-        let mut spec = species::preset(id).unwrap().spec.clone();
+        let mut spec = presets::preset(id).unwrap().spec.clone();
         implicit(&mut spec).resolution = 40;
         let mut g = Generator::new(&spec).unwrap();
         g.finish();
@@ -138,7 +138,7 @@ fn growth_is_deterministic_and_controlled_blending_keeps_whorls_apart() {
 
 #[test]
 fn bad_numbers_get_messages_that_name_the_key() {
-    let base = species::preset("implicit-canal-whorl")
+    let base = presets::preset("implicit-canal-whorl")
         .unwrap()
         .spec
         .clone();

@@ -4,11 +4,11 @@
 
 use proptest::prelude::*;
 use seashells_core::generator::Generator;
+use seashells_core::presets::{DEFAULT_PRESET, presets};
+use seashells_core::share::link::{MAX_LINK, decode, encode, flatten};
+use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{FIELDS, Kind};
-use seashells_core::spec::link::{MAX_LINK, decode, encode, flatten};
-use seashells_core::spec::validate::repair;
-use seashells_core::species::{DEFAULT_PRESET, presets};
 use serde_json::Value;
 
 /// A random valid spec: a preset with some fields set to random values in their ranges.
@@ -234,9 +234,9 @@ fn every_leaf_of_every_preset_is_described_in_the_field_table() {
 
 #[test]
 fn a_panel_edit_is_read_like_a_link_value() {
-    use seashells_core::spec::link::with;
+    use seashells_core::share::link::with;
     use seashells_core::spec::pattern::Model;
-    let oliva = seashells_core::species::preset("oliva-porphyria").unwrap();
+    let oliva = seashells_core::presets::preset("oliva-porphyria").unwrap();
     let edited = with(oliva, &oliva.spec, "pattern.model.d_a", "0.02");
     assert!(edited.problems.is_empty());
     assert_eq!(

@@ -23,14 +23,14 @@ mod common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit, signed_volume};
 use glam::DVec3;
+use seashells_core::forms::murex::implicit_whorl::{Instances, Whorl, whorl};
 use seashells_core::generator::Generator;
-use seashells_core::implicit::implicit_whorl::{Instances, Whorl, whorl};
 use seashells_core::mesh::Mesh;
+use seashells_core::presets;
+use seashells_core::share::link::{decode, encode};
+use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::implicit::Placement;
-use seashells_core::spec::link::{decode, encode};
-use seashells_core::spec::validate::repair;
-use seashells_core::species;
 use std::collections::{BTreeMap, HashMap};
 
 /// Table 1 as we read it: (whorl, angle°, σ).
@@ -81,7 +81,7 @@ const TABLE_2: [&[f64]; 3] = [
 ];
 
 fn spec_of(id: &str) -> ShellSpec {
-    species::preset(id).expect(id).spec.clone()
+    presets::preset(id).expect(id).spec.clone()
 }
 
 fn built(spec: &mut ShellSpec) -> Whorl {
@@ -261,7 +261,7 @@ fn the_seed_decides_the_bumps_and_bends_and_a_link_reproduces_them() {
     let mut other = spec.clone();
     other.seed += 1;
     assert_ne!(a, grown(&other).mesh_hash(), "another seed, other bumps");
-    let preset = species::preset("murex-cabritii").unwrap();
+    let preset = presets::preset("murex-cabritii").unwrap();
     let decoded = decode(&encode(preset, &other));
     assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
     assert_eq!(grown(&decoded.spec).mesh_hash(), grown(&other).mesh_hash());

@@ -3,10 +3,10 @@
 //! integrated refused with their reason while the others fill.
 #![cfg(not(target_arch = "wasm32"))]
 
-use seashells_core::pattern::parameter_map::{Axis, ParameterMap, first_axes, parameters};
+use seashells_core::presets::preset;
+use seashells_core::share::link::{decode, flatten};
+use seashells_core::share::parameter_map::{Axis, ParameterMap, first_axes, parameters};
 use seashells_core::spec::fields::field;
-use seashells_core::spec::link::{decode, flatten};
-use seashells_core::species::preset;
 
 fn value(spec: &seashells_core::spec::ShellSpec, key: &str) -> f64 {
     flatten(&serde_json::to_value(spec).unwrap())[key]

@@ -7,9 +7,9 @@
 use seashells_core::generator::Generator;
 use seashells_core::pattern::build;
 use seashells_core::pattern::run::PatternRun;
+use seashells_core::presets::{preset, presets};
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::pattern::{Boundary, Model, PatternSpec};
-use seashells_core::species::{preset, presets};
 
 fn pattern_of(id: &str) -> PatternSpec {
     preset(id).unwrap().spec.pattern.clone()
@@ -266,13 +266,13 @@ fn parameters_explicit_euler_cannot_integrate_are_refused_with_a_message() {
         panic!("eq 8")
     };
     m.d_a = 0.6;
-    let e = Generator::new(&spec).err().expect("refused").0;
+    let e = Generator::new(&spec).err().expect("refused").to_string();
     assert!(e.contains("D_a = 0.6") && e.contains("0.5"), "{e}");
     let Model::ActivatorSubstrate(m) = &mut spec.pattern.model else {
         panic!("eq 8")
     };
     m.d_a = 0.45;
     m.mu = 0.3;
-    let e = Generator::new(&spec).err().expect("refused").0;
+    let e = Generator::new(&spec).err().expect("refused").to_string();
     assert!(e.contains("4·D_a + μ"), "{e}");
 }

@@ -3,8 +3,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::generator::Generator;
-use seashells_core::spec::validate::repair;
-use seashells_core::species::{preset, presets};
+use seashells_core::presets::{preset, presets};
+use seashells_core::share::repair::repair;
 
 #[test]
 fn every_preset_is_valid_and_grows_into_a_finite_mesh() {

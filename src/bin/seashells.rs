@@ -11,12 +11,12 @@
 use seashells_core::export::{self, MeshFormat};
 use seashells_core::generator::Generator;
 use seashells_core::pattern::run::PatternRun;
+use seashells_core::presets::{self, presets};
+use seashells_core::share::link;
+use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{self, Kind};
 use seashells_core::spec::form::Form;
-use seashells_core::spec::link;
-use seashells_core::spec::validate::repair;
-use seashells_core::species::{self, presets};
 use std::collections::BTreeMap;
 use std::process::ExitCode;
 
@@ -56,7 +56,7 @@ impl Options {
     /// The spec named by --preset or --link (exactly one of them).
     fn spec(&self) -> Result<ShellSpec, String> {
         match (self.get("preset"), self.get("link")) {
-            (Some(id), None) => species::preset(id).map(|p| p.spec.clone()).ok_or_else(|| {
+            (Some(id), None) => presets::preset(id).map(|p| p.spec.clone()).ok_or_else(|| {
                 let ids: Vec<&str> = presets().iter().map(|p| p.id).collect();
                 format!("there is no preset '{id}' (presets: {})", ids.join(", "))
             }),

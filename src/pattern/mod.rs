@@ -10,9 +10,10 @@ pub mod coupled;
 pub mod diffusion;
 pub mod grid;
 pub mod noise;
-pub mod parameter_map;
+pub mod repair;
 pub mod run;
 pub mod starts;
+pub mod texture_layout;
 
 use crate::spec::pattern::{Model, PatternSpec};
 
@@ -25,6 +26,8 @@ impl std::fmt::Display for PatternError {
         f.write_str(&self.0)
     }
 }
+
+impl std::error::Error for PatternError {}
 
 /// A model of the growing edge.
 pub trait EdgeModel {

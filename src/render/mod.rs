@@ -5,12 +5,12 @@
 mod pattern_texture;
 mod shell_buffers;
 
-use crate::camera::{OrbitCamera, display_from_shell};
 use crate::generator::Advance;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
+use crate::pattern::texture_layout::TextureLayout;
 use crate::spec::Colours;
 use crate::spec::material::MaterialSpec;
-use crate::texture_layout::TextureLayout;
+use crate::view::camera::{OrbitCamera, display_from_shell};
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use pattern_texture::PatternTexture;

@@ -2,7 +2,7 @@
 //! cells of the growing edge, folded by [`TextureLayout`]. Colours are stored as sRGB bytes
 //! (`Rgba8UnormSrgb`), which every backend can filter and read.
 
-use crate::texture_layout::TextureLayout;
+use crate::pattern::texture_layout::TextureLayout;
 
 /// The pattern texture and its layout.
 pub struct PatternTexture {

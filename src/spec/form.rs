@@ -6,7 +6,6 @@
 use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
 use super::implicit::ImplicitSpec;
-use crate::geometry::frame::FrameMode;
 use serde::{Deserialize, Serialize};
 
 /// The model that builds the shell's surface.
@@ -84,6 +83,15 @@ pub struct CurveSpec {
     pub segments: u32,
     /// Space the n + 1 points equally by arc length (eqs 4–7) rather than by parameter.
     pub reparametrize: bool,
+}
+
+/// Which reference frame the generating curve is laid on (§2.3): the axis-aligned frame, or
+/// the Frenet frame of the helico-spiral.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FrameMode {
+    AxisAligned,
+    Frenet,
 }
 
 /// Orientation of the curve's uvw axes (§2.3).

@@ -7,10 +7,9 @@ pub mod colour;
 pub mod fields;
 pub mod form;
 pub mod implicit;
-pub mod link;
 pub mod material;
 pub mod pattern;
-pub mod validate;
+pub mod problem;
 
 use colour::Rgb;
 use form::Form;
@@ -56,24 +55,4 @@ pub struct GrowthSpec {
     pub rows: u32,
     /// Rows grown per animation frame.
     pub speed: f64,
-}
-
-impl ShellSpec {
-    /// Pattern rows per turn of the shell, for shading depth inside the opening.
-    pub fn rows_per_whorl(&self) -> f64 {
-        match &self.form {
-            Form::Sweep(s) => f64::from(self.growth.rows) / s.spiral.whorls.max(1e-3),
-            Form::Chambers(c) => {
-                let turn = crate::growth::chamber_stack::turn_per_chamber(&c.chamber);
-                let whorls = f64::from(c.chambers) * turn / std::f64::consts::TAU;
-                f64::from(self.growth.rows) / whorls.max(1e-3)
-            }
-            Form::Implicit(i) => {
-                let whorls = f64::from(i.whorls) * i.whorl_angle / 360.0;
-                f64::from(self.growth.rows) / whorls.max(1e-3)
-            }
-            // No whorls: the whole growth counts as one.
-            Form::Branching(_) => f64::from(self.growth.rows),
-        }
-    }
 }

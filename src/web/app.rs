@@ -15,10 +15,11 @@ use super::panel::{Change, OnChange, Panel};
 use super::viewer::{Viewer, now};
 use crate::export::{self, MeshFormat};
 use crate::generator::GROWTH_BUDGET_MS;
+use crate::presets::Preset;
+use crate::share::link::{self, Decoded};
 use crate::spec::ShellSpec;
 use crate::spec::fields::Group;
-use crate::spec::link::{self, Decoded, Problem};
-use crate::species::Preset;
+use crate::spec::problem::Problem;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
 

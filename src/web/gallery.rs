@@ -5,9 +5,9 @@
 
 use super::dom::{append, attr, create, typed};
 use super::viewer::Viewer;
+use crate::presets::{Preset, presets};
+use crate::share::link;
 use crate::spec::form::Form;
-use crate::spec::link;
-use crate::species::{Preset, presets};
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
 

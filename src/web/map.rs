@@ -6,10 +6,10 @@ use super::dom::{append, attr, clear, create, typed};
 use super::page::{element, set_text, signal};
 use super::panel::label;
 use super::viewer::now;
-use crate::pattern::parameter_map::{Axis, ParameterMap, SIDE, first_axes, parameters};
+use crate::presets::Preset;
+use crate::share::parameter_map::{Axis, ParameterMap, SIDE, first_axes, parameters};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, display};
-use crate::species::Preset;
 use wasm_bindgen::{Clamped, JsCast};
 use web_sys::{
     CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlInputElement, HtmlOptionElement,
@@ -240,7 +240,7 @@ fn clear_grid() {
 }
 
 /// Draws a tile's picture into its canvas.
-fn paint(tile: &Element, picture: &crate::pattern::parameter_map::Picture) {
+fn paint(tile: &Element, picture: &crate::share::parameter_map::Picture) {
     let Some(canvas) = tile
         .first_element_child()
         .and_then(|c| c.dyn_into::<HtmlCanvasElement>().ok())

@@ -48,7 +48,7 @@ pub fn benchmark() -> Result<String, JsValue> {
 /// solver to run on the same sizes and parameters.
 #[wasm_bindgen]
 pub fn preset_pattern(id: &str) -> Option<String> {
-    crate::species::preset(id).and_then(|p| serde_json::to_string(&p.spec.pattern).ok())
+    crate::presets::preset(id).and_then(|p| serde_json::to_string(&p.spec.pattern).ok())
 }
 
 type Shared = Rc<RefCell<App>>;

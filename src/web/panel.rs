@@ -5,9 +5,9 @@
 //! slider also hands back every value it passes while it is dragged.
 
 use super::dom::{append, attr, clear, create, typed};
+use crate::share::link::{flatten, format_value};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{FIELDS, Field, Group, Kind, display};
-use crate::spec::link::{flatten, format_value};
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::rc::Rc;

@@ -6,15 +6,15 @@
 
 use super::page::show_message;
 use super::planar::Planar;
-use crate::camera::OrbitCamera;
 use crate::generator::{Advance, Generator, within};
-use crate::gestures::{Pointers, wheel_zoom};
 use crate::mesh::{Bounds, Mesh};
 use crate::pattern::run::PatternRun;
+use crate::pattern::texture_layout::TextureLayout;
+use crate::presets::Preset;
 use crate::render::{Renderer, ShellLook};
 use crate::spec::ShellSpec;
-use crate::species::Preset;
-use crate::texture_layout::TextureLayout;
+use crate::view::camera::OrbitCamera;
+use crate::view::gestures::{Pointers, wheel_zoom};
 use web_sys::HtmlCanvasElement;
 
 /// A shell being grown.
@@ -159,7 +159,11 @@ impl Viewer {
         self.renderer.load_shell(
             generator.capacity(),
             layout,
-            ShellLook::new(&spec.colours, &spec.material, spec.rows_per_whorl()),
+            ShellLook::new(
+                &spec.colours,
+                &spec.material,
+                crate::forms::rows_per_whorl(spec),
+            ),
         );
         let (bounds, front) = generator.framing();
         let mut grown = Bounds::EMPTY;

@@ -2,12 +2,12 @@
 #![allow(dead_code)]
 
 use glam::DVec3;
-use seashells_core::implicit::implicit_whorl::check;
+use seashells_core::forms::murex::implicit_whorl::check;
 use seashells_core::mesh::Mesh;
+use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
 use seashells_core::spec::implicit::ImplicitSpec;
-use seashells_core::spec::validate::repair;
 use std::collections::HashMap;
 
 /// Directed edges by welded position; a closed, consistently oriented surface has each edge
@@ -114,7 +114,7 @@ pub fn implicit(spec: &mut ShellSpec) -> &mut ImplicitSpec {
 /// `base` says what was used instead and gives a spec that builds.
 pub fn assert_refused_and_repaired(mut spoiled: ShellSpec, base: &ShellSpec, key: &str) {
     let error = check(implicit(&mut spoiled.clone())).expect_err(key);
-    assert!(error.0.starts_with(key), "{key}: {}", error.0);
+    assert!(error.key.starts_with(key), "{key}: {error}");
     let problems = repair(&mut spoiled, base);
     assert!(
         problems

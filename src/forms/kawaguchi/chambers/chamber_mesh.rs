@@ -1,0 +1,279 @@
+//! Kawaguchi's chamber stack as a growing mesh: the first step lays the apex base (nothing to
+//! show yet), and every later step adds one chamber, its sides joined to the ring below band by
+//! band, and moves the cap that closes the mouth (the transient edge mesh). The result is one closed
+//! solid, outward-facing, whatever the look, handedness or shift between chambers.
+//!
+//! The pigmentation paints it as it paints a sweep: a chamber stack is a sweep of N-gon rims,
+//! so apex j sits at position j/N along the growing edge and chamber c spans the rows from
+//! c·ρ to (c + 1)·ρ, ρ = (rows − 1)/chambers. A pattern with as many cells as apexes and one
+//! row more than chambers gives each facet a cell of its own.
+
+use super::chamber_stack::{ChamberStack, RingKind};
+use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
+use crate::shape::{GrowingShape, ShapeError};
+use crate::spec::chambers::{ChambersSpec, Look};
+use glam::{DAffine3, DVec3};
+
+/// One ring as grown: its apexes (shell space, before mirroring), the direction of growth
+/// through it, and its pattern row.
+struct Ring {
+    points: Vec<DVec3>,
+    growth: DVec3,
+    kind: RingKind,
+    row: f64,
+}
+
+/// A [`ChamberStack`] grown chamber by chamber.
+pub struct ChamberMesh {
+    stack: ChamberStack,
+    look: Look,
+    capacity: (Capacity, Capacity),
+    rows_per_chamber: f64,
+    /// Whether quads taken as (ring below j, j + 1; ring above j + 1, j) face inwards.
+    inward: bool,
+    /// The frame of the next chamber to grow.
+    frame: DAffine3,
+    /// The last ring grown and the one before it (smooth normals look across them).
+    last: Option<Ring>,
+    before_last: Option<Ring>,
+    done: usize,
+}
+
+/// Sizes of the fully grown mesh of `spec`: the permanent mesh (chamber sides and the apex
+/// cap) and the mouth cap. Validation checks the same count against the vertex cap.
+pub fn mesh_capacity(spec: &ChambersSpec) -> (Capacity, Capacity) {
+    let n = spec.mouth.apexes as usize;
+    let chambers = spec.chambers as usize;
+    let shift = spec.chamber.translation.to_array() != [0.0; 3];
+    let per_chamber = 1 + usize::from(spec.septa) + usize::from(shift);
+    let rings = chambers * per_chamber + usize::from(!shift);
+    let bands = rings.saturating_sub(1);
+    let band_vertices = match spec.look {
+        Look::Faceted => 4 * n,
+        Look::Smooth => 2 * (n + 1),
+    };
+    let cap = Capacity {
+        vertices: n + 1,
+        indices: 3 * n,
+    };
+    let sides = Capacity {
+        vertices: bands * band_vertices + cap.vertices,
+        indices: bands * n * 6 + cap.indices,
+    };
+    (sides, cap)
+}
+
+impl ChamberMesh {
+    pub fn new(spec: &ChambersSpec, rows: usize) -> Result<Self, ShapeError> {
+        let stack = ChamberStack::new(spec)?;
+        let first = stack.first_frame();
+        let (bottom, top) = (
+            stack.ring(&first, RingKind::Bottom),
+            stack.ring(&first, RingKind::Top),
+        );
+        let centre = bottom.iter().sum::<DVec3>() / bottom.len() as f64;
+        let outward: f64 = (0..bottom.len())
+            .map(|j| {
+                let next = bottom[(j + 1) % bottom.len()];
+                (next - bottom[j])
+                    .cross(top[j] - bottom[j])
+                    .dot(bottom[j] - centre)
+            })
+            .sum();
+        Ok(Self {
+            rows_per_chamber: (rows - 1) as f64 / stack.chambers() as f64,
+            look: spec.look,
+            capacity: mesh_capacity(spec),
+            inward: outward < 0.0,
+            frame: first,
+            stack,
+            last: None,
+            before_last: None,
+            done: 0,
+        })
+    }
+
+    fn vertex(&self, p: DVec3, n: DVec3, x: f64, row: f64, surface: Surface) -> Vertex {
+        Vertex::new(
+            self.stack.mirror(p),
+            self.stack.mirror(n),
+            [x, row],
+            surface,
+        )
+    }
+
+    fn ring(&self, frame: &DAffine3, chamber: usize, kind: RingKind) -> Ring {
+        Ring {
+            points: self.stack.ring(frame, kind),
+            growth: self.stack.growth_direction(frame, kind),
+            kind,
+            row: (chamber as f64 + ChamberStack::level(kind)) * self.rows_per_chamber,
+        }
+    }
+
+    /// Normal of the surface at apex j of `ring`, from the rings on either side (itself at the
+    /// ends of the stack): around the ring × along the growth, turned outwards.
+    fn smooth_normal(&self, below: &Ring, ring: &Ring, above: &Ring, j: usize) -> DVec3 {
+        let n = ring.points.len();
+        let around = ring.points[(j + 1) % n] - ring.points[(j + n - 1) % n];
+        let along = above.points[j] - below.points[j];
+        let normal = around.cross(along).normalize_or_zero();
+        if self.inward { -normal } else { normal }
+    }
+
+    /// The band of quads from ring `a` up to ring `b`, given the ring before `a` and the one
+    /// after `b` (each the ring itself at an end of the stack).
+    fn band(&self, mesh: &mut Mesh, [below_a, a, b, above_b]: [&Ring; 4], surface: Surface) {
+        let n = a.points.len();
+        // Mirroring reverses the winding once more.
+        let flip = self.inward != self.stack.is_sinistral();
+        let x = |j: usize| j as f64 / n as f64;
+        match self.look {
+            Look::Faceted => {
+                for j in 0..n {
+                    let k = (j + 1) % n;
+                    let corners = [a.points[j], a.points[k], b.points[k], b.points[j]];
+                    let face = (corners[2] - corners[0]).cross(corners[3] - corners[1]);
+                    let normal = if self.inward { -face } else { face }.normalize_or_zero();
+                    let at = [
+                        (x(j), a.row),
+                        (x(j + 1), a.row),
+                        (x(j + 1), b.row),
+                        (x(j), b.row),
+                    ];
+                    let base = mesh.next_index();
+                    for (p, (u, row)) in corners.into_iter().zip(at) {
+                        mesh.vertices.push(self.vertex(p, normal, u, row, surface));
+                    }
+                    mesh.quad([base, base + 1, base + 2, base + 3], flip);
+                }
+            }
+            Look::Smooth => {
+                let mut starts = [0u32; 2];
+                for (start, (ring, below, above)) in
+                    starts.iter_mut().zip([(a, below_a, b), (b, a, above_b)])
+                {
+                    *start = mesh.next_index();
+                    for j in 0..=n {
+                        let normal = self.smooth_normal(below, ring, above, j % n);
+                        let p = ring.points[j % n];
+                        mesh.vertices
+                            .push(self.vertex(p, normal, x(j), ring.row, surface));
+                    }
+                }
+                let [lo, hi] = starts;
+                for j in 0..n as u32 {
+                    mesh.quad([lo + j, lo + j + 1, hi + j + 1, hi + j], flip);
+                }
+            }
+        }
+    }
+
+    /// A flat cap over `ring` facing along `facing`: the apex (backwards) or the mouth.
+    fn cap(&self, mesh: &mut Mesh, ring: &Ring, facing: DVec3) {
+        let n = ring.points.len();
+        let centre = ring.points.iter().sum::<DVec3>() / n as f64;
+        let c = mesh.next_index();
+        mesh.vertices
+            .push(self.vertex(centre, facing, 0.5, ring.row, Surface::Edge));
+        for (j, &p) in ring.points.iter().enumerate() {
+            let x = j as f64 / n as f64;
+            mesh.vertices
+                .push(self.vertex(p, facing, x, ring.row, Surface::Edge));
+        }
+        let area: DVec3 = (0..n)
+            .map(|j| (ring.points[j] - centre).cross(ring.points[(j + 1) % n] - centre))
+            .sum();
+        let flip = (area.dot(facing) < 0.0) != self.stack.is_sinistral();
+        for j in 0..n as u32 {
+            mesh.triangle([c, c + 1 + j, c + 1 + (j + 1) % n as u32], flip);
+        }
+    }
+
+    /// Adds chamber `c`'s rings, each joined to the ring below by a band.
+    fn grow_chamber(&mut self, mesh: &mut Mesh, c: usize) {
+        let frame = self.frame;
+        let next_frame = self.stack.next_frame(&frame);
+        let rings: Vec<Ring> = self
+            .stack
+            .rings_of(c)
+            .filter(|&k| !(c == 0 && k == RingKind::Bottom))
+            .map(|k| self.ring(&frame, c, k))
+            .collect();
+        // Smooth normals at the last ring look at the next chamber's first ring.
+        let smooth = self.look == Look::Smooth;
+        let following = (smooth && c + 1 < self.stack.chambers()).then(|| {
+            let kind = self
+                .stack
+                .rings_of(c + 1)
+                .next()
+                .expect("a chamber has rings");
+            self.ring(&next_frame, c + 1, kind)
+        });
+        let mut rings = rings.into_iter().peekable();
+        while let Some(ring) = rings.next() {
+            let below = self.last.take().expect("the apex ring is grown first");
+            let surface = match (below.kind, ring.kind) {
+                (_, RingKind::Suture) => Surface::Edge,
+                _ => Surface::Outer,
+            };
+            {
+                let below_below = self.before_last.as_ref().unwrap_or(&below);
+                let above = rings.peek().or(following.as_ref()).unwrap_or(&ring);
+                self.band(mesh, [below_below, &below, &ring, above], surface);
+            }
+            self.before_last = Some(below);
+            self.last = Some(ring);
+        }
+        self.frame = next_frame;
+    }
+}
+
+impl GrowingShape for ChamberMesh {
+    fn steps(&self) -> usize {
+        self.stack.chambers() + 1
+    }
+
+    fn steps_done(&self) -> usize {
+        self.done
+    }
+
+    fn capacity(&self) -> Capacity {
+        self.capacity.0
+    }
+
+    fn edge_capacity(&self) -> Capacity {
+        self.capacity.1
+    }
+
+    fn bounds(&self) -> Bounds {
+        self.stack.bounds()
+    }
+
+    fn front(&self) -> DVec3 {
+        let last = self.stack.frame(self.stack.chambers() - 1);
+        self.stack
+            .mirror(self.stack.growth_direction(&last, RingKind::Top))
+    }
+
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool {
+        if self.done > self.stack.chambers() {
+            return false;
+        }
+        edge.clear();
+        if self.done == 0 {
+            // The apex base alone has no volume: it is shown with the first chamber.
+            self.last = Some(self.ring(&self.frame, 0, RingKind::Bottom));
+        } else {
+            if self.done == 1 {
+                let apex = self.last.as_ref().expect("the apex ring is laid first");
+                self.cap(mesh, apex, -apex.growth);
+            }
+            self.grow_chamber(mesh, self.done - 1);
+            let mouth = self.last.as_ref().expect("a ring is grown");
+            self.cap(edge, mouth, mouth.growth);
+        }
+        self.done += 1;
+        true
+    }
+}

@@ -1,0 +1,40 @@
+//! The chamber stack's cross-field checks: a mouth that does not fold over itself, chambers
+//! whose top base stays above their bottom base, and a mesh within the vertex cap.
+
+use super::chamber_mesh::mesh_capacity;
+use super::chamber_stack::ChamberStack;
+use super::mouth::mouth_polygon;
+use crate::mesh::MAX_VERTICES;
+use crate::spec::chambers::ChambersSpec;
+use crate::spec::problem::Problem;
+
+/// A chamber stack must build (a mouth that does not fold over itself, chambers whose top
+/// base stays above their bottom base) and fit the vertex cap.
+pub(crate) fn repair(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<Problem>) {
+    if let Err(e) = mouth_polygon(&c.mouth) {
+        problems.push(e.repaired("the preset's protuberances"));
+        c.mouth.protuberances = f.mouth.protuberances.clone();
+        if mouth_polygon(&c.mouth).is_err() {
+            c.mouth = f.mouth.clone();
+        }
+    }
+    if let Err(e) = ChamberStack::new(c) {
+        problems.push(e.repaired("the preset's chamber"));
+        c.chamber = f.chamber.clone();
+        if ChamberStack::new(c).is_err() {
+            *c = f.clone();
+        }
+    }
+    let vertices = mesh_capacity(c).0.vertices as u64;
+    if vertices > MAX_VERTICES {
+        problems.push(Problem::new(
+            "form.chambers",
+            format!(
+                "{} chambers of {} apexes would make {vertices} vertices, more than the cap of {MAX_VERTICES}; used the preset's {} chambers of {} apexes",
+                c.chambers, c.mouth.apexes, f.chambers, f.mouth.apexes
+            ),
+        ));
+        c.chambers = f.chambers;
+        c.mouth.apexes = f.mouth.apexes;
+    }
+}

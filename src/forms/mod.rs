@@ -1,0 +1,79 @@
+//! The shell forms, one folder per paper's model, and the one place that dispatches on
+//! [`Form`]: which [`GrowingShape`] a spec grows, how its form is repaired, and how many
+//! pattern rows make one whorl.
+//!
+//! - [`sweep`]: a generating curve swept along a helico-spiral (Fowler, Meinhardt &
+//!   Prusinkiewicz 1992, §2).
+//! - [`kawaguchi`]: accumulated chambers and branching forms (Kawaguchi 1982).
+//! - [`murex`]: generating surfaces of skeletal primitives blended along a helico-spiral and
+//!   polygonized (Galbraith, Prusinkiewicz & Wyvill), built on the [`blobtree`](crate::blobtree)
+//!   engine.
+
+pub mod kawaguchi;
+pub mod murex;
+pub mod sweep;
+
+use crate::shape::{GrowingShape, ShapeError};
+use crate::spec::ShellSpec;
+use crate::spec::form::Form;
+use crate::spec::pattern::PatternSpec;
+use crate::spec::problem::Problem;
+use kawaguchi::branching::branching_mesh::BranchingMesh;
+use kawaguchi::chambers::chamber_mesh::ChamberMesh;
+use kawaguchi::chambers::chamber_stack::turn_per_chamber;
+use murex::implicit_mesh::ImplicitMesh;
+use sweep::sweep_mesh::SweepMesh;
+
+/// The growing shape a spec's form describes; `rows` (at least 2) is the length of the pattern
+/// in rows: the first step lies on row 0, the last on row `rows − 1`. Random choices of the
+/// form come from the spec's seed.
+pub fn shape_for(spec: &ShellSpec, rows: usize) -> Result<Box<dyn GrowingShape>, ShapeError> {
+    match &spec.form {
+        Form::Sweep(sweep) => Ok(Box::new(SweepMesh::new(sweep, rows)?)),
+        Form::Chambers(chambers) => Ok(Box::new(ChamberMesh::new(chambers, rows)?)),
+        Form::Branching(branching) => Ok(Box::new(BranchingMesh::new(branching, spec.seed, rows)?)),
+        Form::Implicit(implicit) => Ok(Box::new(ImplicitMesh::new(
+            implicit,
+            &spec.pattern,
+            spec.seed,
+            rows,
+        )?)),
+    }
+}
+
+/// Repairs what `form` asks that its model cannot build, or that breaks a cap, from
+/// `fallback` (a form of the same kind), and says what was done in `problems`.
+pub(crate) fn repair(
+    form: &mut Form,
+    fallback: &Form,
+    pattern: &PatternSpec,
+    seed: u64,
+    problems: &mut Vec<Problem>,
+) {
+    match (form, fallback) {
+        (Form::Sweep(s), Form::Sweep(f)) => sweep::repair::repair(s, f, problems),
+        (Form::Chambers(c), Form::Chambers(f)) => {
+            kawaguchi::chambers::repair::repair(c, f, problems)
+        }
+        (Form::Branching(b), Form::Branching(f)) => {
+            kawaguchi::branching::repair::repair(b, f, seed, problems)
+        }
+        (Form::Implicit(i), Form::Implicit(f)) => murex::repair::repair(i, f, pattern, problems),
+        _ => unreachable!("the fallback is a form of the same kind"),
+    }
+}
+
+/// Pattern rows per turn of the shell, for shading depth inside the opening.
+pub fn rows_per_whorl(spec: &ShellSpec) -> f64 {
+    let rows = f64::from(spec.growth.rows);
+    let whorls = match &spec.form {
+        Form::Sweep(s) => s.spiral.whorls,
+        Form::Chambers(c) => {
+            f64::from(c.chambers) * turn_per_chamber(&c.chamber) / std::f64::consts::TAU
+        }
+        Form::Implicit(i) => f64::from(i.whorls) * i.whorl_angle / 360.0,
+        // No whorls: the whole growth counts as one.
+        Form::Branching(_) => return rows,
+    };
+    rows / whorls.max(1e-3)
+}

@@ -1,0 +1,208 @@
+//! An implicit shell grown like every other: each growth step adds one generating surface to
+//! the BlobTree and re-meshes only the chunks its field reaches. A growth step here is one
+//! chunk's meshing, so that a frame's time budget can stop between any two; the chunks of one
+//! instance are shown together once all are meshed, so that what is on screen is always one
+//! closed surface. A chunk that no later instance reaches is final and moves to the permanent
+//! mesh; the others, still open to change, make up the transient edge mesh.
+
+use super::implicit_whorl::{Whorl, whorl};
+use crate::blobtree::blob_tree::Node;
+use crate::blobtree::polygonizer::{
+    ChunkCache, ChunkIndex, Grid, Memory, Scratch, Seams, mesh_chunk, surface_box,
+};
+use crate::mesh::{Bounds, Capacity, Mesh};
+use crate::shape::{GrowingShape, ShapeError};
+use crate::spec::implicit::ImplicitSpec;
+use crate::spec::pattern::PatternSpec;
+use glam::DVec3;
+use std::collections::BTreeMap;
+
+/// Voxels along the longest side when the shell's extent is estimated, for framing.
+const ESTIMATE_RESOLUTION: u32 = 32;
+
+/// The growing implicit shell.
+pub struct ImplicitMesh {
+    tree: Node,
+    grid: Grid,
+    front: DVec3,
+    bounds: Bounds,
+    resolution: u32,
+    /// (instance, chunk) in growth order.
+    jobs: Vec<(u32, ChunkIndex)>,
+    /// The last instance reaching each chunk (by linear chunk number), or `u32::MAX`.
+    last_reach: Vec<u32>,
+    /// Meshes of the chunks some later instance will change, by linear chunk number.
+    live: BTreeMap<usize, Mesh>,
+    /// Meshes of the instance being meshed, shown once all its chunks are done.
+    pending: Vec<(usize, Mesh)>,
+    /// What meshing each live chunk left behind, for meshing it again.
+    caches: BTreeMap<usize, ChunkCache>,
+    /// The box of each instance's field, by growth step.
+    reach: Vec<Bounds>,
+    done: usize,
+    /// The last instance shown.
+    shown: Option<u32>,
+    scratch: Scratch,
+}
+
+impl ImplicitMesh {
+    /// The shell of `spec`; spines placed by the pattern read `pattern` seeded by `seed`.
+    pub fn new(
+        spec: &ImplicitSpec,
+        pattern: &PatternSpec,
+        seed: u64,
+        rows: usize,
+    ) -> Result<Self, ShapeError> {
+        let Whorl {
+            tree,
+            instances,
+            reach,
+            front,
+            ..
+        } = whorl(spec, pattern, seed, rows)?;
+        let grid = Grid::new(&tree.bounds, spec.resolution);
+        let mut last_reach = vec![u32::MAX; grid.chunk_count()];
+        let mut jobs = Vec::new();
+        for (k, b) in reach.iter().enumerate() {
+            if b.is_empty() {
+                continue;
+            }
+            for chunk in grid.chunks_touching(b) {
+                jobs.push((k as u32, chunk));
+                last_reach[grid.linear(chunk)] = k as u32;
+            }
+        }
+        let bounds = surface_box(
+            &tree,
+            &Grid::new(&tree.bounds, ESTIMATE_RESOLUTION),
+            instances.saturating_sub(1),
+        );
+        Ok(Self {
+            tree,
+            grid,
+            front,
+            bounds,
+            resolution: spec.resolution,
+            jobs,
+            last_reach,
+            live: BTreeMap::new(),
+            pending: Vec::new(),
+            caches: BTreeMap::new(),
+            reach,
+            done: 0,
+            shown: None,
+            scratch: Scratch::default(),
+        })
+    }
+
+    /// Moves the meshes of `instance` into view: final chunks to `mesh`, the rest into the
+    /// live set, which `edge` then shows.
+    fn publish(&mut self, instance: u32, mesh: &mut Mesh, edge: &mut Mesh) {
+        for (chunk, m) in self.pending.drain(..) {
+            if self.last_reach[chunk] == instance {
+                self.live.remove(&chunk);
+                mesh.append(&m);
+            } else {
+                self.live.insert(chunk, m);
+            }
+        }
+        edge.clear();
+        for m in self.live.values() {
+            edge.append(m);
+        }
+        self.shown = Some(instance);
+    }
+}
+
+impl GrowingShape for ImplicitMesh {
+    fn steps(&self) -> usize {
+        self.jobs.len()
+    }
+
+    fn steps_done(&self) -> usize {
+        self.done
+    }
+
+    fn capacity(&self) -> Capacity {
+        // Enough for the shells we know (grown, the Murex at r voxels has about 20 r²
+        // vertices before welding, with 1.75 triangles each; a plain whorl 15 r²), so that
+        // growth never stops to move a large mesh: the renderer's buffers and the meshes still
+        // grow when a shell needs more.
+        let r = self.resolution as usize;
+        Capacity {
+            vertices: 20 * r * r,
+            indices: 108 * r * r,
+        }
+    }
+
+    fn edge_capacity(&self) -> Capacity {
+        self.capacity()
+    }
+
+    fn bounds(&self) -> Bounds {
+        self.bounds
+    }
+
+    fn front(&self) -> DVec3 {
+        self.front
+    }
+
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool {
+        let Some(&(instance, chunk)) = self.jobs.get(self.done) else {
+            return false;
+        };
+        let linear = self.grid.linear(chunk);
+        let mut cache = self.caches.remove(&linear).unwrap_or_default();
+        let m = mesh_chunk(
+            &self.tree,
+            &self.grid,
+            chunk,
+            instance,
+            &mut self.scratch,
+            Memory::Cache {
+                cache: &mut cache,
+                changed: &self.reach[instance as usize],
+            },
+        );
+        if self.last_reach[linear] != instance {
+            self.caches.insert(linear, cache);
+        }
+        self.pending.push((linear, m));
+        self.done += 1;
+        let last_of_instance = self.jobs.get(self.done).is_none_or(|j| j.0 != instance);
+        if last_of_instance {
+            self.publish(instance, mesh, edge);
+        }
+        last_of_instance
+    }
+
+    /// Meshes every chunk not yet final once, as it ends up, skipping the stages between.
+    fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
+        let Some(&(last, _)) = self.jobs.last() else {
+            return;
+        };
+        if self.done == self.jobs.len() {
+            return;
+        }
+        self.pending.clear();
+        self.live.clear();
+        self.caches.clear();
+        let mut seams = Seams::default();
+        for (linear, &reach) in self.last_reach.iter().enumerate() {
+            if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
+                let chunk = self.grid.chunk_at(linear);
+                mesh.append(&mesh_chunk(
+                    &self.tree,
+                    &self.grid,
+                    chunk,
+                    last,
+                    &mut self.scratch,
+                    Memory::Seams(&mut seams),
+                ));
+            }
+        }
+        edge.clear();
+        self.shown = Some(last);
+        self.done = self.jobs.len();
+    }
+}

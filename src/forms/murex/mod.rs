@@ -1,0 +1,12 @@
+//! The implicit shell of Galbraith, Prusinkiewicz & Wyvill, *Modeling a Murex cabritii sea
+//! shell with a structured implicit surface modeler* (§3, the spec's `implicit` form): whorls
+//! of generating surfaces placed on the helico-spiral, varices with their spines and bumps, the
+//! canal's spines and the carved opening, built as a BlobTree on the
+//! [`blobtree`](crate::blobtree) engine and polygonized as the shell grows.
+
+pub mod bumps;
+pub mod canal_spines;
+pub mod implicit_mesh;
+pub mod implicit_whorl;
+pub(crate) mod repair;
+pub mod varix;

@@ -1,0 +1,55 @@
+//! The implicit shell's cross-field checks: everything [`check`] asks of the numbers, each
+//! violation repaired from the fallback's part it concerns, and spines placed by a pattern only
+//! where there is one.
+
+use super::implicit_whorl::check;
+use crate::spec::implicit::{ImplicitSpec, Placement};
+use crate::spec::pattern::{Model, PatternSpec};
+use crate::spec::problem::Problem;
+
+/// An implicit shell must build: a spiral that grows, positive sizes, bends its cones can
+/// take, parts that its controlled blending names, a resolution within the cap, spines and
+/// an opening within theirs; spines placed by the pattern need a pattern model.
+pub(crate) fn repair(
+    i: &mut ImplicitSpec,
+    f: &ImplicitSpec,
+    pattern: &PatternSpec,
+    problems: &mut Vec<Problem>,
+) {
+    if let Err(e) = check(i) {
+        let key = e.key.as_str();
+        let used = if key == "form.resolution" {
+            i.resolution = f.resolution;
+            format!("the preset's resolution {}", f.resolution)
+        } else if key.starts_with("form.generator") {
+            i.generator = f.generator.clone();
+            "the preset's generating surface".into()
+        } else if key.starts_with("form.varices") {
+            i.varices = f.varices.clone();
+            "the preset's varices".into()
+        } else if key.starts_with("form.canal_spines") {
+            i.canal_spines = f.canal_spines.clone();
+            "the preset's canal spines".into()
+        } else if key.starts_with("form.opening") {
+            i.opening = f.opening.clone();
+            "the preset's opening".into()
+        } else {
+            "the preset's form".into()
+        };
+        problems.push(e.repaired(&used));
+        if check(i).is_err() {
+            *i = f.clone();
+        }
+    }
+    let varices = &mut i.varices;
+    if varices.placement == Placement::Pattern
+        && !varices.spines.is_empty()
+        && matches!(pattern.model, Model::None)
+    {
+        varices.placement = Placement::Table;
+        problems.push(Problem::new(
+            "form.varices.placement",
+            "spines placed by the pattern need a pattern model; used the table",
+        ));
+    }
+}

@@ -1,0 +1,64 @@
+//! The one interface between a shell form and everything that shows or exports it: a shape
+//! that grows one step at a time, appending to a permanent mesh and rewriting a small transient
+//! mesh that closes its current growing edge (the lip of a thick wall). A step's cost depends
+//! only on what it adds, never on how much has grown already.
+
+use crate::mesh::{Bounds, Capacity, Mesh};
+use crate::spec::problem::Problem;
+use glam::DVec3;
+use std::fmt;
+
+/// Why a shape cannot be built from its spec: the key of the value concerned (its dotted path
+/// in the serialised spec) and what is wrong with it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ShapeError {
+    pub key: String,
+    pub message: String,
+}
+
+impl ShapeError {
+    pub fn new(key: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            key: key.into(),
+            message: message.into(),
+        }
+    }
+
+    /// The same fault as a repaired problem, saying what was `used` instead.
+    pub fn repaired(self, used: &str) -> Problem {
+        Problem::new(self.key, format!("{}; used {used}", self.message))
+    }
+}
+
+impl fmt::Display for ShapeError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.key, self.message)
+    }
+}
+
+impl std::error::Error for ShapeError {}
+
+/// A shape grown step by step.
+pub trait GrowingShape {
+    /// Steps from the first to the fully grown shape.
+    fn steps(&self) -> usize;
+    /// Steps grown so far.
+    fn steps_done(&self) -> usize;
+    /// Sizes of the permanent mesh when fully grown.
+    fn capacity(&self) -> Capacity;
+    /// The largest the transient edge mesh ever gets.
+    fn edge_capacity(&self) -> Capacity;
+    /// Bounding box of the fully grown shape.
+    fn bounds(&self) -> Bounds;
+    /// The direction the fully grown shape is best seen from (where its opening faces).
+    fn front(&self) -> DVec3;
+    /// Grows one step: appends to `mesh`, and may replace `edge` with the geometry that closes
+    /// the new growing edge; says whether it did.
+    fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool;
+    /// Grows every remaining step (a form may know a shorter way to the end than step by step).
+    fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
+        while self.steps_done() < self.steps() {
+            self.grow(mesh, edge);
+        }
+    }
+}

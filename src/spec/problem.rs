@@ -1,0 +1,31 @@
+//! What could not be used as given in a spec (a link's value, a preset's field, a value that
+//! breaks a cap or another field's limit): the key concerned, what was wrong and what was used
+//! instead. Links, the panel and the command line all report these.
+
+use std::fmt;
+
+/// Something a link asked for that could not be used as given.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Problem {
+    /// The key concerned, or "link" for the link as a whole.
+    pub key: String,
+    /// What was wrong, and what was used instead.
+    pub message: String,
+}
+
+impl Problem {
+    pub fn new(key: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            key: key.into(),
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.key, self.message)
+    }
+}
+
+impl std::error::Error for Problem {}
