@@ -5,6 +5,7 @@
 pub mod bench;
 pub mod blobtree;
 pub mod export;
+mod fnv;
 pub mod forms;
 pub mod generator;
 pub mod mesh;

@@ -1,6 +1,7 @@
 //! The triangle mesh every form produces and every consumer reads: the GPU buffers, the
 //! exporters and the tests. Vertices are laid out exactly as the vertex shader reads them.
 
+use crate::fnv::Fnv;
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 
@@ -101,13 +102,11 @@ impl Mesh {
     /// and growth step by step or all at once, give the same mesh.
     pub fn content_hash(&self) -> u64 {
         self.indices.chunks_exact(3).fold(0u64, |sum, t| {
-            let mut h = 0xcbf2_9ce4_8422_2325u64;
+            let mut h = Fnv::default();
             for &i in t {
-                for b in bytemuck::bytes_of(&self.vertices[i as usize]) {
-                    h = (h ^ u64::from(*b)).wrapping_mul(0x0100_0000_01b3);
-                }
+                h.write(bytemuck::bytes_of(&self.vertices[i as usize]));
             }
-            sum.wrapping_add(h)
+            sum.wrapping_add(h.value())
         })
     }
 }

@@ -8,7 +8,7 @@ use seashells_core::presets::{DEFAULT_PRESET, presets};
 use seashells_core::share::link::{MAX_LINK, decode, encode, flatten};
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::fields::{FIELDS, Kind};
+use seashells_core::spec::fields::{FORM_KINDS, Field, Kind, Section, field, fields};
 use serde_json::Value;
 
 /// A random valid spec: a preset with some fields set to random values in their ranges.
@@ -16,8 +16,9 @@ fn perturbed(preset: usize, changes: &[(usize, f64)]) -> Option<(usize, ShellSpe
     let preset = preset % presets().len();
     let base = &presets()[preset].spec;
     let mut value = serde_json::to_value(base).unwrap();
+    let table: Vec<&Field> = fields(base.form.kind()).collect();
     for &(i, x) in changes {
-        let field = &FIELDS[i % FIELDS.len()];
+        let field = table[i % table.len()];
         if field.key.ends_with(".kind") {
             continue;
         }
@@ -219,17 +220,65 @@ fn an_overlong_link_is_refused_as_a_whole() {
 }
 
 #[test]
-fn every_leaf_of_every_preset_is_described_in_the_field_table() {
-    let mut leaves = std::collections::BTreeSet::new();
+fn every_leaf_of_every_preset_is_described_in_its_forms_field_table() {
     for preset in presets() {
-        leaves.extend(flatten(&serde_json::to_value(&preset.spec).unwrap()).into_keys());
+        let kind = preset.spec.form.kind();
+        let value = serde_json::to_value(&preset.spec).unwrap();
+        assert_eq!(value["form"]["kind"], kind, "{}", preset.id);
+        assert!(FORM_KINDS.contains(&kind), "{kind}");
+        for leaf in flatten(&value).into_keys() {
+            assert!(
+                field(kind, &leaf).is_some(),
+                "{}: {leaf} has no description among the {kind} fields",
+                preset.id
+            );
+        }
     }
-    for leaf in &leaves {
-        assert!(
-            FIELDS.iter().any(|f| f.key == leaf),
-            "{leaf} has no description in spec::fields"
-        );
+}
+
+#[test]
+fn every_field_of_a_form_is_a_key_of_its_presets_and_shows_in_one_section_per_concept() {
+    for kind in FORM_KINDS {
+        let mut leaves = std::collections::BTreeSet::new();
+        for preset in presets().iter().filter(|p| p.spec.form.kind() == *kind) {
+            leaves.extend(flatten(&serde_json::to_value(&preset.spec).unwrap()).into_keys());
+        }
+        assert!(!leaves.is_empty(), "no preset of the {kind} form");
+        let table: Vec<&Field> = fields(kind).collect();
+        // Pattern parameters belong to the models a form's presets may not use.
+        for f in table
+            .iter()
+            .filter(|f| !f.key.starts_with("pattern.model."))
+        {
+            assert!(
+                leaves.contains(f.key),
+                "{kind}: {} is described but no preset of the form has it",
+                f.key
+            );
+        }
+        let mut seen: Vec<Section> = Vec::new();
+        for f in &table {
+            if seen.last() != Some(&f.section) {
+                assert!(
+                    !seen.contains(&f.section),
+                    "{kind}: the section {} comes twice (again at {})",
+                    f.section.title(),
+                    f.key
+                );
+                seen.push(f.section);
+            }
+        }
     }
+    // A key two forms share has each form's own range: an implicit shell's R₀ must be > 0.
+    let Some(Kind::Real { min, .. }) = field("implicit", "form.spiral.r0").map(|f| f.kind) else {
+        panic!("R₀ of the implicit form is a real number");
+    };
+    assert!(min > 0.0);
+    let Some(Kind::Real { min, .. }) = field("sweep", "form.spiral.r0").map(|f| f.kind) else {
+        panic!("r₀ of the sweep is a real number");
+    };
+    assert_eq!(min, 0.0);
+    assert!(field("implicit", "form.curve.points").is_none());
 }
 
 #[test]

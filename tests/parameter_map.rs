@@ -46,7 +46,7 @@ fn axes_step_evenly_or_by_equal_ratios_and_refuse_what_cannot_span_a_map() {
         let e = Axis::new(key, from, to, count).unwrap_err();
         assert!(e.contains(why), "{key}: {e}");
     }
-    let d_a = field("pattern.model.d_a").unwrap();
+    let d_a = field("sweep", "pattern.model.d_a").unwrap();
     assert_eq!(
         Axis::around(d_a, 0.015, 3).unwrap().values,
         [0.0075, 0.01875, 0.03]

@@ -93,7 +93,7 @@ fn mesh(args: &[String]) -> Result<String, String> {
     let out = options.required("out")?;
     let format = MeshFormat::from_path(out)?;
     let mut spec = options.spec()?;
-    if let Some(n) = count(&options, "resolution", "form.resolution")? {
+    if let Some(n) = count(&options, "resolution", &spec, "form.resolution")? {
         let Form::Implicit(implicit) = &mut spec.form else {
             return Err("--resolution applies to implicit shells only".into());
         };
@@ -110,15 +110,20 @@ fn mesh(args: &[String]) -> Result<String, String> {
     ))
 }
 
-/// A whole number option, within the range the spec allows for its key.
-fn count(options: &Options, name: &str, key: &str) -> Result<Option<u32>, String> {
+/// A whole number option, within the range `spec` allows for its key.
+fn count(
+    options: &Options,
+    name: &str,
+    spec: &ShellSpec,
+    key: &str,
+) -> Result<Option<u32>, String> {
     let Some(text) = options.get(name) else {
         return Ok(None);
     };
     let n: u32 = text
         .parse()
         .map_err(|_| format!("--{name} takes a whole number, not '{text}'"))?;
-    match fields::field(key).map(|f| f.kind) {
+    match fields::field(spec.form.kind(), key).map(|f| f.kind) {
         Some(Kind::Integer { min, max }) if !(min..=max).contains(&u64::from(n)) => {
             Err(format!("--{name} must be between {min} and {max}, not {n}"))
         }
@@ -143,13 +148,13 @@ fn pattern(args: &[String]) -> Result<String, String> {
     };
     let mut spec = options.spec()?;
     let base = spec.clone();
-    if let Some(n) = count(&options, "cells", "pattern.cells")? {
+    if let Some(n) = count(&options, "cells", &spec, "pattern.cells")? {
         spec.pattern.cells = n;
     }
-    if let Some(n) = count(&options, "rows", "growth.rows")? {
+    if let Some(n) = count(&options, "rows", &spec, "growth.rows")? {
         spec.growth.rows = n;
     }
-    if let Some(n) = count(&options, "iterations", "pattern.iterations")? {
+    if let Some(n) = count(&options, "iterations", &spec, "pattern.iterations")? {
         spec.pattern.iterations = n;
     }
     let problems = repair(&mut spec, &base);

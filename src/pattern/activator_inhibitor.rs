@@ -13,10 +13,10 @@
 //! its waves alive by branching when the hormone lets the inhibitor decay fast.
 
 use super::diffusion;
+use super::edge_model::{EdgeModel, PatternError, check_finite};
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
-use super::{EdgeModel, PatternError, check_finite};
 use crate::spec::pattern::{ActivatorInhibitor as Params, PatternSpec};
 
 pub struct ActivatorInhibitor {

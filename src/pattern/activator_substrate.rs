@@ -14,9 +14,9 @@
 //! *Amoria* and the stripes with waves of *Volutoconus*.
 
 use super::diffusion;
+use super::edge_model::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use super::grid::Grid;
 use super::noise::Noise;
-use super::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use crate::spec::pattern::{ActivatorSubstrate as Params, PatternSpec};
 use std::f64::consts::TAU;
 

@@ -6,8 +6,8 @@
 //! empty, inactive edge.
 
 use super::automaton_rule::{MAX_COUNT, Rule};
+use super::edge_model::{EdgeModel, PatternError};
 use super::noise::Noise;
-use super::{EdgeModel, PatternError};
 use crate::spec::pattern::{Automaton as Params, Boundary, ColourBy, PatternSpec};
 
 pub struct Automaton {

@@ -25,10 +25,10 @@
 //! Explicit Euler with Δt = Δx = 1 (unrefined), as for the paper's models.
 
 use super::diffusion;
+use super::edge_model::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use super::grid::Grid;
 use super::noise::Noise;
 use super::starts;
-use super::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use crate::spec::pattern::{Coupled as Params, PatternSpec};
 
 pub struct Coupled {

@@ -3,7 +3,7 @@
 //! rule that parses. Each violation is repaired and reported.
 
 use super::automaton::rule_of;
-use super::diffusions;
+use super::stability::diffusions;
 use super::texture_layout::TextureLayout;
 use crate::spec::pattern::{Automaton, Model, PatternSpec};
 use crate::spec::problem::Problem;

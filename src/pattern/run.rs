@@ -3,30 +3,9 @@
 //! for the same spec.
 
 use super::{EdgeModel, PatternError, build};
+use crate::fnv::Fnv;
 use crate::spec::ShellSpec;
 use crate::spec::colour::Rgb;
-
-/// FNV-1a, 64 bits, over the bytes given.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Fnv(u64);
-
-impl Default for Fnv {
-    fn default() -> Self {
-        Self(0xcbf2_9ce4_8422_2325)
-    }
-}
-
-impl Fnv {
-    pub fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3);
-        }
-    }
-
-    pub fn value(self) -> u64 {
-        self.0
-    }
-}
 
 /// The pattern of one shell, row by row.
 pub struct PatternRun {
@@ -111,18 +90,5 @@ impl PatternRun {
     /// Hash of every recorded value so far, bit for bit.
     pub fn hash(&self) -> u64 {
         self.hash.value()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fnv_matches_the_reference_values() {
-        let mut h = Fnv::default();
-        assert_eq!(h.value(), 0xcbf29ce484222325);
-        h.write(b"a");
-        assert_eq!(h.value(), 0xaf63dc4c8601ec8c);
     }
 }

@@ -234,6 +234,14 @@ fn variant_default(parent: &str, kind: &str) -> Option<Value> {
     })
 }
 
+/// The kind of the form of a serialised spec ("" when it has none).
+fn form_kind(value: &Value) -> &str {
+    value
+        .pointer("/form/kind")
+        .and_then(Value::as_str)
+        .unwrap_or_default()
+}
+
 fn parent_mut<'a>(root: &'a mut Value, parent: &str) -> Option<&'a mut Map<String, Value>> {
     parent
         .split('.')
@@ -404,9 +412,11 @@ fn apply(
     order.sort_by_key(|k| (!k.ends_with(".kind"), k.matches('.').count()));
     for key in order {
         let given = &last[&key];
+        let kind = form_kind(&value).to_string();
+        let field = field(&kind, &key);
         if let Some(parent) = key.strip_suffix(".kind") {
             let current = parent_mut(&mut value, parent).and_then(|m| m.get("kind").cloned());
-            match (current, parse_value(given, field(&key), &Value::Null)) {
+            match (current, parse_value(given, field, &Value::Null)) {
                 (None, _) => {
                     problems.push(Problem::new(key, "is not a key of this shell; ignored"))
                 }
@@ -432,7 +442,7 @@ fn apply(
             problems.push(Problem::new(key, "is not a key of this shell; ignored"));
             continue;
         };
-        match parse_value(given, field(&key), current) {
+        match parse_value(given, field, current) {
             Ok((parsed, note)) => {
                 *current = parsed;
                 if let Some(note) = note {

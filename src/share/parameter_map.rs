@@ -9,7 +9,7 @@ use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
 use crate::share::link::{self, flatten};
 use crate::spec::ShellSpec;
-use crate::spec::fields::{FIELDS, Field, Group, Kind, display};
+use crate::spec::fields::{Field, Kind, SHELL, Section, display};
 
 /// Tiles along each side of the page's map (its style sheet lays out eight columns).
 pub const SIDE: usize = 8;
@@ -27,8 +27,9 @@ impl Axis {
     /// `count` values of the real field `key` from `from` to `to` (both within its range), in
     /// equal steps, or equal ratios on a logarithmic field; each rounded as the panel shows it.
     pub fn new(key: &str, from: f64, to: f64, count: usize) -> Result<Self, String> {
-        let field = crate::spec::fields::field(key)
-            .filter(|f| f.group == Group::Pattern)
+        let field = SHELL
+            .iter()
+            .find(|f| f.key == key && f.section == Section::Pattern)
             .ok_or_else(|| format!("'{key}' is not a parameter of a pattern model"))?;
         let Kind::Real { min, max, log } = field.kind else {
             return Err(format!("{key} is not a real number and cannot span a map"));
@@ -84,7 +85,7 @@ impl Axis {
 /// what a map can span.
 pub fn parameters(spec: &ShellSpec) -> Vec<(&'static Field, f64)> {
     let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
-    FIELDS
+    SHELL
         .iter()
         .filter(|f| f.key.starts_with("pattern.model.") && matches!(f.kind, Kind::Real { .. }))
         .filter_map(|f| Some((f, leaves.get(f.key)?.as_f64()?)))

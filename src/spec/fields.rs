@@ -1,20 +1,24 @@
 //! The spec's description of its own fields: for every key of a [`ShellSpec`](super::ShellSpec)
-//! (its dotted path in the serialised form), the paper's symbol and name, the group it belongs
+//! (its dotted path in the serialised form), the paper's symbol and name, the section it belongs
 //! to, and the range a value may take. Links are checked against it, and the editing panel is
 //! generated from it.
 
-/// Groups of the editing panel, in display order.
+/// The sections of the editing panel, one per concept of a form or of the pattern.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Group {
+pub enum Section {
     Shape,
     Mouth,
     Chamber,
     Trunk,
     Knot,
     Branches,
+    Spiral,
+    Whorls,
     Generator,
     Varices,
+    CanalSpines,
     Opening,
+    Polygonization,
     Curve,
     Orientation,
     Sculpture,
@@ -26,27 +30,31 @@ pub enum Group {
     Seed,
 }
 
-impl Group {
+impl Section {
     pub fn title(self) -> &'static str {
         match self {
-            Group::Shape => "Shape",
-            Group::Mouth => "Mouth polygon",
-            Group::Chamber => "Chamber to chamber",
-            Group::Trunk => "Trunks",
-            Group::Knot => "Knots and tendrils",
-            Group::Branches => "Branches",
-            Group::Generator => "Generating surface",
-            Group::Varices => "Varices, spines and bumps",
-            Group::Opening => "Opening",
-            Group::Curve => "Generating curve",
-            Group::Orientation => "Orientation",
-            Group::Sculpture => "Sculpture",
-            Group::Wall => "Wall and lip",
-            Group::Pattern => "Pattern model",
-            Group::Colours => "Colours",
-            Group::Material => "Material and light",
-            Group::Growth => "Growth",
-            Group::Seed => "Seed",
+            Section::Shape => "Shape",
+            Section::Mouth => "Mouth polygon",
+            Section::Chamber => "Chamber to chamber",
+            Section::Trunk => "Trunks",
+            Section::Knot => "Knots and tendrils",
+            Section::Branches => "Branches",
+            Section::Spiral => "Helico-spiral",
+            Section::Whorls => "Whorls and sections",
+            Section::Generator => "Generating surface",
+            Section::Varices => "Varices, spines and bumps",
+            Section::CanalSpines => "Canal spines",
+            Section::Opening => "Opening",
+            Section::Polygonization => "Polygonization",
+            Section::Curve => "Generating curve",
+            Section::Orientation => "Orientation",
+            Section::Sculpture => "Sculpture",
+            Section::Wall => "Wall and lip",
+            Section::Pattern => "Pattern model",
+            Section::Colours => "Colours",
+            Section::Material => "Material and light",
+            Section::Growth => "Growth",
+            Section::Seed => "Seed",
         }
     }
 }
@@ -135,7 +143,7 @@ pub struct Field {
     /// Dotted path in the serialised spec. Keys under `pattern.model.` apply to every model
     /// that has that parameter.
     pub key: &'static str,
-    pub group: Group,
+    pub section: Section,
     /// The paper's symbol, or "" where the paper has none.
     pub symbol: &'static str,
     pub name: &'static str,
@@ -164,99 +172,41 @@ const fn int(min: u64, max: u64) -> Kind {
 
 const fn f(
     key: &'static str,
-    group: Group,
+    section: Section,
     symbol: &'static str,
     name: &'static str,
     kind: Kind,
 ) -> Field {
     Field {
         key,
-        group,
+        section,
         symbol,
         name,
         kind,
     }
 }
 
-use Group::*;
+use Section::*;
 
 /// The largest diffusion per iteration that explicit Euler with Δt = Δx = 1 integrates
 /// stably: above it the discrete Laplacian amplifies the shortest wave.
 pub const MAX_DIFFUSION: f64 = 0.5;
 
-/// Every field of every form and model.
+/// The kinds of form, as `form.kind` names them.
+pub const FORM_KINDS: &[&str] = &["sweep", "chambers", "branching", "implicit"];
+
+/// The field that chooses the form: first in every shell's panel.
+const FORM_KIND: Field = f(
+    "form.kind",
+    Shape,
+    "",
+    "surface model",
+    Kind::Choice(FORM_KINDS),
+);
+
+/// The swept shell's fields (Fowler, Meinhardt & Prusinkiewicz 1992, §2).
 #[rustfmt::skip]
-pub const FIELDS: &[Field] = &[
-    f("form.kind", Shape, "", "surface model", Kind::Choice(&["sweep", "chambers", "branching", "implicit"])),
-    f("form.whorls", Shape, "", "whorls", int(1, 40)),
-    f("form.whorl_angle", Shape, "", "rotation per whorl (degrees)", real(30.0, 720.0)),
-    f("form.sections", Shape, "", "sections per whorl (between varices)", int(1, 12)),
-    f("form.surfaces", Shape, "", "generating surfaces per section (eq 9)", int(1, 64)),
-    f("form.blending", Shape, "", "sections blend with", Kind::Choice(&["all", "neighbours"])),
-    f("form.resolution", Shape, "", "voxels along the longest side (polygonization)", int(16, 384)),
-    f("form.spiral.beta", Shape, "β", "angle between the axis and the line through the whorls (degrees)", real(1.0, 89.0)),
-    f("form.spiral.lambda", Shape, "λ", "ratio of radii one turn apart (eq 1)", log(1.01, 10.0)),
-    f("form.generator.points", Generator, "", "points (u,v,w,radius)", Kind::List { width: 4, integer: false }),
-    f("form.generator.cones", Generator, "", "cones (u₀,v₀,w₀,u₁,v₁,w₁,radius₀,radius₁,bend°,from whorl)", Kind::List { width: 10, integer: false }),
-    f("form.generator.tori", Generator, "", "tori in the uv plane (u,v,w,major radius,radius)", Kind::List { width: 5, integer: false }),
-    f("form.generator.exponent", Generator, "n", "blending exponent of the parts (eq 4)", log(1.0, 400.0)),
-    f("form.generator.pairs", Generator, "", "only these pairs of parts blend (eq 6)", Kind::List { width: 2, integer: true }),
-    f("form.varices.placement", Varices, "", "spines stand where", Kind::Choice(&["table", "pattern"])),
-    f("form.varices.spines", Varices, "σ", "spines (whorl, angle°, relative size σ; table 1)", Kind::List { width: 3, integer: false }),
-    f("form.varices.length", Varices, "", "length of a spine of σ = 1 (units of D)", log(0.05, 5.0)),
-    f("form.varices.radius", Varices, "", "radius at a spine's base", log(0.005, 1.0)),
-    f("form.varices.tip", Varices, "", "radius at the largest spine's tip (eq 12)", log(0.002, 1.0)),
-    f("form.varices.bend", Varices, "", "curve of a spine (degrees)", real(-90.0, 90.0)),
-    f("form.varices.ridge", Varices, "", "radius of the ridge joining the spines", real(0.0, 0.5)),
-    f("form.varices.bump_sets", Varices, "", "sets of bumps between two varices", int(0, 16)),
-    f("form.varices.bump_size", Varices, "s", "size of a bump", log(0.01, 1.0)),
-    f("form.varices.bump_spread", Varices, "σ", "deviation of a bump's random scale", real(0.0, 1.0)),
-    f("form.canal_spines.spines", Varices, "", "canal spines (varix 1–3, σ; table 2)", Kind::List { width: 2, integer: false }),
-    f("form.canal_spines.length", Varices, "", "length of a canal spine of σ = 1", log(0.05, 5.0)),
-    f("form.canal_spines.radius", Varices, "", "radius at a canal spine's base", log(0.005, 1.0)),
-    f("form.opening.inside.points", Opening, "", "hollow: points (u,v,w,radius)", Kind::List { width: 4, integer: false }),
-    f("form.opening.inside.cones", Opening, "", "hollow: cones (u₀,v₀,w₀,u₁,v₁,w₁,radius₀,radius₁,bend°,from whorl)", Kind::List { width: 10, integer: false }),
-    f("form.opening.inside.tori", Opening, "", "hollow: tori (u,v,w,major radius,radius)", Kind::List { width: 5, integer: false }),
-    f("form.opening.inside.exponent", Opening, "n", "hollow: blending exponent (eq 4)", log(1.0, 400.0)),
-    f("form.opening.inside.pairs", Opening, "", "hollow: only these pairs blend (eq 6)", Kind::List { width: 2, integer: true }),
-    f("form.opening.ahead", Opening, "", "generating surfaces the hollow reaches beyond the edge", int(0, 16)),
-    f("form.knots", Shape, "", "most trunks per branch", int(1, 400)),
-    f("form.depth", Shape, "", "most generations of branches on branches", int(0, 12)),
-    f("form.stop", Shape, "", "stop size: fraction of the first trunk's height (rule 8)", log(0.001, 1.0)),
-    f("form.jitter", Shape, "", "random turn of rolls and branch angles (degrees)", real(0.0, 90.0)),
-    f("form.trunk.diameter", Trunk, "D₀", "diameter of the first trunk", log(0.01, 100.0)),
-    f("form.trunk.slenderness", Trunk, "S", "H/D of every trunk (rule 1)", log(0.05, 20.0)),
-    f("form.trunk.taper", Trunk, "", "diameter ratio from trunk to trunk", log(0.5, 1.0)),
-    f("form.trunk.sides", Trunk, "", "sides of a trunk's section", int(3, 32)),
-    f("form.knot.angle", Knot, "α", "knot angle at a branch's first knot (degrees)", real(-90.0, 90.0)),
-    f("form.knot.roll", Knot, "θ", "change of α per knot (degrees)", real(-45.0, 45.0)),
-    f("form.knot.k0", Knot, "k₀", "lower limit of α (degrees)", real(-90.0, 90.0)),
-    f("form.knot.k1", Knot, "k₁", "upper limit of α (degrees)", real(-90.0, 90.0)),
-    f("form.knot.beta", Knot, "β", "self-adjusting force (degrees)", real(0.0, 90.0)),
-    f("form.knot.twist", Knot, "", "turn of the bending side per knot (degrees)", real(-180.0, 180.0)),
-    f("form.branches.every", Branches, "", "branches every n knots (0: where the tendril turns)", int(0, 50)),
-    f("form.branches.count", Branches, "", "branches at a branching knot", int(1, 24)),
-    f("form.branches.count_step", Branches, "", "added to the count at each later branching knot", real(-4.0, 4.0)),
-    f("form.branches.angle", Branches, "", "angle of a branch to its parent (degrees)", real(-90.0, 90.0)),
-    f("form.branches.angle_step", Branches, "", "added to the angle at each later branching knot (degrees)", real(-30.0, 30.0)),
-    f("form.branches.scale", Branches, "", "branch diameter / knot height (rule 7)", log(0.05, 20.0)),
-    f("form.branches.scale_growth", Branches, "", "factor on that at each later branching knot", log(0.5, 2.0)),
-    f("form.chambers", Shape, "", "chambers (the age of the shell)", int(1, 2000)),
-    f("form.handedness", Shape, "", "twist", Kind::Choice(&["dextral", "sinistral"])),
-    f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
-    f("form.septa", Shape, "", "mark the septa (suture lines)", Kind::Flag),
-    f("form.mouth.apexes", Mouth, "N", "apexes of the polygon", int(3, 256)),
-    f("form.mouth.radius_a", Mouth, "D₀/2", "long radius", log(0.01, 100.0)),
-    f("form.mouth.radius_b", Mouth, "", "short radius", log(0.01, 100.0)),
-    f("form.mouth.protuberances", Mouth, "", "protuberances: radial offsets around the ellipse (fractions)", Kind::List { width: 1, integer: false }),
-    f("form.chamber.ratio", Chamber, "r", "growth ratio D₀′/D₀ per chamber", log(0.5, 2.0)),
-    f("form.chamber.width", Chamber, "H", "width between bottom and top base", log(0.001, 100.0)),
-    f("form.chamber.inclination.x", Chamber, "Qx", "inclination about x (degrees)", real(-90.0, 90.0)),
-    f("form.chamber.inclination.y", Chamber, "Qy", "inclination about y (degrees)", real(-90.0, 90.0)),
-    f("form.chamber.inclination.z", Chamber, "Qz", "inclination about z (degrees)", real(-90.0, 90.0)),
-    f("form.chamber.translation.x", Chamber, "Tx", "shift of the next chamber along x", real(-10.0, 10.0)),
-    f("form.chamber.translation.y", Chamber, "Ty", "shift of the next chamber along y", real(-10.0, 10.0)),
-    f("form.chamber.translation.z", Chamber, "Tz", "shift of the next chamber along z", real(0.0, 10.0)),
+pub const SWEEP: &[Field] = &[
     f("form.spiral.delta_theta", Shape, "Δθ", "angular step (degrees)", real(0.5, 90.0)),
     f("form.spiral.lambda_r", Shape, "λᵣ", "radial growth per step", log(0.8, 3.0)),
     f("form.spiral.lambda_z", Shape, "λ_z", "axial growth per step", log(0.8, 3.0)),
@@ -288,6 +238,99 @@ pub const FIELDS: &[Field] = &[
     f("form.wall.lip_length", Wall, "", "lip length (degrees before the opening)", real(0.0, 720.0)),
     f("form.wall.lip_flare", Wall, "", "lip flare (extra size at the opening)", real(-0.5, 2.0)),
     f("form.wall.lip_thickening", Wall, "", "lip thickening (factor at the opening)", log(0.5, 10.0)),
+];
+
+/// The fields of Kawaguchi's accumulated chambers.
+#[rustfmt::skip]
+pub const CHAMBERS: &[Field] = &[
+    f("form.chambers", Shape, "", "chambers (the age of the shell)", int(1, 2000)),
+    f("form.handedness", Shape, "", "twist", Kind::Choice(&["dextral", "sinistral"])),
+    f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
+    f("form.septa", Shape, "", "mark the septa (suture lines)", Kind::Flag),
+    f("form.mouth.apexes", Mouth, "N", "apexes of the polygon", int(3, 256)),
+    f("form.mouth.radius_a", Mouth, "D₀/2", "long radius", log(0.01, 100.0)),
+    f("form.mouth.radius_b", Mouth, "", "short radius", log(0.01, 100.0)),
+    f("form.mouth.protuberances", Mouth, "", "protuberances: radial offsets around the ellipse (fractions)", Kind::List { width: 1, integer: false }),
+    f("form.chamber.ratio", Chamber, "r", "growth ratio D₀′/D₀ per chamber", log(0.5, 2.0)),
+    f("form.chamber.width", Chamber, "H", "width between bottom and top base", log(0.001, 100.0)),
+    f("form.chamber.inclination.x", Chamber, "Qx", "inclination about x (degrees)", real(-90.0, 90.0)),
+    f("form.chamber.inclination.y", Chamber, "Qy", "inclination about y (degrees)", real(-90.0, 90.0)),
+    f("form.chamber.inclination.z", Chamber, "Qz", "inclination about z (degrees)", real(-90.0, 90.0)),
+    f("form.chamber.translation.x", Chamber, "Tx", "shift of the next chamber along x", real(-10.0, 10.0)),
+    f("form.chamber.translation.y", Chamber, "Ty", "shift of the next chamber along y", real(-10.0, 10.0)),
+    f("form.chamber.translation.z", Chamber, "Tz", "shift of the next chamber along z", real(0.0, 10.0)),
+];
+
+/// The fields of Kawaguchi's branching forms.
+#[rustfmt::skip]
+pub const BRANCHING: &[Field] = &[
+    f("form.knots", Shape, "", "most trunks per branch", int(1, 400)),
+    f("form.depth", Shape, "", "most generations of branches on branches", int(0, 12)),
+    f("form.stop", Shape, "", "stop size: fraction of the first trunk's height (rule 8)", log(0.001, 1.0)),
+    f("form.jitter", Shape, "", "random turn of rolls and branch angles (degrees)", real(0.0, 90.0)),
+    f("form.trunk.diameter", Trunk, "D₀", "diameter of the first trunk", log(0.01, 100.0)),
+    f("form.trunk.slenderness", Trunk, "S", "H/D of every trunk (rule 1)", log(0.05, 20.0)),
+    f("form.trunk.taper", Trunk, "", "diameter ratio from trunk to trunk", log(0.5, 1.0)),
+    f("form.trunk.sides", Trunk, "", "sides of a trunk's section", int(3, 32)),
+    f("form.knot.angle", Knot, "α", "knot angle at a branch's first knot (degrees)", real(-90.0, 90.0)),
+    f("form.knot.roll", Knot, "θ", "change of α per knot (degrees)", real(-45.0, 45.0)),
+    f("form.knot.k0", Knot, "k₀", "lower limit of α (degrees)", real(-90.0, 90.0)),
+    f("form.knot.k1", Knot, "k₁", "upper limit of α (degrees)", real(-90.0, 90.0)),
+    f("form.knot.beta", Knot, "β", "self-adjusting force (degrees)", real(0.0, 90.0)),
+    f("form.knot.twist", Knot, "", "turn of the bending side per knot (degrees)", real(-180.0, 180.0)),
+    f("form.branches.every", Branches, "", "branches every n knots (0: where the tendril turns)", int(0, 50)),
+    f("form.branches.count", Branches, "", "branches at a branching knot", int(1, 24)),
+    f("form.branches.count_step", Branches, "", "added to the count at each later branching knot", real(-4.0, 4.0)),
+    f("form.branches.angle", Branches, "", "angle of a branch to its parent (degrees)", real(-90.0, 90.0)),
+    f("form.branches.angle_step", Branches, "", "added to the angle at each later branching knot (degrees)", real(-30.0, 30.0)),
+    f("form.branches.scale", Branches, "", "branch diameter / knot height (rule 7)", log(0.05, 20.0)),
+    f("form.branches.scale_growth", Branches, "", "factor on that at each later branching knot", log(0.5, 2.0)),
+];
+
+/// The implicit shell's fields (Galbraith, Prusinkiewicz & Wyvill): its helico-spiral, its whorls,
+/// its generating surface, varices, canal spines and opening, and its polygonization.
+#[rustfmt::skip]
+pub const IMPLICIT: &[Field] = &[
+    f("form.spiral.beta", Spiral, "β", "angle between the axis and the line through the whorls (degrees)", real(1.0, 89.0)),
+    f("form.spiral.lambda", Spiral, "λ", "ratio of radii one turn apart (eq 1)", log(1.01, 10.0)),
+    f("form.spiral.r0", Spiral, "R₀", "distance from the axis at θ = 0 (eq 1)", log(0.01, 10.0)),
+    f("form.spiral.handedness", Spiral, "", "coiling", Kind::Choice(&["dextral", "sinistral"])),
+    f("form.whorls", Whorls, "", "whorls", int(1, 40)),
+    f("form.whorl_angle", Whorls, "", "rotation per whorl (degrees)", real(30.0, 720.0)),
+    f("form.sections", Whorls, "", "sections per whorl (between varices)", int(1, 12)),
+    f("form.surfaces", Whorls, "", "generating surfaces per section (eq 9)", int(1, 64)),
+    f("form.blending", Whorls, "", "sections blend with", Kind::Choice(&["all", "neighbours"])),
+    f("form.generator.points", Generator, "", "points (u,v,w,radius)", Kind::List { width: 4, integer: false }),
+    f("form.generator.cones", Generator, "", "cones (u₀,v₀,w₀,u₁,v₁,w₁,radius₀,radius₁,bend°,from whorl)", Kind::List { width: 10, integer: false }),
+    f("form.generator.tori", Generator, "", "tori in the uv plane (u,v,w,major radius,radius)", Kind::List { width: 5, integer: false }),
+    f("form.generator.exponent", Generator, "n", "blending exponent of the parts (eq 4)", log(1.0, 400.0)),
+    f("form.generator.pairs", Generator, "", "only these pairs of parts blend (eq 6)", Kind::List { width: 2, integer: true }),
+    f("form.varices.placement", Varices, "", "spines stand where", Kind::Choice(&["table", "pattern"])),
+    f("form.varices.spines", Varices, "σ", "spines (whorl, angle°, relative size σ; table 1)", Kind::List { width: 3, integer: false }),
+    f("form.varices.length", Varices, "", "length of a spine of σ = 1 (units of D)", log(0.05, 5.0)),
+    f("form.varices.radius", Varices, "", "radius at a spine's base", log(0.005, 1.0)),
+    f("form.varices.tip", Varices, "", "radius at the largest spine's tip (eq 12)", log(0.002, 1.0)),
+    f("form.varices.bend", Varices, "", "curve of a spine (degrees)", real(-90.0, 90.0)),
+    f("form.varices.ridge", Varices, "", "radius of the ridge joining the spines", real(0.0, 0.5)),
+    f("form.varices.bump_sets", Varices, "", "sets of bumps between two varices", int(0, 16)),
+    f("form.varices.bump_size", Varices, "s", "size of a bump", log(0.01, 1.0)),
+    f("form.varices.bump_spread", Varices, "σ", "deviation of a bump's random scale", real(0.0, 1.0)),
+    f("form.canal_spines.spines", CanalSpines, "", "canal spines (varix 1–3, σ; table 2)", Kind::List { width: 2, integer: false }),
+    f("form.canal_spines.length", CanalSpines, "", "length of a canal spine of σ = 1", log(0.05, 5.0)),
+    f("form.canal_spines.radius", CanalSpines, "", "radius at a canal spine's base", log(0.005, 1.0)),
+    f("form.opening.inside.points", Opening, "", "hollow: points (u,v,w,radius)", Kind::List { width: 4, integer: false }),
+    f("form.opening.inside.cones", Opening, "", "hollow: cones (u₀,v₀,w₀,u₁,v₁,w₁,radius₀,radius₁,bend°,from whorl)", Kind::List { width: 10, integer: false }),
+    f("form.opening.inside.tori", Opening, "", "hollow: tori (u,v,w,major radius,radius)", Kind::List { width: 5, integer: false }),
+    f("form.opening.inside.exponent", Opening, "n", "hollow: blending exponent (eq 4)", log(1.0, 400.0)),
+    f("form.opening.inside.pairs", Opening, "", "hollow: only these pairs blend (eq 6)", Kind::List { width: 2, integer: true }),
+    f("form.opening.ahead", Opening, "", "generating surfaces the hollow reaches beyond the edge", int(0, 16)),
+    f("form.resolution", Polygonization, "", "voxels along the longest side (polygonization)", int(16, 384)),
+];
+
+/// The fields every shell has, whatever its form: the pattern model, the colours, the material,
+/// the growth and the seed.
+#[rustfmt::skip]
+pub const SHELL: &[Field] = &[
     f("pattern.cells", Pattern, "", "cells along the growing edge", int(8, 2048)),
     f("pattern.iterations", Pattern, "", "iterations per row", int(1, 5000)),
     f("pattern.refinement", Pattern, "k", "refinement (k cells per cell, Δt = 1/k²)", int(1, 4)),
@@ -347,9 +390,27 @@ pub const FIELDS: &[Field] = &[
     f("seed", Seed, "", "seed of the random choices", int(0, u64::MAX)),
 ];
 
-/// The description of a key.
-pub fn field(key: &str) -> Option<&'static Field> {
-    FIELDS.iter().find(|f| f.key == key)
+/// Each form's own fields, by the form's kind; a new form adds its block here.
+const FORMS: &[(&str, &[Field])] = &[
+    ("sweep", SWEEP),
+    ("chambers", CHAMBERS),
+    ("branching", BRANCHING),
+    ("implicit", IMPLICIT),
+];
+
+/// The fields of a shell whose form is of `kind`, in the panel's order: the choice of form,
+/// the form's own fields, then those every shell has.
+pub fn fields(kind: &str) -> impl Iterator<Item = &'static Field> {
+    let own = FORMS
+        .iter()
+        .find(|(k, _)| *k == kind)
+        .map_or(&[][..], |(_, fields)| fields);
+    std::iter::once(&FORM_KIND).chain(own).chain(SHELL)
+}
+
+/// The description of `key` in a shell whose form is of `kind`.
+pub fn field(kind: &str, key: &str) -> Option<&'static Field> {
+    fields(kind).find(|f| f.key == key)
 }
 
 #[cfg(test)]
@@ -374,7 +435,7 @@ mod tests {
 
     #[test]
     fn every_range_is_sound() {
-        for f in FIELDS {
+        for f in FORM_KINDS.iter().flat_map(|k| fields(k)) {
             match f.kind {
                 Kind::Real { min, max, log } => {
                     assert!(min < max && (!log || min > 0.0), "{}", f.key)

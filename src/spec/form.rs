@@ -23,6 +23,18 @@ pub enum Form {
     Implicit(ImplicitSpec),
 }
 
+impl Form {
+    /// The name of the form's kind, as `form.kind` writes it.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Form::Sweep(_) => "sweep",
+            Form::Chambers(_) => "chambers",
+            Form::Branching(_) => "branching",
+            Form::Implicit(_) => "implicit",
+        }
+    }
+}
+
 /// Parameters of the swept surface.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

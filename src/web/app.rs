@@ -18,7 +18,7 @@ use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
 use crate::spec::ShellSpec;
-use crate::spec::fields::Group;
+use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
@@ -56,7 +56,9 @@ fn say(problems: &[Problem]) {
 /// Whether dragging the field `key` previews the whole pattern: a field of the pattern model
 /// (the colours and the seed have no sliders).
 fn previews(key: &str) -> bool {
-    crate::spec::fields::field(key).is_some_and(|f| f.group == Group::Pattern)
+    SHELL
+        .iter()
+        .any(|f| f.key == key && f.section == Section::Pattern)
 }
 
 fn location_hash() -> String {
@@ -243,7 +245,10 @@ impl App {
         let Some((_, spec)) = &mut self.current else {
             return;
         };
-        let field = crate::spec::fields::field("growth.speed").map(|f| f.kind);
+        let field = SHELL
+            .iter()
+            .find(|f| f.key == "growth.speed")
+            .map(|f| f.kind);
         let speed = match field {
             Some(crate::spec::fields::Kind::Real { min, max, .. }) => speed.clamp(min, max),
             _ => speed,

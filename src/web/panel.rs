@@ -7,7 +7,7 @@
 use super::dom::{append, attr, clear, create, typed};
 use crate::share::link::{flatten, format_value};
 use crate::spec::ShellSpec;
-use crate::spec::fields::{FIELDS, Field, Group, Kind, display};
+use crate::spec::fields::{Field, Kind, Section, display, fields};
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::rc::Rc;
@@ -46,8 +46,7 @@ pub struct Panel {
 /// The fields the spec has, in table order.
 fn present(spec: &ShellSpec) -> (Vec<&'static Field>, BTreeMap<String, Value>) {
     let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
-    let fields = FIELDS
-        .iter()
+    let fields = fields(spec.form.kind())
         .filter(|f| leaves.contains_key(f.key) && !ELSEWHERE.contains(&f.key))
         .collect();
     (fields, leaves)
@@ -150,17 +149,17 @@ impl Panel {
         clear(container);
         let (fields, leaves) = present(spec);
         let mut controls = Vec::new();
-        let mut group: Option<(Group, Element)> = None;
+        let mut group: Option<(Section, Element)> = None;
         for field in fields {
-            if group.as_ref().map(|g| g.0) != Some(field.group) {
+            if group.as_ref().map(|g| g.0) != Some(field.section) {
                 let details = create("details", "params", None);
                 attr(&details, "open", "");
                 append(
                     &details,
-                    &[&create("summary", "", Some(field.group.title()))],
+                    &[&create("summary", "", Some(field.section.title()))],
                 );
                 append(container, &[&details]);
-                group = Some((field.group, details.into()));
+                group = Some((field.section, details.into()));
             }
             let row = create("div", "field", None);
             attr(&row, "data-key", field.key);

@@ -105,3 +105,22 @@ test('bad implicit numbers in a link get a message naming the key, and the shell
     await close();
   }
 });
+
+test('the implicit panel has one section per concept and its own ranges (R₀ > 0)', async () => {
+  const { browser, base, close } = await session();
+  try {
+    const { page, errors } = await open(browser, `${base}#v=1&preset=implicit-whorl&form.resolution=48`);
+    await waitForState(page, ['growing', 'grown']);
+    const sections = await page.$$eval('details.params summary', (s) => s.map((x) => x.textContent));
+    assert.equal(new Set(sections).size, sections.length, `a section comes twice: ${sections}`);
+    for (const s of ['Helico-spiral', 'Whorls and sections', 'Generating surface', 'Opening', 'Polygonization']) {
+      assert.ok(sections.includes(s), `${s} in ${sections}`);
+    }
+    const r0 = page.locator('[data-key="form.spiral.r0"] input[type=number]');
+    assert.ok(Number(await r0.getAttribute('min')) > 0, 'R₀ starts above 0');
+    assert.equal(await page.locator('[data-key="form.curve.points"]').count(), 0, 'no sweep fields');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
