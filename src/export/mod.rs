@@ -6,7 +6,7 @@ pub mod obj;
 pub mod ply;
 pub mod png;
 pub mod stl;
-pub mod weld;
+pub(crate) mod weld;
 
 use crate::mesh::Mesh;
 

@@ -2,19 +2,19 @@
 //! §3): every model implements [`EdgeModel`], "advance the growing edge by one row", and the
 //! rows stacked in time are the pattern.
 
-pub mod activator_inhibitor;
-pub mod activator_substrate;
+pub(crate) mod activator_inhibitor;
+pub(crate) mod activator_substrate;
 pub mod automaton;
-pub mod automaton_rule;
-pub mod coupled;
-pub mod diffusion;
-pub mod edge_model;
-pub mod grid;
-pub mod noise;
-pub mod repair;
+pub(crate) mod automaton_rule;
+pub(crate) mod coupled;
+pub(crate) mod diffusion;
+pub(crate) mod edge_model;
+pub(crate) mod grid;
+pub(crate) mod noise;
+pub(crate) mod repair;
 pub mod run;
-pub mod stability;
-pub mod starts;
+pub(crate) mod stability;
+pub(crate) mod starts;
 pub mod texture_layout;
 
 use crate::spec::pattern::{Model, PatternSpec};

@@ -3,13 +3,13 @@
 
 pub mod branching;
 pub mod chambers;
-pub mod colour;
+pub(crate) mod colour;
 pub mod fields;
 pub mod form;
 pub mod implicit;
-pub mod material;
+pub(crate) mod material;
 pub mod pattern;
-pub mod problem;
+pub(crate) mod problem;
 
 use colour::Rgb;
 use form::Form;

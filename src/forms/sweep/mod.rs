@@ -2,11 +2,11 @@
 //! reparametrized by arc length) laid on a frame of the helico-spiral, sculptured, swept rim by
 //! rim into a mesh.
 
-pub mod arc_length;
-pub mod bezier_curve;
+pub(crate) mod arc_length;
+pub(crate) mod bezier_curve;
 pub mod frame;
 pub mod helico_spiral;
 pub(crate) mod repair;
-pub mod sculpture;
+pub(crate) mod sculpture;
 pub mod surface;
-pub mod sweep_mesh;
+pub(crate) mod sweep_mesh;

@@ -2,7 +2,7 @@
 //! three-dimensional small chambers" and "Relationship between two flat surfaces"): the mouth
 //! polygon, the similarity from chamber to chamber, and the polyhedral mesh.
 
-pub mod chamber_mesh;
+pub(crate) mod chamber_mesh;
 pub mod chamber_stack;
-pub mod mouth;
+pub(crate) mod mouth;
 pub(crate) mod repair;
