@@ -15,7 +15,8 @@ use seashells_core::presets::preset;
 use seashells_core::share::link::decode;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::chambers::{ChambersSpec, Look, Triple};
-use seashells_core::spec::form::{Form, Handedness};
+use seashells_core::spec::form::Form;
+use seashells_core::spec::handedness::Handedness;
 
 fn spec_of(id: &str) -> ShellSpec {
     preset(id).expect("preset").spec.clone()
@@ -79,7 +80,7 @@ proptest! {
         let s = stack(&c);
         let similarity = s.similarity();
         let shown = |frame, kind| -> Vec<DVec3> {
-            s.ring(&frame, kind).into_iter().map(|p| s.mirror(p)).collect()
+            s.ring(&frame, kind).into_iter().map(|p| s.handedness().mirror(p)).collect()
         };
         for k in 0..c.chambers as usize - 1 {
             for kind in [RingKind::Bottom, RingKind::Top] {

@@ -15,7 +15,8 @@ use seashells_core::generator::Generator;
 use seashells_core::presets::preset;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::FrameMode;
-use seashells_core::spec::form::{Form, Handedness, RibSpec, SweepSpec};
+use seashells_core::spec::form::{Form, RibSpec, SweepSpec};
+use seashells_core::spec::handedness::Handedness;
 use std::collections::HashMap;
 
 fn turbinate() -> ShellSpec {

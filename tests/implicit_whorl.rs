@@ -11,7 +11,7 @@ use seashells_core::forms::murex::implicit_whorl::{Helix, MAX_RESOLUTION};
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::presets::{self, Group};
-use seashells_core::spec::form::Handedness;
+use seashells_core::spec::handedness::Handedness;
 use seashells_core::spec::implicit::{HelixSpec, ImplicitSpec};
 use std::f64::consts::TAU;
 

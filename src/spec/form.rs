@@ -5,6 +5,7 @@
 
 use super::branching::BranchingSpec;
 use super::chambers::ChambersSpec;
+use super::handedness::Handedness;
 use super::implicit::ImplicitSpec;
 use serde::{Deserialize, Serialize};
 
@@ -47,16 +48,6 @@ pub struct SweepSpec {
     pub sculpture: SculptureSpec,
     #[serde(default)]
     pub wall: WallSpec,
-}
-
-/// Coiling direction, seen with the apex up and the aperture facing the viewer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Handedness {
-    /// Right-handed: the aperture opens on the right.
-    Dextral,
-    /// Left-handed: the mirror image.
-    Sinistral,
 }
 
 /// The helico-spiral 𝓗 (eqs 1–2).

@@ -6,6 +6,7 @@ pub mod chambers;
 pub(crate) mod colour;
 pub mod fields;
 pub mod form;
+pub mod handedness;
 pub mod implicit;
 pub(crate) mod material;
 pub mod pattern;

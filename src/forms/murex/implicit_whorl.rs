@@ -21,7 +21,7 @@ use crate::blobtree::texture_blend::Texture;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
-use crate::spec::form::Handedness;
+use crate::spec::handedness::Handedness;
 use crate::spec::implicit::{Blending, GeneratorSpec, HelixSpec, ImplicitSpec, Placement};
 use crate::spec::pattern::PatternSpec;
 use glam::{DAffine3, DMat3, DVec3};
@@ -42,8 +42,7 @@ pub struct Helix {
     cot_beta: f64,
     /// D / R (eq 3).
     size: f64,
-    /// +1 dextral, −1 sinistral (the y axis mirrored).
-    mirror: f64,
+    handedness: Handedness,
 }
 
 impl Helix {
@@ -54,10 +53,7 @@ impl Helix {
             lambda: spec.lambda,
             cot_beta: libm::cos(beta) / libm::sin(beta),
             size: (spec.lambda - 1.0) / ((spec.lambda + 1.0) * libm::sin(beta)),
-            mirror: match spec.handedness {
-                Handedness::Dextral => 1.0,
-                Handedness::Sinistral => -1.0,
-            },
+            handedness: spec.handedness,
         }
     }
 
@@ -78,7 +74,8 @@ impl Helix {
 
     /// The growth direction at θ: the w axis of the generating surface.
     pub fn growth_direction(&self, theta: f64) -> DVec3 {
-        DVec3::new(-libm::sin(theta), libm::cos(theta) * self.mirror, 0.0)
+        self.handedness
+            .mirror(DVec3::new(-libm::sin(theta), libm::cos(theta), 0.0))
     }
 
     /// P(·, θ) of eq 8: scale by D(θ), then carry the generating surface's u (towards the
@@ -88,11 +85,13 @@ impl Helix {
         let (s, c) = (libm::sin(theta), libm::cos(theta));
         let d = self.size(theta);
         let r = self.radius(theta);
-        let u = DVec3::new(-c, -s * self.mirror, 0.0);
+        let u = self.handedness.mirror(DVec3::new(-c, -s, 0.0));
         let w = self.growth_direction(theta);
         DAffine3 {
             matrix3: DMat3::from_cols(u * d, DVec3::NEG_Z * d, w * d),
-            translation: DVec3::new(r * c, r * s * self.mirror, self.height(theta)),
+            translation: self
+                .handedness
+                .mirror(DVec3::new(r * c, r * s, self.height(theta))),
         }
     }
 }

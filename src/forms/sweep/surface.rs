@@ -18,7 +18,8 @@ use super::helico_spiral::{HelicoSpiral, SpiralPoint};
 use super::sculpture;
 use crate::shape::ShapeError;
 use crate::spec::form::FrameMode;
-use crate::spec::form::{Handedness, SculptureSpec, SweepSpec, WallSpec};
+use crate::spec::form::{SculptureSpec, SweepSpec, WallSpec};
+use crate::spec::handedness::Handedness;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
@@ -98,7 +99,7 @@ pub struct Sweep {
     closed: bool,
     /// +1 when ∂P/∂s × ∂P/∂t points out of the shell, −1 otherwise.
     orientation: f64,
-    sinistral: bool,
+    handedness: Handedness,
 }
 
 impl Sweep {
@@ -181,7 +182,7 @@ impl Sweep {
             columns,
             closed: curve.is_closed(),
             orientation,
-            sinistral: s.handedness == Handedness::Sinistral,
+            handedness: s.handedness,
         })
     }
 
@@ -219,8 +220,8 @@ impl Sweep {
         self.orientation
     }
 
-    pub fn is_sinistral(&self) -> bool {
-        self.sinistral
+    pub fn handedness(&self) -> Handedness {
+        self.handedness
     }
 
     /// Whether the wall has a thickness (an inner surface exists).

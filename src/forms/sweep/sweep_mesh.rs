@@ -49,18 +49,10 @@ impl SweepMesh {
         })
     }
 
-    fn mirror(&self, p: DVec3) -> DVec3 {
-        if self.sweep.is_sinistral() {
-            DVec3::new(p.x, -p.y, p.z)
-        } else {
-            p
-        }
-    }
-
     fn vertex(&self, p: DVec3, n: DVec3, j: usize, row: f64, surface: Surface) -> Vertex {
         Vertex::new(
-            self.mirror(p),
-            self.mirror(n),
+            self.sweep.handedness().mirror(p),
+            self.sweep.handedness().mirror(n),
             [self.sweep.edge_coordinate(j), row],
             surface,
         )
@@ -69,7 +61,7 @@ impl SweepMesh {
     /// Whether triangles whose geometric normal is ∂P/∂s × ∂P/∂t-like must be reversed to face
     /// `outwards` (true) or inwards; mirroring reverses everything once more.
     fn flip(&self, outwards: bool) -> bool {
-        ((self.sweep.orientation() < 0.0) == outwards) != self.sweep.is_sinistral()
+        ((self.sweep.orientation() < 0.0) == outwards) != self.sweep.handedness().is_sinistral()
     }
 
     /// Pushes a ring of rim points (outer or inner). On a closed curve the last point is
@@ -139,7 +131,7 @@ impl SweepMesh {
             let c = mesh.next_index();
             mesh.vertices.push(Vertex::new(
                 centre,
-                self.mirror(facing),
+                self.sweep.handedness().mirror(facing),
                 [0.5, 0.0],
                 surface,
             ));
@@ -219,7 +211,7 @@ impl GrowingShape for SweepMesh {
         for t in std::iter::once(0.0).chain(ts) {
             let rim = self.sweep.rim_at(t);
             for p in &rim.points {
-                bounds.include(self.mirror(p.position));
+                bounds.include(self.sweep.handedness().mirror(p.position));
             }
         }
         bounds
@@ -228,7 +220,7 @@ impl GrowingShape for SweepMesh {
     fn front(&self) -> DVec3 {
         let rim = self.sweep.rim_at(self.sweep.t_max());
         let facing: DVec3 = rim.points.iter().map(|p| p.along_t).sum();
-        self.mirror(facing)
+        self.sweep.handedness().mirror(facing)
     }
 
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool {

@@ -95,8 +95,8 @@ impl ChamberMesh {
 
     fn vertex(&self, p: DVec3, n: DVec3, x: f64, row: f64, surface: Surface) -> Vertex {
         Vertex::new(
-            self.stack.mirror(p),
-            self.stack.mirror(n),
+            self.stack.handedness().mirror(p),
+            self.stack.handedness().mirror(n),
             [x, row],
             surface,
         )
@@ -126,7 +126,7 @@ impl ChamberMesh {
     fn band(&self, mesh: &mut Mesh, [below_a, a, b, above_b]: [&Ring; 4], surface: Surface) {
         let n = a.points.len();
         // Mirroring reverses the winding once more.
-        let flip = self.inward != self.stack.is_sinistral();
+        let flip = self.inward != self.stack.handedness().is_sinistral();
         let x = |j: usize| j as f64 / n as f64;
         match self.look {
             Look::Faceted => {
@@ -184,7 +184,7 @@ impl ChamberMesh {
         let area: DVec3 = (0..n)
             .map(|j| (ring.points[j] - centre).cross(ring.points[(j + 1) % n] - centre))
             .sum();
-        let flip = (area.dot(facing) < 0.0) != self.stack.is_sinistral();
+        let flip = (area.dot(facing) < 0.0) != self.stack.handedness().is_sinistral();
         for j in 0..n as u32 {
             mesh.triangle([c, c + 1 + j, c + 1 + (j + 1) % n as u32], flip);
         }
@@ -253,6 +253,7 @@ impl GrowingShape for ChamberMesh {
     fn front(&self) -> DVec3 {
         let last = self.stack.frame(self.stack.chambers() - 1);
         self.stack
+            .handedness()
             .mirror(self.stack.growth_direction(&last, RingKind::Top))
     }
 

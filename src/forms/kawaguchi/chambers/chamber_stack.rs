@@ -23,7 +23,7 @@ use super::mouth::mouth_polygon;
 use crate::mesh::Bounds;
 use crate::shape::ShapeError;
 use crate::spec::chambers::{ChamberSpec, ChambersSpec};
-use crate::spec::form::Handedness;
+use crate::spec::handedness::Handedness;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 
 /// Where a septum's suture band ends, as a fraction of the chamber's width from its bottom base.
@@ -66,7 +66,7 @@ pub struct ChamberStack {
     chambers: usize,
     adjoining: bool,
     septa: bool,
-    sinistral: bool,
+    handedness: Handedness,
 }
 
 impl ChamberStack {
@@ -136,7 +136,7 @@ impl ChamberStack {
             chambers: spec.chambers as usize,
             adjoining: shift == DVec3::ZERO,
             septa: spec.septa,
-            sinistral: spec.handedness == Handedness::Sinistral,
+            handedness: spec.handedness,
         })
     }
 
@@ -210,24 +210,15 @@ impl ChamberStack {
         }
     }
 
-    /// Whether the stack is mirrored (left-handed).
-    pub fn is_sinistral(&self) -> bool {
-        self.sinistral
-    }
-
-    /// A point or direction of shell space as the handedness shows it.
-    pub fn mirror(&self, p: DVec3) -> DVec3 {
-        if self.sinistral {
-            DVec3::new(p.x, -p.y, p.z)
-        } else {
-            p
-        }
+    /// How the stack coils: how it is mirrored when shown.
+    pub fn handedness(&self) -> Handedness {
+        self.handedness
     }
 
     /// The similarity of shell space (mirrored as shown) that carries every chamber onto the
     /// next.
     pub fn similarity(&self) -> DAffine3 {
-        let mirror = DAffine3::from_scale(self.mirror(DVec3::ONE));
+        let mirror = DAffine3::from_scale(self.handedness.mirror(DVec3::ONE));
         mirror * self.placement * self.period * self.placement.inverse() * mirror
     }
 
@@ -236,11 +227,11 @@ impl ChamberStack {
         let mut bounds = Bounds::EMPTY;
         let mut frame = self.first_frame();
         for p in self.ring(&frame, RingKind::Bottom) {
-            bounds.include(self.mirror(p));
+            bounds.include(self.handedness.mirror(p));
         }
         for _ in 0..self.chambers {
             for p in self.ring(&frame, RingKind::Top) {
-                bounds.include(self.mirror(p));
+                bounds.include(self.handedness.mirror(p));
             }
             frame = self.next_frame(&frame);
         }
