@@ -8,7 +8,7 @@
 
 use crate::blobtree::falloff::ISO;
 use crate::blobtree::polygonizer::{Grid, polygonize};
-use crate::forms::murex::implicit_whorl::whorl;
+use crate::forms::murex::whorl::whorl;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;
 use crate::presets::{Preset, presets};

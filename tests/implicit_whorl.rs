@@ -7,7 +7,8 @@ mod common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit};
 use glam::DVec3;
-use seashells_core::forms::murex::implicit_whorl::{Helix, MAX_RESOLUTION};
+use seashells_core::forms::murex::check::MAX_RESOLUTION;
+use seashells_core::forms::murex::helix::Helix;
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::presets::{self, Group};

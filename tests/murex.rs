@@ -23,7 +23,8 @@ mod common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit, signed_volume};
 use glam::DVec3;
-use seashells_core::forms::murex::implicit_whorl::{Instances, Whorl, whorl};
+use seashells_core::forms::murex::helix::Instances;
+use seashells_core::forms::murex::whorl::{Whorl, whorl};
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::presets;

@@ -897,7 +897,7 @@ pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::forms::murex::implicit_whorl::whorl;
+    use crate::forms::murex::whorl::whorl;
     use crate::presets::presets;
     use crate::spec::form::Form;
 

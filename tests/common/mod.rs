@@ -2,7 +2,7 @@
 #![allow(dead_code)]
 
 use glam::DVec3;
-use seashells_core::forms::murex::implicit_whorl::check;
+use seashells_core::forms::murex::check::check;
 use seashells_core::mesh::Mesh;
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;

@@ -5,7 +5,7 @@
 //! spine), since spines in nature are not straight. Coordinates are the generating surface's,
 //! in units of D.
 
-use super::implicit_whorl::cone_frame;
+use super::generating_surface::cone_frame;
 use crate::blobtree::bend::Bend;
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::support_of;

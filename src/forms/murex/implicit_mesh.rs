@@ -5,7 +5,7 @@
 //! closed surface. A chunk that no later instance reaches is final and moves to the permanent
 //! mesh; the others, still open to change, make up the transient edge mesh.
 
-use super::implicit_whorl::{Whorl, whorl};
+use super::whorl::{Whorl, whorl};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::polygonizer::{
     ChunkCache, ChunkIndex, Grid, Memory, Scratch, Seams, mesh_chunk, surface_box,

@@ -6,7 +6,12 @@
 
 pub mod bumps;
 pub mod canal_spines;
+pub mod check;
+pub(crate) mod generating_surface;
+pub mod helix;
 pub mod implicit_mesh;
-pub mod implicit_whorl;
+pub(crate) mod opening;
 pub(crate) mod repair;
+pub(crate) mod sections;
 pub mod varix;
+pub mod whorl;

@@ -2,7 +2,7 @@
 //! violation repaired from the fallback's part it concerns, and spines placed by a pattern only
 //! where there is one.
 
-use super::implicit_whorl::check;
+use super::check::check;
 use crate::spec::implicit::{ImplicitSpec, Placement};
 use crate::spec::pattern::{Model, PatternSpec};
 use crate::spec::problem::Problem;

@@ -1,0 +1,304 @@
+//! What the numbers of an implicit shell must satisfy for its BlobTree to be built, and the
+//! caps that keep any shell within memory and time; each refusal names its key.
+
+use crate::blobtree::bend::MAX_BEND_DEGREES;
+use crate::blobtree::falloff::support_of;
+use crate::shape::ShapeError;
+use crate::spec::implicit::{GeneratorSpec, ImplicitSpec};
+use glam::DVec3;
+
+/// Most generating surfaces (growth steps) in one shell.
+pub const MAX_INSTANCES: u64 = 5_000;
+/// Most voxels along the longest side: 384³ samples at most.
+pub const MAX_RESOLUTION: u32 = 384;
+/// Fewest voxels along the longest side that still show a whorl.
+pub const MIN_RESOLUTION: u32 = 16;
+
+/// Checks what the numbers must satisfy for the tree to be built.
+pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
+    let h = &spec.spiral;
+    if h.lambda <= 1.0 || h.lambda.is_nan() {
+        return Err(ShapeError::new(
+            "form.spiral.lambda",
+            format!("λ must exceed 1 (whorls grow), not {}", h.lambda),
+        ));
+    }
+    if !(h.beta > 0.0 && h.beta < 90.0) {
+        return Err(ShapeError::new(
+            "form.spiral.beta",
+            format!("β must lie strictly between 0° and 90°, not {}°", h.beta),
+        ));
+    }
+    if h.r0 <= 0.0 || h.r0.is_nan() {
+        return Err(ShapeError::new(
+            "form.spiral.r0",
+            format!("R₀ must be positive, not {}", h.r0),
+        ));
+    }
+    if spec.whorls == 0 || spec.sections == 0 || spec.surfaces == 0 {
+        return Err(ShapeError::new(
+            "form.whorls",
+            "whorls, sections and surfaces must each be at least 1",
+        ));
+    }
+    let instances = u64::from(spec.whorls) * u64::from(spec.sections) * u64::from(spec.surfaces);
+    if instances > MAX_INSTANCES {
+        return Err(ShapeError::new(
+            "form.surfaces",
+            format!(
+                "{} whorls × {} sections × {} surfaces make {instances} generating surfaces, more than the cap of {MAX_INSTANCES}",
+                spec.whorls, spec.sections, spec.surfaces
+            ),
+        ));
+    }
+    if spec.whorl_angle <= 0.0 || spec.whorl_angle.is_nan() {
+        return Err(ShapeError::new(
+            "form.whorl_angle",
+            format!(
+                "the angle of a whorl must be positive, not {}°",
+                spec.whorl_angle
+            ),
+        ));
+    }
+    if !(MIN_RESOLUTION..=MAX_RESOLUTION).contains(&spec.resolution) {
+        return Err(ShapeError::new(
+            "form.resolution",
+            format!(
+                "the resolution must lie from {MIN_RESOLUTION} to the cap of {MAX_RESOLUTION} voxels, not {}",
+                spec.resolution
+            ),
+        ));
+    }
+    check_generator(&spec.generator, "form.generator")?;
+    check_varices(spec)?;
+    check_canal_spines(spec)?;
+    let o = &spec.opening;
+    if o.ahead > MAX_AHEAD {
+        return Err(ShapeError::new(
+            "form.opening.ahead",
+            format!(
+                "the hollow may reach at most {MAX_AHEAD} generating surfaces ahead, not {}",
+                o.ahead
+            ),
+        ));
+    }
+    if parts(&o.inside) > 0 {
+        check_generator(&o.inside, "form.opening.inside")?;
+    }
+    Ok(())
+}
+
+/// Most spines in the table of a varix's spines, and in the canal spines' table.
+pub const MAX_SPINES: usize = 1024;
+/// Most sets of bumps between two varices.
+pub const MAX_BUMP_SETS: u32 = 16;
+/// Most generating surfaces the hollow reaches ahead of the growing edge.
+pub const MAX_AHEAD: u32 = 16;
+
+fn parts(g: &GeneratorSpec) -> usize {
+    g.points.len() + g.cones.len() + g.tori.len()
+}
+
+fn positive(key: &str, x: f64, what: &str) -> Result<(), ShapeError> {
+    if x > 0.0 && x.is_finite() {
+        Ok(())
+    } else {
+        Err(ShapeError::new(
+            key,
+            format!("{what} must be positive, not {x}"),
+        ))
+    }
+}
+
+fn check_varices(spec: &ImplicitSpec) -> Result<(), ShapeError> {
+    let v = &spec.varices;
+    if v.spines.len() > MAX_SPINES {
+        return Err(ShapeError::new(
+            "form.varices.spines",
+            format!(
+                "{} spines are more than the cap of {MAX_SPINES}",
+                v.spines.len()
+            ),
+        ));
+    }
+    for &[whorl, angle, sigma] in &v.spines {
+        if !(whorl >= 1.0 && whorl <= f64::from(spec.whorls) && whorl.fract() == 0.0) {
+            return Err(ShapeError::new(
+                "form.varices.spines",
+                format!(
+                    "a spine's whorl must be a whole number from 1 to {}, not {whorl}",
+                    spec.whorls
+                ),
+            ));
+        }
+        if !(-180.0..=180.0).contains(&angle) {
+            return Err(ShapeError::new(
+                "form.varices.spines",
+                format!("a spine's angle must lie from −180° to 180°, not {angle}°"),
+            ));
+        }
+        if !(sigma > 0.0 && sigma <= 10.0) {
+            return Err(ShapeError::new(
+                "form.varices.spines",
+                format!("a spine's relative size σ must lie in (0, 10], not {sigma}"),
+            ));
+        }
+    }
+    positive("form.varices.length", v.length, "the spines' length")?;
+    positive("form.varices.radius", v.radius, "the spines' radius")?;
+    positive("form.varices.tip", v.tip, "the spines' tip radius")?;
+    positive("form.varices.bump_size", v.bump_size, "the bumps' size")?;
+    if v.bend.is_nan() || v.bend.abs() > MAX_BEND_DEGREES {
+        return Err(ShapeError::new(
+            "form.varices.bend",
+            format!(
+                "a spine may curve by at most {MAX_BEND_DEGREES}°, not {}°",
+                v.bend
+            ),
+        ));
+    }
+    if !(v.ridge >= 0.0 && v.ridge.is_finite()) {
+        return Err(ShapeError::new(
+            "form.varices.ridge",
+            format!(
+                "the ridge's radius must be 0 (none) or positive, not {}",
+                v.ridge
+            ),
+        ));
+    }
+    if v.bump_sets > MAX_BUMP_SETS {
+        return Err(ShapeError::new(
+            "form.varices.bump_sets",
+            format!(
+                "at most {MAX_BUMP_SETS} sets of bumps fit between two varices, not {}",
+                v.bump_sets
+            ),
+        ));
+    }
+    if !(0.0..=1.0).contains(&v.bump_spread) {
+        return Err(ShapeError::new(
+            "form.varices.bump_spread",
+            format!(
+                "the bumps' spread must lie from 0 to 1, not {}",
+                v.bump_spread
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn check_canal_spines(spec: &ImplicitSpec) -> Result<(), ShapeError> {
+    let c = &spec.canal_spines;
+    if c.spines.len() > MAX_SPINES {
+        return Err(ShapeError::new(
+            "form.canal_spines.spines",
+            format!(
+                "{} canal spines are more than the cap of {MAX_SPINES}",
+                c.spines.len()
+            ),
+        ));
+    }
+    for &[varix, sigma] in &c.spines {
+        if ![1.0, 2.0, 3.0].contains(&varix) {
+            return Err(ShapeError::new(
+                "form.canal_spines.spines",
+                format!(
+                    "a canal spine stands below varix 1, 2 or 3 (the last three, 3 at the opening), not {varix}"
+                ),
+            ));
+        }
+        if !(sigma > 0.0 && sigma <= 10.0) {
+            return Err(ShapeError::new(
+                "form.canal_spines.spines",
+                format!("a canal spine's relative size σ must lie in (0, 10], not {sigma}"),
+            ));
+        }
+    }
+    if !c.spines.is_empty() && spec.generator.cones.is_empty() {
+        return Err(ShapeError::new(
+            "form.canal_spines.spines",
+            "canal spines stand on the canal: the generating surface needs a cone for it",
+        ));
+    }
+    if !c.spines.is_empty() && spec.varices.spines.is_empty() {
+        return Err(ShapeError::new(
+            "form.canal_spines.spines",
+            "canal spines stand below varices: give the varices spines",
+        ));
+    }
+    positive(
+        "form.canal_spines.length",
+        c.length,
+        "the canal spines' length",
+    )?;
+    positive(
+        "form.canal_spines.radius",
+        c.radius,
+        "the canal spines' radius",
+    )
+}
+
+/// Checks the generating surface `g`, whose keys start with `prefix`.
+fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), ShapeError> {
+    let parts = parts(g);
+    let key = |k: &str| format!("{prefix}.{k}");
+    if parts == 0 {
+        return Err(ShapeError::new(
+            key("points"),
+            "the generating surface needs at least one primitive",
+        ));
+    }
+    for p in &g.points {
+        positive(&key("points"), p[3], "a point's radius")?;
+    }
+    for c in &g.cones {
+        positive(&key("cones"), c[6], "a cone's radius")?;
+        positive(&key("cones"), c[7], "a cone's radius")?;
+        let length = DVec3::new(c[3] - c[0], c[4] - c[1], c[5] - c[2]).length();
+        positive(&key("cones"), length, "a cone's length")?;
+        if c[8].abs() > MAX_BEND_DEGREES {
+            return Err(ShapeError::new(
+                key("cones"),
+                format!(
+                    "a cone may bend by at most {MAX_BEND_DEGREES}°, not {}°",
+                    c[8]
+                ),
+            ));
+        }
+        if support_of(c[6].max(c[7])) * c[8].abs().to_radians() >= length {
+            return Err(ShapeError::new(
+                key("cones"),
+                format!(
+                    "a cone of length {length} bent by {}° is too thick for its bend: its field would fold over the centre of curvature",
+                    c[8]
+                ),
+            ));
+        }
+    }
+    for t in &g.tori {
+        positive(&key("tori"), t[3], "a torus's major radius")?;
+        positive(&key("tori"), t[4], "a torus's radius")?;
+    }
+    if !(g.exponent >= 1.0 && g.exponent <= 400.0) {
+        return Err(ShapeError::new(
+            key("exponent"),
+            format!(
+                "the blending exponent n must lie from 1 to 400, not {}",
+                g.exponent
+            ),
+        ));
+    }
+    if let Some([i, k]) = g
+        .pairs
+        .iter()
+        .find(|[i, k]| i == k || *i as usize >= parts || *k as usize >= parts)
+    {
+        return Err(ShapeError::new(
+            key("pairs"),
+            format!(
+                "the pair ({i}, {k}) must name two different parts of the {parts} the generating surface has (numbered from 0: points, then cones, then tori)"
+            ),
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,217 @@
+//! A whole shell as a BlobTree (Galbraith, Prusinkiewicz & Wyvill §2.1 and §3.1): the generating
+//! surface is placed along the helico-spiral by P(B, θ) (eq 8), its instances blend into
+//! sections (eq 9), and the sections combine by blending or by controlled blending with their
+//! neighbours only (eq 10). Each instance is one growth step.
+//!
+//! The helix is in `helix.rs`, the generating surface in `generating_surface.rs`, sections in
+//! `sections.rs`, the hollow in `opening.rs`; this module places the varices, their spines,
+//! the bumps and the canal spines, and joins it all.
+
+use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
+use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
+use super::check::check;
+use super::helix::Instances;
+use super::opening::inside;
+use super::sections::{Gathered, joined, sections};
+use super::varix::{Standing, pattern_spines, pigment_at, standing, table_spines, varix};
+use crate::blobtree::blob_tree::Node;
+use crate::mesh::Bounds;
+use crate::pattern::noise::Noise;
+use crate::shape::ShapeError;
+use crate::spec::implicit::{ImplicitSpec, Placement};
+use crate::spec::pattern::PatternSpec;
+use glam::DVec3;
+
+/// The BlobTree of a whole shell, with what growing it needs.
+pub struct Whorl {
+    pub tree: Node,
+    /// Generating surfaces placed: one growth step each.
+    pub instances: u32,
+    /// The box of each instance's field, by growth step: where adding it changes the shell.
+    pub reach: Vec<Bounds>,
+    /// The direction the opening faces.
+    pub front: DVec3,
+    /// What stands on each varix, from the apex to the opening.
+    pub varices: Vec<Varix>,
+}
+
+/// One varix as built: where it stands and its spines.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Varix {
+    /// The instance (growth step) it closes.
+    pub instance: u32,
+    /// Its spines, each where its angle meets the surface.
+    pub spines: Vec<Standing>,
+    /// Spines in the canal row below it.
+    pub canal_spines: usize,
+}
+
+/// Voxels a spine, a ridge or a canal spine is at least thick (as a radius), so that the
+/// polygonizer shows it joined to the shell; bumps thinner than that are left out.
+pub const THINNEST_VOXELS: f64 = 1.0;
+
+/// The shell of `spec` as one BlobTree (eqs 9–15), instance k carrying growth time
+/// k·(rows − 1)/(K − 1). Spines placed by the pattern read the pigment of `pattern` (seeded
+/// by `seed`) on the row each varix forms on; bumps and canal spines take their random
+/// sizes and bends from `seed`.
+pub fn whorl(
+    spec: &ImplicitSpec,
+    pattern: &PatternSpec,
+    seed: u64,
+    rows: usize,
+) -> Result<Whorl, ShapeError> {
+    check(spec)?;
+    let instances = Instances::new(spec, rows);
+    let count = instances.count;
+    let mut gathered = Gathered {
+        reach: vec![Bounds::EMPTY; count as usize],
+    };
+    let mut sections = sections(
+        &spec.generator,
+        &instances,
+        (0..count).map(|k| (k, 1.0)),
+        spec.surfaces,
+        0,
+        &mut gathered,
+    );
+    let body = joined(
+        spec.blending,
+        sections.iter().map(|s| s.1.clone()).collect(),
+        Vec::new(),
+    );
+    let v = &spec.varices;
+    let sigma_max = v.spines.iter().map(|s| s[2]).fold(0.0, f64::max);
+    // The voxel the grown shell will be polygonized with: its extent, with the longest spine.
+    let last = f64::from(count - 1);
+    let reach = (v.length * sigma_max).max(spec.canal_spines.length) * instances.size(last);
+    let voxel = (body.bounds.max - body.bounds.min + 2.0 * reach).max_element()
+        / f64::from(spec.resolution);
+    let thinnest = |k: f64| THINNEST_VOXELS * voxel / instances.size(k);
+    // A varix closes every section (at its last instance), when the spec has spines.
+    let varix_rows: Vec<u32> = if v.spines.is_empty() {
+        Vec::new()
+    } else {
+        (1..=spec.whorls * spec.sections)
+            .map(|i| i * spec.surfaces - 1)
+            .collect()
+    };
+    let pigment = match v.placement {
+        Placement::Pattern if !v.spines.is_empty() => pigment_at(
+            pattern,
+            seed,
+            &varix_rows
+                .iter()
+                .map(|&k| instances.time(f64::from(k)).round() as usize)
+                .collect::<Vec<_>>(),
+        )?,
+        _ => Vec::new(),
+    };
+    let mut parts = Vec::new();
+    let mut varices = Vec::new();
+    let mut bump_noise = Noise::new(seed, BUMP_STREAM);
+    let mut canal_noise = Noise::new(seed, CANAL_STREAM);
+    let section_of = |k: u32| sections.iter().position(|s| s.0 == k / spec.surfaces);
+    let mut extra: Vec<Vec<Node>> = vec![Vec::new(); sections.len()];
+    for (i, &k) in varix_rows.iter().enumerate() {
+        let kf = f64::from(k);
+        let whorl_number = k / (spec.sections * spec.surfaces) + 1;
+        let spines = match v.placement {
+            Placement::Table => table_spines(&v.spines, whorl_number),
+            Placement::Pattern => pattern_spines(&v.spines, whorl_number, &pigment[i]),
+        };
+        let at = instances.placement(kf);
+        let on_surface = standing(&body, &at, &spines);
+        let time = instances.time(kf);
+        let mut members: Vec<Node> = varix(v, &on_surface, sigma_max, thinnest(kf), time)
+            .into_iter()
+            .collect();
+        let from_opening = varix_rows.len() - i;
+        let mut canal = Vec::new();
+        if from_opening <= CANAL_VARICES {
+            let varix_number = (CANAL_VARICES + 1 - from_opening) as f64;
+            let sizes: Vec<f64> = spec
+                .canal_spines
+                .spines
+                .iter()
+                .filter(|s| s[0].round() == varix_number)
+                .map(|s| s[1])
+                .collect();
+            if let Some(cone) = spec
+                .generator
+                .cones
+                .iter()
+                .find(|c| instances.whorl(kf) >= c[9])
+            {
+                canal = canal_row(
+                    cone,
+                    &sizes,
+                    [spec.canal_spines.length, spec.canal_spines.radius],
+                    thinnest(kf),
+                    time,
+                    &mut canal_noise,
+                );
+            }
+        }
+        let canal_spines = canal.len();
+        members.extend(canal);
+        varices.push(Varix {
+            instance: k,
+            canal_spines,
+            spines: on_surface,
+        });
+        if !members.is_empty() {
+            let part = gathered.placed(at, Node::blend(members), k);
+            let with = [section_of(k), section_of(k + 1)]
+                .into_iter()
+                .flatten()
+                .collect();
+            parts.push((part, with));
+        }
+        // The bumps of the section this varix closes, in sets between it and the one before.
+        let Some(section) = section_of(k) else {
+            continue;
+        };
+        for j in 1..=v.bump_sets {
+            let kb =
+                kf - f64::from(spec.surfaces) * (1.0 - f64::from(j) / f64::from(v.bump_sets + 1));
+            if kb < 0.0 {
+                continue;
+            }
+            let at = instances.placement(kb);
+            let bumps = bump_set(
+                &standing(&body, &at, &spines),
+                v.bump_size,
+                v.bump_spread,
+                thinnest(kb),
+                instances.time(kb),
+                &mut bump_noise,
+            );
+            for bump in bumps {
+                extra[section].push(gathered.placed(at, bump, kb.round() as u32));
+            }
+        }
+    }
+    for ((_, node), bumps) in sections.iter_mut().zip(extra) {
+        if !bumps.is_empty() {
+            let whorl = std::mem::replace(node, Node::blend(Vec::new()));
+            *node =
+                Node::superelliptic(BUMP_EXPONENT, std::iter::once(whorl).chain(bumps).collect());
+        }
+    }
+    let shell = joined(
+        spec.blending,
+        sections.into_iter().map(|s| s.1).collect(),
+        parts,
+    );
+    let tree = match inside(spec, &instances, voxel, &mut gathered) {
+        Some(inside) => Node::difference(shell, inside),
+        None => shell,
+    };
+    Ok(Whorl {
+        tree,
+        instances: count,
+        reach: gathered.reach,
+        front: instances.growth_direction(last),
+        varices,
+    })
+}
