@@ -7,7 +7,7 @@
 //! it; frame times are the distribution of single frames, as a user sees them.
 
 use crate::blobtree::falloff::ISO;
-use crate::blobtree::polygonizer::{Grid, polygonize};
+use crate::blobtree::polygonize::{Grid, polygonize};
 use crate::forms::murex::whorl::whorl;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;

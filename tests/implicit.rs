@@ -10,7 +10,7 @@ use glam::DVec3;
 use proptest::prelude::*;
 use seashells_core::blobtree::blob_tree::{Node, superelliptic};
 use seashells_core::blobtree::falloff::{ISO, support_of};
-use seashells_core::blobtree::polygonizer::{Grid, polygonize};
+use seashells_core::blobtree::polygonize::{Grid, polygonize};
 use seashells_core::blobtree::primitive::Primitive;
 use seashells_core::blobtree::texture_blend::Texture;
 use seashells_core::mesh::Mesh;

@@ -6,6 +6,6 @@
 pub mod bend;
 pub mod blob_tree;
 pub mod falloff;
-pub mod polygonizer;
+pub mod polygonize;
 pub mod primitive;
 pub mod texture_blend;

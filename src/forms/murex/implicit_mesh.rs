@@ -7,7 +7,7 @@
 
 use super::whorl::{Whorl, whorl};
 use crate::blobtree::blob_tree::Node;
-use crate::blobtree::polygonizer::{
+use crate::blobtree::polygonize::{
     ChunkCache, ChunkIndex, Grid, Memory, Scratch, Seams, mesh_chunk, surface_box,
 };
 use crate::mesh::{Bounds, Capacity, Mesh};
