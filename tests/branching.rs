@@ -16,8 +16,8 @@ use seashells_core::mesh::Mesh;
 use seashells_core::presets::preset;
 use seashells_core::shape::GrowingShape;
 use seashells_core::share::link::decode;
-use seashells_core::spec::branching::{BranchingSpec, KnotSpec};
 use seashells_core::spec::form::Form;
+use seashells_core::spec::form::branching::{BranchingSpec, KnotSpec};
 
 const PRESETS: [&str; 5] = [
     "kawaguchi-spiral-plant",

@@ -14,8 +14,8 @@ use seashells_core::generator::{BuildError, Generator};
 use seashells_core::presets::preset;
 use seashells_core::share::link::decode;
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::chambers::{ChambersSpec, Look, Triple};
 use seashells_core::spec::form::Form;
+use seashells_core::spec::form::chambers::{ChambersSpec, Look, Triple};
 use seashells_core::spec::handedness::Handedness;
 
 fn spec_of(id: &str) -> ShellSpec {

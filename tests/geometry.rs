@@ -14,8 +14,9 @@ use seashells_core::forms::sweep::surface::Sweep;
 use seashells_core::generator::Generator;
 use seashells_core::presets::preset;
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::form::FrameMode;
-use seashells_core::spec::form::{Form, RibSpec, SweepSpec};
+use seashells_core::spec::form::Form;
+use seashells_core::spec::form::sweep::FrameMode;
+use seashells_core::spec::form::sweep::{RibSpec, SweepSpec};
 use seashells_core::spec::handedness::Handedness;
 use std::collections::HashMap;
 

@@ -12,8 +12,8 @@ use seashells_core::forms::murex::helix::Helix;
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::presets::{self, Group};
+use seashells_core::spec::form::implicit::{HelixSpec, ImplicitSpec};
 use seashells_core::spec::handedness::Handedness;
-use seashells_core::spec::implicit::{HelixSpec, ImplicitSpec};
 use std::f64::consts::TAU;
 
 fn implicit_presets() -> Vec<&'static presets::Preset> {

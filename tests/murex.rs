@@ -31,7 +31,7 @@ use seashells_core::presets;
 use seashells_core::share::link::{decode, encode};
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::implicit::Placement;
+use seashells_core::spec::form::implicit::Placement;
 use std::collections::{BTreeMap, HashMap};
 
 /// Table 1 as we read it: (whorl, angle°, σ).

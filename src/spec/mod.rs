@@ -1,13 +1,10 @@
 //! The whole shareable parameter set of a shell: one type, [`ShellSpec`], read from preset files
 //! and links, validated before anything is built from it.
 
-pub mod branching;
-pub mod chambers;
 pub(crate) mod colour;
 pub mod fields;
 pub mod form;
 pub mod handedness;
-pub mod implicit;
 pub(crate) mod material;
 pub mod pattern;
 pub(crate) mod problem;

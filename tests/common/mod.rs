@@ -7,7 +7,7 @@ use seashells_core::mesh::Mesh;
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
-use seashells_core::spec::implicit::ImplicitSpec;
+use seashells_core::spec::form::implicit::ImplicitSpec;
 use std::collections::HashMap;
 
 /// Directed edges by welded position; a closed, consistently oriented surface has each edge

@@ -4,7 +4,7 @@
 use crate::blobtree::bend::MAX_BEND_DEGREES;
 use crate::blobtree::falloff::support_of;
 use crate::shape::ShapeError;
-use crate::spec::implicit::{GeneratorSpec, ImplicitSpec};
+use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec};
 use glam::DVec3;
 
 /// Most generating surfaces (growth steps) in one shell.

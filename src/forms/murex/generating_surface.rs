@@ -7,7 +7,7 @@ use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::support_of;
 use crate::blobtree::primitive::Primitive;
 use crate::blobtree::texture_blend::Texture;
-use crate::spec::implicit::GeneratorSpec;
+use crate::spec::form::implicit::GeneratorSpec;
 use glam::{DAffine3, DMat3, DVec3};
 
 /// The generating surface's BlobTree, its parts carrying growth time `time`; `whorl` is the

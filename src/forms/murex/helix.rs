@@ -6,8 +6,8 @@
 //! the paper's D = 0.341 R for β = 22.5°, λ = 1.3. The paper's y axis is our z: as for all our
 //! shells, the apex points towards −z and growth goes towards +z (the display turns it apex up).
 
+use crate::spec::form::implicit::{HelixSpec, ImplicitSpec};
 use crate::spec::handedness::Handedness;
-use crate::spec::implicit::{HelixSpec, ImplicitSpec};
 use glam::{DAffine3, DMat3, DVec3};
 use std::f64::consts::TAU;
 

@@ -12,7 +12,7 @@ use crate::blobtree::polygonize::{
 };
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::shape::{GrowingShape, ShapeError};
-use crate::spec::implicit::ImplicitSpec;
+use crate::spec::form::implicit::ImplicitSpec;
 use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
 use std::collections::BTreeMap;

@@ -7,7 +7,7 @@ use super::sections::{Gathered, joined, sections};
 use super::varix::{edge_distance, outward};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
-use crate::spec::implicit::ImplicitSpec;
+use crate::spec::form::implicit::ImplicitSpec;
 use glam::{DAffine3, DVec3};
 
 /// Voxels the wall is at least thick where the shell is hollow.

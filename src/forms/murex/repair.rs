@@ -3,7 +3,7 @@
 //! where there is one.
 
 use super::check::check;
-use crate::spec::implicit::{ImplicitSpec, Placement};
+use crate::spec::form::implicit::{ImplicitSpec, Placement};
 use crate::spec::pattern::{Model, PatternSpec};
 use crate::spec::problem::Problem;
 

@@ -6,7 +6,7 @@ use super::generating_surface::generating_surface;
 use super::helix::Instances;
 use crate::blobtree::blob_tree::Node;
 use crate::mesh::Bounds;
-use crate::spec::implicit::{Blending, GeneratorSpec};
+use crate::spec::form::implicit::{Blending, GeneratorSpec};
 use glam::{DAffine3, DVec3};
 
 /// A BlobTree being gathered, with the box of what each growth step adds.

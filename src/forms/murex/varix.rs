@@ -20,7 +20,7 @@ use crate::blobtree::texture_blend::Texture;
 use crate::mesh::Bounds;
 use crate::pattern::build;
 use crate::shape::ShapeError;
-use crate::spec::implicit::VaricesSpec;
+use crate::spec::form::implicit::VaricesSpec;
 use crate::spec::pattern::PatternSpec;
 use glam::{DAffine3, DMat3, DVec3};
 

@@ -18,7 +18,7 @@ use crate::blobtree::blob_tree::Node;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
-use crate::spec::implicit::{ImplicitSpec, Placement};
+use crate::spec::form::implicit::{ImplicitSpec, Placement};
 use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
 

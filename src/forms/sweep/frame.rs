@@ -13,7 +13,7 @@
 //! mode. On top of either, the user may rotate uvw about e₁, e₂ and e₃.
 
 use super::helico_spiral::HelicoSpiral;
-use crate::spec::form::FrameMode;
+use crate::spec::form::sweep::FrameMode;
 use glam::{DMat3, DVec3};
 
 /// An orthonormal frame (e₁, e₂, e₃) at a point of the helico-spiral.

@@ -2,7 +2,7 @@
 //! mesh within the vertex cap. Each violation is repaired from the fallback and reported.
 
 use crate::mesh::MAX_VERTICES;
-use crate::spec::form::{CurveSpec, SweepSpec};
+use crate::spec::form::sweep::{CurveSpec, SweepSpec};
 use crate::spec::problem::Problem;
 
 /// Vertices of a sweep's mesh: rims × points per rim, doubled with a wall.

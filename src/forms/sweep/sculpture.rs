@@ -4,7 +4,7 @@
 //! lattice). The displacement is returned relative to the current size of the curve, so the
 //! caller multiplies it by that size and the ribs grow with the shell.
 
-use crate::spec::form::{RibSpec, SculptureSpec};
+use crate::spec::form::sweep::{RibSpec, SculptureSpec};
 use std::f64::consts::TAU;
 
 /// The periodic rib profile ((1 + cos 2πx) / 2)^p: 1 on a crest (integer x), 0 between ribs.

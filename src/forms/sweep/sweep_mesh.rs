@@ -11,7 +11,7 @@ use super::helico_spiral::SpiralWalk;
 use super::surface::{Rim, Sweep};
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::shape::{GrowingShape, ShapeError};
-use crate::spec::form::SweepSpec;
+use crate::spec::form::sweep::SweepSpec;
 use glam::DVec3;
 use std::f64::consts::TAU;
 

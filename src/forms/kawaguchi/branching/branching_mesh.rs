@@ -7,7 +7,7 @@
 use super::branching_tree::{Base, BranchingTree};
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::shape::{GrowingShape, ShapeError};
-use crate::spec::branching::BranchingSpec;
+use crate::spec::form::branching::BranchingSpec;
 use glam::DVec3;
 
 /// A [`BranchingTree`] grown segment by segment.

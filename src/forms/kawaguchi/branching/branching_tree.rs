@@ -22,7 +22,7 @@
 use super::tendril::Tendril;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
-use crate::spec::branching::BranchingSpec;
+use crate::spec::form::branching::BranchingSpec;
 use glam::{DMat3, DQuat, DVec3};
 use std::collections::VecDeque;
 use std::f64::consts::TAU;

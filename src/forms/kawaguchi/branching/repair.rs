@@ -3,7 +3,7 @@
 
 use super::branching_mesh::BranchingMesh;
 use crate::mesh::MAX_VERTICES;
-use crate::spec::branching::BranchingSpec;
+use crate::spec::form::branching::BranchingSpec;
 use crate::spec::problem::Problem;
 
 /// A branching form must build (limits in order, the count of trunks within its cap) and fit

@@ -4,7 +4,7 @@
 //! α(i) = α(i) ± θ ∓ β, and from then on it rolls the other way, until the other limit turns
 //! it back again. Without the force (β = 0) α rolls on and never turns.
 
-use crate::spec::branching::KnotSpec;
+use crate::spec::form::branching::KnotSpec;
 
 /// The rolling state of one branch.
 #[derive(Clone, Copy, Debug, PartialEq)]

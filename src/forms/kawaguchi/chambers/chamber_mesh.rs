@@ -11,7 +11,7 @@
 use super::chamber_stack::{ChamberStack, RingKind};
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::shape::{GrowingShape, ShapeError};
-use crate::spec::chambers::{ChambersSpec, Look};
+use crate::spec::form::chambers::{ChambersSpec, Look};
 use glam::{DAffine3, DVec3};
 
 /// One ring as grown: its apexes (shell space, before mirroring), the direction of growth

@@ -22,7 +22,7 @@
 use super::mouth::mouth_polygon;
 use crate::mesh::Bounds;
 use crate::shape::ShapeError;
-use crate::spec::chambers::{ChamberSpec, ChambersSpec};
+use crate::spec::form::chambers::{ChamberSpec, ChambersSpec};
 use crate::spec::handedness::Handedness;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 

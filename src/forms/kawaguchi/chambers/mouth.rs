@@ -3,7 +3,7 @@
 //! the unique mouths of real shells.
 
 use crate::shape::ShapeError;
-use crate::spec::chambers::MouthSpec;
+use crate::spec::form::chambers::MouthSpec;
 use glam::DVec2;
 use std::f64::consts::TAU;
 

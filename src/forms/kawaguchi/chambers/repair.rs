@@ -5,7 +5,7 @@ use super::chamber_mesh::mesh_capacity;
 use super::chamber_stack::ChamberStack;
 use super::mouth::mouth_polygon;
 use crate::mesh::MAX_VERTICES;
-use crate::spec::chambers::ChambersSpec;
+use crate::spec::form::chambers::ChambersSpec;
 use crate::spec::problem::Problem;
 
 /// A chamber stack must build (a mouth that does not fold over itself, chambers whose top

@@ -1,40 +1,8 @@
-//! The shape part of a [`ShellSpec`](super::ShellSpec): which model builds the surface, and its
-//! parameters: the swept surface of Fowler et al. 1992 §2, and Kawaguchi's accumulated
-//! chambers and branching forms (1982), and the implicit surfaces of Galbraith, Prusinkiewicz &
-//! Wyvill.
+//! The parameters of the swept shell of Fowler, Meinhardt & Prusinkiewicz 1992, §2: the
+//! helico-spiral, the generating curve and its frame, sculpture, and the wall and lip.
 
-use super::branching::BranchingSpec;
-use super::chambers::ChambersSpec;
-use super::handedness::Handedness;
-use super::implicit::ImplicitSpec;
+use crate::spec::handedness::Handedness;
 use serde::{Deserialize, Serialize};
-
-/// The model that builds the shell's surface.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Form {
-    /// A generating curve swept along a helico-spiral (Fowler et al. 1992, §2).
-    Sweep(SweepSpec),
-    /// A stack of similar chambers (Kawaguchi 1982, "Shells' growth model").
-    Chambers(ChambersSpec),
-    /// Trunks, knots and branches (Kawaguchi 1982, "Growth model by branching").
-    Branching(BranchingSpec),
-    /// Generating surfaces of skeletal primitives blended along a helico-spiral (Galbraith,
-    /// Prusinkiewicz & Wyvill, §3.1).
-    Implicit(ImplicitSpec),
-}
-
-impl Form {
-    /// The name of the form's kind, as `form.kind` writes it.
-    pub fn kind(&self) -> &'static str {
-        match self {
-            Form::Sweep(_) => "sweep",
-            Form::Chambers(_) => "chambers",
-            Form::Branching(_) => "branching",
-            Form::Implicit(_) => "implicit",
-        }
-    }
-}
 
 /// Parameters of the swept surface.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

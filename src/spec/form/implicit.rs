@@ -2,7 +2,7 @@
 //! generating surface of skeletal primitives, placed again and again along a helico-spiral
 //! and blended into whorls, then polygonized at a chosen resolution.
 
-use super::handedness::Handedness;
+use crate::spec::handedness::Handedness;
 use serde::{Deserialize, Serialize};
 
 /// A whorl built of generating surfaces on a helico-spiral.

@@ -3,7 +3,7 @@
 //! between two flat surfaces"): a mouth polygon, and the one similarity that relates each
 //! chamber to the next.
 
-use super::handedness::Handedness;
+use crate::spec::handedness::Handedness;
 use serde::{Deserialize, Serialize};
 
 /// A shell, horn, tusk or claw as a stack of similar chambers.
