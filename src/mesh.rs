@@ -140,6 +140,13 @@ impl Bounds {
         self.max = self.max.max(p);
     }
 
+    /// Grows to hold the positions of `vertices`: what a mesh grown so far covers.
+    pub fn include_vertices(&mut self, vertices: &[Vertex]) {
+        for v in vertices {
+            self.include(DVec3::from(v.position.map(f64::from)));
+        }
+    }
+
     pub fn center(&self) -> DVec3 {
         (self.min + self.max) * 0.5
     }

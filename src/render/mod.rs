@@ -2,7 +2,9 @@
 //! moves data: the mesh and pattern rows that the generator adds, the camera's matrices, the
 //! material's strengths, and a quad on the ground under what has grown for the contact shadow.
 
+mod gpu;
 mod pattern_texture;
+mod pipeline;
 mod shell_buffers;
 
 use crate::generator::Advance;
@@ -13,6 +15,7 @@ use crate::spec::material::MaterialSpec;
 use crate::view::camera::{OrbitCamera, display_from_shell};
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
+use gpu::Gpu;
 use pattern_texture::PatternTexture;
 use shell_buffers::MeshBuffers;
 use std::sync::{Arc, Mutex};
@@ -151,184 +154,17 @@ fn create_targets(
 impl Renderer {
     /// Sets up wgpu on the canvas: WebGPU if an adapter comes, WebGL2 otherwise.
     pub async fn new(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
-        let (width, height) = (canvas.width().max(1), canvas.height().max(1));
-        let instance = wgpu::util::new_instance_with_webgpu_detection(wgpu::InstanceDescriptor {
-            backends: wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
-            ..wgpu::InstanceDescriptor::new_without_display_handle()
-        })
-        .await;
-        let surface = instance
-            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
-            .map_err(|e| {
-                format!("This browser offers neither WebGPU nor WebGL2 on this page ({e}).")
-            })?;
-        let adapter = instance
-            .request_adapter(&wgpu::RequestAdapterOptions {
-                power_preference: wgpu::PowerPreference::HighPerformance,
-                force_fallback_adapter: false,
-                compatible_surface: Some(&surface),
-                apply_limit_buckets: false,
-            })
-            .await
-            .map_err(|e| {
-                format!(
-                    "No graphics adapter is available: neither WebGPU nor WebGL2 works here ({e})."
-                )
-            })?;
-        let backend = match adapter.get_info().backend {
-            wgpu::Backend::BrowserWebGpu => "WebGPU",
-            _ => "WebGL2",
-        };
-        let (device, queue) = adapter
-            .request_device(&wgpu::DeviceDescriptor {
-                label: Some("seashells"),
-                required_features: wgpu::Features::empty(),
-                required_limits: wgpu::Limits::downlevel_webgl2_defaults()
-                    .using_resolution(adapter.limits()),
-                ..Default::default()
-            })
-            .await
-            .map_err(|e| format!("The {backend} device could not be opened ({e})."))?;
-        let failure = Arc::new(Mutex::new(None));
-        let lost = Arc::clone(&failure);
-        device.set_device_lost_callback(move |reason, message| {
-            if let Ok(mut slot) = lost.lock() {
-                *slot = Some(format!("The graphics device was lost ({reason:?}: {message}). Reload the page to continue."));
-            }
-        });
-        let errors = Arc::clone(&failure);
-        device.on_uncaptured_error(Arc::new(move |error| {
-            if let Ok(mut slot) = errors.lock() {
-                slot.get_or_insert_with(|| {
-                    format!("The graphics device reported an error: {error}")
-                });
-            }
-        }));
-        let caps = surface.get_capabilities(&adapter);
-        let format = caps
-            .formats
-            .iter()
-            .copied()
-            .find(|f| {
-                matches!(
-                    f,
-                    wgpu::TextureFormat::Rgba8UnormSrgb | wgpu::TextureFormat::Bgra8UnormSrgb
-                )
-            })
-            .or_else(|| {
-                caps.formats.iter().copied().find(|f| {
-                    matches!(
-                        f,
-                        wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Bgra8Unorm
-                    )
-                })
-            })
-            .ok_or_else(|| {
-                format!(
-                    "The canvas offers no 8-bit colour format ({:?}).",
-                    caps.formats
-                )
-            })?;
-        let config = wgpu::SurfaceConfiguration {
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            format,
-            color_space: wgpu::SurfaceColorSpace::Auto,
-            width,
-            height,
-            present_mode: wgpu::PresentMode::Fifo,
-            desired_maximum_frame_latency: 2,
-            alpha_mode: caps.alpha_modes[0],
-            view_formats: vec![],
-        };
-        surface.configure(&device, &config);
-        let samples = if adapter
-            .get_texture_format_features(format)
-            .flags
-            .sample_count_supported(SAMPLES)
-        {
-            SAMPLES
-        } else {
-            1
-        };
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("shell"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/shell.wgsl").into()),
-        });
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("shell"),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-            ],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("shell"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let attributes =
-            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32];
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("shell"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: size_of::<Vertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &attributes,
-                })],
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleList,
-                front_face: wgpu::FrontFace::Ccw,
-                cull_mode: None,
-                ..Default::default()
-            },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: wgpu::MultisampleState {
-                count: samples,
-                ..Default::default()
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format,
-                    blend: None,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let Gpu {
+            surface,
+            device,
+            queue,
+            config,
+            backend,
+            samples,
+            failure,
+        } = Gpu::open(canvas).await?;
+        let layout = pipeline::bind_group_layout(&device);
+        let pipeline = pipeline::shell_pipeline(&device, &layout, config.format, samples);
         let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
             size: size_of::<Globals>() as u64,
@@ -338,7 +174,7 @@ impl Renderer {
         let blank = PatternTexture::new(&device, TextureLayout::new(1, 1).expect("1×1 fits"));
         let targets = create_targets(&device, &config, samples);
         Ok(Self {
-            encode_srgb: !format.is_srgb(),
+            encode_srgb: !config.format.is_srgb(),
             surface,
             device,
             queue,

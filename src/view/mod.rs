@@ -1,5 +1,8 @@
-//! The platform-free half of the viewer: the orbit camera and the gestures that move it.
-//! Pure arithmetic, tested natively; the web runner applies what it returns.
+//! The platform-free half of the viewer: the orbit camera and the gestures that move it, the
+//! playback (rows per frame, the growth budget), and the preview of a pattern being edited.
+//! Tested natively; the web runner applies what they return.
 
 pub mod camera;
 pub mod gestures;
+pub mod playback;
+pub mod preview;

@@ -13,7 +13,7 @@ use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
 use super::viewer::{Viewer, now};
-use crate::export::{self, MeshFormat};
+use crate::export::{self, Download};
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
@@ -214,13 +214,13 @@ impl App {
     }
 
     pub fn set_playing(&mut self, playing: bool) {
-        self.viewer.playing = playing;
+        self.viewer.playback.playing = playing;
         signal("playing", if playing { "true" } else { "false" });
         set_text("play", if playing { "Pause" } else { "Play" });
     }
 
     pub fn toggle_playing(&mut self) {
-        self.set_playing(!self.viewer.playing);
+        self.set_playing(!self.viewer.playback.playing);
     }
 
     pub fn restart(&mut self) {
@@ -254,7 +254,7 @@ impl App {
             _ => speed,
         };
         spec.growth.speed = speed;
-        self.viewer.speed = speed;
+        self.viewer.playback.speed = speed;
         if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
             input.set_value(&crate::spec::fields::display(speed));
         }
@@ -262,7 +262,7 @@ impl App {
     }
 
     pub fn speed(&self) -> f64 {
-        self.viewer.speed
+        self.viewer.playback.speed
     }
 
     pub fn reset_camera(&mut self) {
@@ -301,34 +301,29 @@ impl App {
         });
     }
 
-    /// Offers a download: "picture", "pattern", "obj" or "stl".
-    pub fn download(&mut self, what: &str) {
+    /// Offers a download of the shell shown.
+    pub fn download(&mut self, what: Download) {
         let Some(g) = self.viewer.growing() else {
             return;
         };
-        let id = g.preset.id;
+        let name = what.file_name(g.preset.id);
         let result = match what {
-            "pattern" => match g.generator.pattern() {
+            Download::Pattern => match g.generator.pattern() {
                 Some(p) => download::offer(
-                    &format!("{id}-pattern.png"),
+                    &name,
                     "image/png",
                     &export::png::encode(p.cells(), p.rows(), p.rgba()),
                 ),
                 None => Err("this shell has no pattern".into()),
             },
-            "obj" | "stl" => {
-                let format = if what == "obj" {
-                    MeshFormat::Obj
-                } else {
-                    MeshFormat::Stl
-                };
+            Download::Mesh(format) => {
                 let bytes = format.write(&g.generator.snapshot());
-                download::offer(&format!("{id}.{what}"), "application/octet-stream", &bytes)
+                download::offer(&name, "application/octet-stream", &bytes)
             }
-            _ => self
+            Download::Picture => self
                 .viewer
                 .picture()
-                .and_then(|url| download::offer_url(&format!("{id}.png"), &url)),
+                .and_then(|url| download::offer_url(&name, &url)),
         };
         if let Err(e) = result {
             show_message(&format!("The download could not be made: {e}."));

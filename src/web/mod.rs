@@ -11,6 +11,7 @@ mod panel;
 mod planar;
 mod viewer;
 
+use crate::export::Download;
 use app::App;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -210,8 +211,10 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("reset-camera", app, App::reset_camera)?;
     on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
     on_click("copy-link", app, App::copy_link)?;
-    for what in ["picture", "pattern", "obj", "stl"] {
-        on_click(&format!("download-{what}"), app, move |a| a.download(what))?;
+    for what in Download::ALL {
+        on_click(&format!("download-{}", what.name()), app, move |a| {
+            a.download(what)
+        })?;
     }
     on_click("map-open", app, App::open_map)?;
     on_click("map-draw", app, App::draw_map)?;

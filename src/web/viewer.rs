@@ -7,7 +7,7 @@
 use super::page::show_message;
 use super::planar::Planar;
 use crate::generator::{Advance, Generator, within};
-use crate::mesh::{Bounds, Mesh};
+use crate::mesh::Bounds;
 use crate::pattern::run::PatternRun;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
@@ -15,6 +15,8 @@ use crate::render::{Renderer, ShellLook};
 use crate::spec::ShellSpec;
 use crate::view::camera::OrbitCamera;
 use crate::view::gestures::{Pointers, wheel_zoom};
+use crate::view::playback::{Playback, growth_budget};
+use crate::view::preview::Preview;
 use web_sys::HtmlCanvasElement;
 
 /// A shell being grown.
@@ -40,55 +42,14 @@ impl Growing {
     }
 }
 
-/// The whole pattern of a spec being edited, computed from its first row a frame's budget at a
-/// time and drawn into the planar view as it comes.
-struct Preview {
-    run: PatternRun,
-    rows: usize,
-    failed: bool,
-}
-
-impl Preview {
-    /// Computes rows until all are done, the pattern fails (said on the page), or the clock
-    /// passes `until`; draws the new ones.
-    fn fill(&mut self, until: f64, planar: Option<&Planar>) {
-        let first = self.run.rows();
-        while !self.failed && self.run.rows() < self.rows && now() < until {
-            if let Err(e) = self.run.advance() {
-                self.failed = true;
-                show_message(&format!("With these values the pattern stops {e}."));
-            }
-        }
-        if let Some(planar) = planar {
-            planar.draw_rows(
-                first as u32,
-                &self.run.rgba()[first * self.run.cells() * 4..],
-            );
-        }
-    }
-}
-
-/// How far a slow frame rate may stretch the growth budget of a frame.
-const MAX_BUDGET_FACTOR: f64 = 4.0;
-
-/// Bounds of a range of a mesh's vertices.
-fn include(bounds: &mut Bounds, mesh: &Mesh, range: std::ops::Range<usize>) {
-    for v in &mesh.vertices[range] {
-        bounds.include(glam::DVec3::from(v.position.map(f64::from)));
-    }
-}
-
 pub struct Viewer {
     renderer: Renderer,
     canvas: HtmlCanvasElement,
     planar_canvas: Option<HtmlCanvasElement>,
     pub pointers: Pointers,
     growing: Option<Growing>,
-    /// Whether growth advances each frame.
-    pub playing: bool,
-    /// Rows per frame.
-    pub speed: f64,
-    carry: f64,
+    /// Whether growth advances each frame, and how fast.
+    pub playback: Playback,
     dirty: bool,
     /// Whether the camera follows the growing shell (else it frames the whole).
     follows: bool,
@@ -118,9 +79,7 @@ impl Viewer {
             planar_canvas,
             pointers: Pointers::default(),
             growing: None,
-            playing: true,
-            speed: 1.0,
-            carry: 0.0,
+            playback: Playback::new(1.0),
             dirty: true,
             follows,
             last_frame: now(),
@@ -167,16 +126,8 @@ impl Viewer {
         );
         let (bounds, front) = generator.framing();
         let mut grown = Bounds::EMPTY;
-        include(
-            &mut grown,
-            generator.mesh(),
-            0..generator.mesh().vertices.len(),
-        );
-        include(
-            &mut grown,
-            generator.edge(),
-            0..generator.edge().vertices.len(),
-        );
+        grown.include_vertices(&generator.mesh().vertices);
+        grown.include_vertices(&generator.edge().vertices);
         let mut camera = OrbitCamera::framing(
             &bounds,
             front,
@@ -190,8 +141,7 @@ impl Viewer {
             .planar_canvas
             .clone()
             .and_then(|c| Planar::new(c, pattern));
-        self.speed = spec.growth.speed;
-        self.carry = 0.0;
+        self.playback.restart(spec.growth.speed);
         self.growing = Some(Growing {
             preset,
             generator,
@@ -214,13 +164,10 @@ impl Viewer {
 
     fn upload(&mut self, advance: &Advance) {
         let Some(g) = &mut self.growing else { return };
-        include(&mut g.grown, g.generator.mesh(), advance.vertices.clone());
+        g.grown
+            .include_vertices(&g.generator.mesh().vertices[advance.vertices.clone()]);
         if advance.edge_changed {
-            include(
-                &mut g.grown,
-                g.generator.edge(),
-                0..g.generator.edge().vertices.len(),
-            );
+            g.grown.include_vertices(&g.generator.edge().vertices);
         }
         self.renderer.set_ground(&g.grown);
         let rgba = g.generator.pattern().map_or(&[][..], |p| {
@@ -254,11 +201,7 @@ impl Viewer {
         if let Some(planar) = &g.planar {
             planar.draw_rows(0, run.rgba());
         }
-        g.preview = Some(Preview {
-            run,
-            rows: spec.growth.rows as usize,
-            failed: false,
-        });
+        g.preview = Some(Preview::new(run, spec.growth.rows as usize));
         Ok(())
     }
 
@@ -280,12 +223,10 @@ impl Viewer {
 
     /// The preview's state for the page's signal: "filling", "whole", "stopped", or "" for none.
     pub fn preview_state(&self) -> &'static str {
-        match self.growing.as_ref().and_then(|g| g.preview.as_ref()) {
-            None => "",
-            Some(p) if p.failed => "stopped",
-            Some(p) if p.run.rows() < p.rows => "filling",
-            Some(_) => "whole",
-        }
+        self.growing
+            .as_ref()
+            .and_then(|g| g.preview.as_ref())
+            .map_or("", |p| p.state().signal())
     }
 
     /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
@@ -326,9 +267,9 @@ impl Viewer {
         }
     }
 
-    /// One animation frame: grow at the current speed within `budget_ms` (or, when frames come
-    /// slowly, within half the time since the last frame, at most [`MAX_BUDGET_FACTOR`] times
-    /// `budget_ms`), draw if anything changed. Returns whether a frame was drawn.
+    /// One animation frame: grow at the current speed within `budget_ms` (stretched when frames
+    /// come slowly, see [`growth_budget`]), draw if anything changed. Returns whether a frame
+    /// was drawn.
     pub fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
@@ -337,22 +278,24 @@ impl Viewer {
         if let Some(g) = &mut self.growing
             && let Some(preview) = &mut g.preview
         {
-            preview.fill(now() + budget_ms, g.planar.as_ref());
+            let until = now() + budget_ms;
+            let (first, failure) = preview.fill(|| now() < until);
+            if let Some(e) = failure {
+                show_message(&format!("With these values the pattern stops {e}."));
+            }
+            if let Some(planar) = &g.planar {
+                let run = preview.run();
+                planar.draw_rows(first as u32, &run.rgba()[first * run.cells() * 4..]);
+            }
         }
         let growing = self
             .growing
             .as_ref()
             .is_some_and(|g| !g.generator.is_done() && g.preview.is_none());
-        if growing && self.playing {
-            self.carry += self.speed;
-            let rows = self.carry.floor();
-            self.carry -= rows;
-            if rows > 0.0 {
-                // Where drawing is slow (a software renderer), growth may take up to half of
-                // the time between frames, so that it keeps pace with the drawing.
-                let interval = now() - self.last_frame;
-                let budget = (interval * 0.5).clamp(budget_ms, budget_ms * MAX_BUDGET_FACTOR);
-                self.grow(rows as usize, budget);
+        if growing && self.playback.playing {
+            let rows = self.playback.rows_this_frame();
+            if rows > 0 {
+                self.grow(rows, growth_budget(budget_ms, now() - self.last_frame));
             }
         }
         let time = now();

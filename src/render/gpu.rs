@@ -1,0 +1,157 @@
+//! The browser's graphics device on one canvas: WebGPU when an adapter comes, WebGL2
+//! otherwise, the canvas configured in an 8-bit colour format, and a watch that turns a lost
+//! device or an uncaptured error into words the page shows.
+
+use super::SAMPLES;
+use std::sync::{Arc, Mutex};
+
+/// A device and the canvas surface it draws on.
+pub(super) struct Gpu {
+    pub(super) surface: wgpu::Surface<'static>,
+    pub(super) device: wgpu::Device,
+    pub(super) queue: wgpu::Queue,
+    pub(super) config: wgpu::SurfaceConfiguration,
+    /// "WebGPU" or "WebGL2".
+    pub(super) backend: &'static str,
+    /// MSAA samples the surface's format allows, up to [`SAMPLES`].
+    pub(super) samples: u32,
+    /// A device loss or error reported since the start, in words.
+    pub(super) failure: Arc<Mutex<Option<String>>>,
+}
+
+impl Gpu {
+    /// Opens a device on `canvas` and configures the canvas for it.
+    pub(super) async fn open(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
+        let (width, height) = (canvas.width().max(1), canvas.height().max(1));
+        let (surface, adapter, backend) = adapter(canvas).await?;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("seashells"),
+                required_features: wgpu::Features::empty(),
+                required_limits: wgpu::Limits::downlevel_webgl2_defaults()
+                    .using_resolution(adapter.limits()),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| format!("The {backend} device could not be opened ({e})."))?;
+        let failure = watch(&device);
+        let config = configuration(&surface, &adapter, width, height)?;
+        surface.configure(&device, &config);
+        let samples = if adapter
+            .get_texture_format_features(config.format)
+            .flags
+            .sample_count_supported(SAMPLES)
+        {
+            SAMPLES
+        } else {
+            1
+        };
+        Ok(Self {
+            surface,
+            device,
+            queue,
+            config,
+            backend,
+            samples,
+            failure,
+        })
+    }
+}
+
+/// The canvas's surface and an adapter for it, with the backend's name.
+async fn adapter(
+    canvas: web_sys::HtmlCanvasElement,
+) -> Result<(wgpu::Surface<'static>, wgpu::Adapter, &'static str), String> {
+    let instance = wgpu::util::new_instance_with_webgpu_detection(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    })
+    .await;
+    let surface = instance
+        .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+        .map_err(|e| {
+            format!("This browser offers neither WebGPU nor WebGL2 on this page ({e}).")
+        })?;
+    let adapter = instance
+        .request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: Some(&surface),
+            apply_limit_buckets: false,
+        })
+        .await
+        .map_err(|e| {
+            format!("No graphics adapter is available: neither WebGPU nor WebGL2 works here ({e}).")
+        })?;
+    let backend = match adapter.get_info().backend {
+        wgpu::Backend::BrowserWebGpu => "WebGPU",
+        _ => "WebGL2",
+    };
+    Ok((surface, adapter, backend))
+}
+
+/// Where a lost device or an uncaptured error is written, in words, for the page to show.
+fn watch(device: &wgpu::Device) -> Arc<Mutex<Option<String>>> {
+    let failure = Arc::new(Mutex::new(None));
+    let lost = Arc::clone(&failure);
+    device.set_device_lost_callback(move |reason, message| {
+        if let Ok(mut slot) = lost.lock() {
+            *slot = Some(format!(
+                "The graphics device was lost ({reason:?}: {message}). Reload the page to continue."
+            ));
+        }
+    });
+    let errors = Arc::clone(&failure);
+    device.on_uncaptured_error(Arc::new(move |error| {
+        if let Ok(mut slot) = errors.lock() {
+            slot.get_or_insert_with(|| format!("The graphics device reported an error: {error}"));
+        }
+    }));
+    failure
+}
+
+/// The canvas's configuration: an sRGB 8-bit format where it has one (else a linear one, and
+/// the shader encodes), presented in step with the display.
+fn configuration(
+    surface: &wgpu::Surface,
+    adapter: &wgpu::Adapter,
+    width: u32,
+    height: u32,
+) -> Result<wgpu::SurfaceConfiguration, String> {
+    let caps = surface.get_capabilities(adapter);
+    let format = caps
+        .formats
+        .iter()
+        .copied()
+        .find(|f| {
+            matches!(
+                f,
+                wgpu::TextureFormat::Rgba8UnormSrgb | wgpu::TextureFormat::Bgra8UnormSrgb
+            )
+        })
+        .or_else(|| {
+            caps.formats.iter().copied().find(|f| {
+                matches!(
+                    f,
+                    wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Bgra8Unorm
+                )
+            })
+        })
+        .ok_or_else(|| {
+            format!(
+                "The canvas offers no 8-bit colour format ({:?}).",
+                caps.formats
+            )
+        })?;
+    Ok(wgpu::SurfaceConfiguration {
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+        format,
+        color_space: wgpu::SurfaceColorSpace::Auto,
+        width,
+        height,
+        present_mode: wgpu::PresentMode::Fifo,
+        desired_maximum_frame_latency: 2,
+        alpha_mode: caps.alpha_modes[0],
+        view_formats: vec![],
+    })
+}
