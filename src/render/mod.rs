@@ -18,7 +18,6 @@ use glam::DVec3;
 use gpu::Gpu;
 use pattern_texture::PatternTexture;
 use shell_buffers::MeshBuffers;
-use std::sync::{Arc, Mutex};
 
 /// MSAA samples when the format allows them.
 const SAMPLES: u32 = 4;
@@ -104,12 +103,7 @@ struct Targets {
 
 /// The renderer of one canvas.
 pub struct Renderer {
-    surface: wgpu::Surface<'static>,
-    device: wgpu::Device,
-    queue: wgpu::Queue,
-    config: wgpu::SurfaceConfiguration,
-    backend: &'static str,
-    samples: u32,
+    gpu: Gpu,
     encode_srgb: bool,
     pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
@@ -119,7 +113,6 @@ pub struct Renderer {
     shell: Option<Shell>,
     background: wgpu::Color,
     background_linear: [f32; 3],
-    failure: Arc<Mutex<Option<String>>>,
 }
 
 fn create_targets(
@@ -154,33 +147,21 @@ fn create_targets(
 impl Renderer {
     /// Sets up wgpu on the canvas: WebGPU if an adapter comes, WebGL2 otherwise.
     pub async fn new(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
-        let Gpu {
-            surface,
-            device,
-            queue,
-            config,
-            backend,
-            samples,
-            failure,
-        } = Gpu::open(canvas).await?;
-        let layout = pipeline::bind_group_layout(&device);
-        let pipeline = pipeline::shell_pipeline(&device, &layout, config.format, samples);
+        let gpu = Gpu::open(canvas).await?;
+        let device = &gpu.device;
+        let layout = pipeline::bind_group_layout(device);
+        let pipeline = pipeline::shell_pipeline(device, &layout, gpu.config.format, gpu.samples);
         let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
             size: size_of::<Globals>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let blank = PatternTexture::new(&device, TextureLayout::new(1, 1).expect("1×1 fits"));
-        let targets = create_targets(&device, &config, samples);
+        let blank = PatternTexture::new(device, TextureLayout::new(1, 1).expect("1×1 fits"));
+        let targets = create_targets(device, &gpu.config, gpu.samples);
         Ok(Self {
-            encode_srgb: !config.format.is_srgb(),
-            surface,
-            device,
-            queue,
-            config,
-            backend,
-            samples,
+            encode_srgb: !gpu.config.format.is_srgb(),
+            gpu,
             pipeline,
             layout,
             uniforms,
@@ -189,18 +170,17 @@ impl Renderer {
             shell: None,
             background: wgpu::Color::BLACK,
             background_linear: [0.0; 3],
-            failure,
         })
     }
 
     /// "WebGPU" or "WebGL2".
     pub fn backend(&self) -> &'static str {
-        self.backend
+        self.gpu.backend
     }
 
     /// A device loss or error reported since the start, in words.
     pub fn failure(&self) -> Option<String> {
-        self.failure.lock().ok().and_then(|f| f.clone())
+        self.gpu.failure.lock().ok().and_then(|f| f.clone())
     }
 
     /// The clear colour, as sRGB bytes; written as is to a target that does not encode sRGB.
@@ -217,11 +197,13 @@ impl Renderer {
     /// Follows the canvas size in device pixels.
     pub fn resize(&mut self, width: u32, height: u32) {
         let (width, height) = (width.max(1), height.max(1));
-        if (width, height) != (self.config.width, self.config.height) {
-            self.config.width = width;
-            self.config.height = height;
-            self.surface.configure(&self.device, &self.config);
-            self.targets = create_targets(&self.device, &self.config, self.samples);
+        if (width, height) != (self.gpu.config.width, self.gpu.config.height) {
+            self.gpu.config.width = width;
+            self.gpu.config.height = height;
+            self.gpu
+                .surface
+                .configure(&self.gpu.device, &self.gpu.config);
+            self.targets = create_targets(&self.gpu.device, &self.gpu.config, self.gpu.samples);
         }
     }
 
@@ -233,27 +215,30 @@ impl Renderer {
         pattern: Option<TextureLayout>,
         look: ShellLook,
     ) {
-        let pattern = pattern.map(|layout| PatternTexture::new(&self.device, layout));
+        let pattern = pattern.map(|layout| PatternTexture::new(&self.gpu.device, layout));
         let view = &pattern.as_ref().unwrap_or(&self.blank).view;
-        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("shell"),
-            layout: &self.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: self.uniforms.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(view),
-                },
-            ],
-        });
+        let bind_group = self
+            .gpu
+            .device
+            .create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("shell"),
+                layout: &self.layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: self.uniforms.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: wgpu::BindingResource::TextureView(view),
+                    },
+                ],
+            });
         self.shell = Some(Shell {
-            mesh: MeshBuffers::new(&self.device, capacity.0, "mesh"),
-            edge: MeshBuffers::new(&self.device, capacity.1, "edge"),
+            mesh: MeshBuffers::new(&self.gpu.device, capacity.0, "mesh"),
+            edge: MeshBuffers::new(&self.gpu.device, capacity.1, "edge"),
             ground: MeshBuffers::new(
-                &self.device,
+                &self.gpu.device,
                 Capacity {
                     vertices: 4,
                     indices: 6,
@@ -274,17 +259,17 @@ impl Renderer {
             return;
         };
         shell.mesh.write(
-            &self.device,
-            &self.queue,
+            &self.gpu.device,
+            &self.gpu.queue,
             mesh,
             advance.vertices.clone(),
             advance.indices.clone(),
         );
         if advance.edge_changed {
-            shell.edge.replace(&self.device, &self.queue, edge);
+            shell.edge.replace(&self.gpu.device, &self.gpu.queue, edge);
         }
         if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
-            pattern.write_rows(&self.queue, advance.rows.start as u32, rgba);
+            pattern.write_rows(&self.gpu.queue, advance.rows.start as u32, rgba);
         }
         shell.rows_grown = advance.rows.end as u32;
     }
@@ -296,20 +281,22 @@ impl Renderer {
         {
             shell
                 .ground
-                .replace(&self.device, &self.queue, &ground_quad(grown));
+                .replace(&self.gpu.device, &self.gpu.queue, &ground_quad(grown));
         }
     }
 
     /// Draws one frame.
     pub fn draw(&mut self, camera: &OrbitCamera) -> Result<(), String> {
-        let frame = match self.surface.get_current_texture() {
+        let frame = match self.gpu.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(frame)
             | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
             wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
                 return Ok(());
             }
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                self.surface.configure(&self.device, &self.config);
+                self.gpu
+                    .surface
+                    .configure(&self.gpu.device, &self.gpu.config);
                 return Ok(());
             }
             other => return Err(format!("The canvas could not be drawn on ({other:?}).")),
@@ -317,7 +304,7 @@ impl Renderer {
         let view = frame
             .texture
             .create_view(&wgpu::TextureViewDescriptor::default());
-        let aspect = self.config.width as f32 / self.config.height as f32;
+        let aspect = self.gpu.config.width as f32 / self.gpu.config.height as f32;
         if let Some(shell) = &self.shell {
             let (cells, block_rows, patterned) = match &shell.pattern {
                 Some(p) => (p.layout.cells, p.layout.block_rows, 1.0),
@@ -350,10 +337,12 @@ impl Renderer {
                     1.0,
                 ],
             };
-            self.queue
+            self.gpu
+                .queue
                 .write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&globals));
         }
         let mut encoder = self
+            .gpu
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("frame"),
@@ -396,8 +385,8 @@ impl Renderer {
                 }
             }
         }
-        self.queue.submit([encoder.finish()]);
-        self.queue.present(frame);
+        self.gpu.queue.submit([encoder.finish()]);
+        self.gpu.queue.present(frame);
         Ok(())
     }
 }
