@@ -293,7 +293,7 @@ pub const BRANCHING: &[Field] = &[
 pub const IMPLICIT: &[Field] = &[
     f("form.spiral.beta", Spiral, "β", "angle between the axis and the line through the whorls (degrees)", real(1.0, 89.0)),
     f("form.spiral.lambda", Spiral, "λ", "ratio of radii one turn apart (eq 1)", log(1.01, 10.0)),
-    f("form.spiral.r0", Spiral, "R₀", "distance from the axis at θ = 0 (eq 1)", log(0.01, 10.0)),
+    f("form.spiral.r0", Spiral, "R₀", "distance from the axis at θ = 0 (eq 1)", log(0.001, 10.0)),
     f("form.spiral.handedness", Spiral, "", "coiling", Kind::Choice(&["dextral", "sinistral"])),
     f("form.whorls", Whorls, "", "whorls", int(1, 40)),
     f("form.whorl_angle", Whorls, "", "rotation per whorl (degrees)", real(30.0, 720.0)),
