@@ -2,8 +2,10 @@
 //! otherwise, the canvas configured in an 8-bit colour format, and a watch that turns a lost
 //! device or an uncaptured error into words the page shows.
 
-use super::SAMPLES;
 use std::sync::{Arc, Mutex};
+
+/// MSAA samples when the format allows them.
+const SAMPLES: u32 = 4;
 
 /// A device and the canvas surface it draws on.
 pub(super) struct Gpu {

@@ -17,11 +17,8 @@ use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use gpu::Gpu;
 use pattern_texture::PatternTexture;
+use pipeline::DEPTH_FORMAT;
 use shell_buffers::MeshBuffers;
-
-/// MSAA samples when the format allows them.
-const SAMPLES: u32 = 4;
-const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
 
 /// The uniform block of shaders/shell.wgsl.
 #[repr(C)]

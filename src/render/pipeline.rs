@@ -1,8 +1,10 @@
 //! The shell's render pipeline: shaders/shell.wgsl over the mesh's vertices, with the uniform
 //! block and the pattern texture bound, depth-tested, multisampled where the format allows.
 
-use super::DEPTH_FORMAT;
 use crate::mesh::Vertex;
+
+/// The depth buffer's format.
+pub(super) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
 
 /// The bindings of shaders/shell.wgsl: the uniform block (0) and the pattern texture (1).
 pub(super) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
