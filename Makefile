@@ -13,7 +13,7 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 export XDG_RUNTIME_DIR ?= /tmp/seashells-runtime
 APT := DEBIAN_FRONTEND=noninteractive apt-get
 
-.PHONY: run test build bench deps deps-build deps-browser lint test-native test-browser test-page screenshots
+.PHONY: run test build bench deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
@@ -33,7 +33,12 @@ deps-browser:
 	  { $(APT) update && $(APT) install -y chromium chromium-driver; }
 	@command -v wasm-pack >/dev/null || cargo install wasm-pack --locked
 
-deps: deps-build deps-browser
+## Checkers nobody here wrote, for what leaves the product (trimesh for meshes).
+deps-check:
+	@python3 -c 'import trimesh, networkx, lxml' 2>/dev/null || \
+	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml
+
+deps: deps-build deps-browser deps-check
 
 ## Build: release wasm, wasm-bindgen, wasm-opt from npm's binaryen (for speed: -Os gives
 ## about the same size gzipped and slower code).
@@ -65,7 +70,12 @@ test-page: build deps-browser
 	cargo build --release --bin seashells
 	node --test --test-concurrency=1 tests/page/
 
-test: deps lint test-native test-browser test-page
+## Exported files read back by third-party libraries.
+test-files: deps-check
+	cargo build --release --bin seashells
+	python3 -m unittest discover --start-directory tests/files --verbose
+
+test: deps lint test-native test-files test-browser test-page
 
 ## Benchmarks print figures; they assert nothing.
 
