@@ -1,0 +1,450 @@
+//! glTF 2.0 binary (GLB), the web's 3D format, in the shell's colours.
+//!
+//! Two primitives: the outer surface, whose `TEXCOORD_0` places the vertex's pattern
+//! coordinates on the coloured planar pattern (embedded as a PNG `baseColorTexture`, filtered
+//! by the viewer to the colours the page shows; the ground colour as a factor when there is no
+//! pattern), and the parts without a pattern (the inside of the wall, the lip and caps) in the
+//! interior colour. Vertices are welded where every attribute agrees, so the surface is smooth
+//! where the form made it smooth and split where the form split it (creases, the faceted look,
+//! the seam where the pattern's x wraps). A triangle belongs to the part of its first corner,
+//! whose surface the page's shader uses for the whole triangle.
+//!
+//! The mesh keeps the shell's own coordinates; the node turns it apex up (+y) to face the
+//! viewer's front (+z) as the page first shows it, and scales it to its height in metres.
+//! The JSON is written with `serde_json`, which the crate already uses: the document is a few
+//! dozen fixed fields, and a typed glTF crate would add more code than it saves.
+
+use super::error::ExportError;
+use super::placement::{fit, turn};
+use super::png::{PngRows, rows_per_step};
+use super::shell::Shell;
+use super::steps::{Cursor, Writer, progress};
+use crate::mesh::{Bounds, Vertex};
+use glam::{DQuat, DVec3, Vec3};
+use serde_json::{Value, json};
+use std::collections::HashMap;
+
+/// Triangles welded per step.
+const TRIANGLES_PER_STEP: usize = 4096;
+/// Vertices written per step.
+const VERTICES_PER_STEP: usize = 8192;
+/// Shares of the work: welding, vertices, texture, assembly.
+const WEIGHTS: [f64; 4] = [0.45, 0.25, 0.25, 0.05];
+
+/// glTF's numbers for what the file uses.
+const FLOAT: u32 = 5126;
+const UNSIGNED_INT: u32 = 5125;
+const ARRAY_BUFFER: u32 = 34962;
+const ELEMENT_ARRAY_BUFFER: u32 = 34963;
+const LINEAR: u32 = 9729;
+const LINEAR_MIPMAP_LINEAR: u32 = 9987;
+const CLAMP_TO_EDGE: u32 = 33071;
+
+/// One primitive: the vertices welded into it, its triangles, and its attributes as bytes.
+#[derive(Default)]
+struct Part {
+    /// Welded vertex of each distinct vertex (every bit of its data).
+    keys: HashMap<[u32; 9], u32>,
+    /// The mesh's vertex each welded vertex copies.
+    sources: Vec<u32>,
+    /// Area-weighted normals of the triangles around each welded vertex, for a vertex whose
+    /// own normal is unusable.
+    around: Vec<Vec3>,
+    indices: Vec<u32>,
+    positions: Vec<u8>,
+    normals: Vec<u8>,
+    uvs: Vec<u8>,
+    min: [f32; 3],
+    max: [f32; 3],
+}
+
+impl Part {
+    fn weld(&mut self, vertex: &Vertex, source: u32) -> u32 {
+        let key: [u32; 9] = bytemuck::cast(*vertex);
+        *self.keys.entry(key).or_insert_with(|| {
+            self.sources.push(source);
+            self.around.push(Vec3::ZERO);
+            self.sources.len() as u32 - 1
+        })
+    }
+
+    fn len(&self) -> usize {
+        self.sources.len()
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Stage {
+    Weld,
+    Vertices,
+    Texture,
+    Assemble,
+}
+
+/// A GLB being written.
+pub(crate) struct Glb {
+    shell: Shell,
+    stage: Stage,
+    cursor: Cursor,
+    /// The outer surface, then the parts in the interior colour.
+    parts: [Part; 2],
+    turn: DQuat,
+    /// Bounds of the turned shell.
+    bounds: Bounds,
+    png: Option<PngRows>,
+    image: Vec<u8>,
+}
+
+impl Glb {
+    pub fn new(shell: Shell) -> Self {
+        let triangles = shell.mesh.triangle_count();
+        Self {
+            turn: turn(shell.facing, false),
+            shell,
+            stage: Stage::Weld,
+            cursor: Cursor::new(triangles),
+            parts: Default::default(),
+            bounds: Bounds::EMPTY,
+            png: None,
+            image: Vec::new(),
+        }
+    }
+
+    fn weld(&mut self) -> Result<(), ExportError> {
+        let mesh = &self.shell.mesh;
+        for t in self.cursor.next(TRIANGLES_PER_STEP) {
+            let corners = [0, 1, 2].map(|k| mesh.indices[3 * t + k]);
+            let [a, b, c] = corners.map(|i| mesh.vertices[i as usize].position);
+            if a == b || b == c || c == a {
+                continue;
+            }
+            let first = &mesh.vertices[corners[0] as usize];
+            let part = &mut self.parts[usize::from(!first.is_outer())];
+            let welded = corners.map(|i| part.weld(&mesh.vertices[i as usize], i));
+            let [a, b, c] = [a, b, c].map(Vec3::from);
+            let area = (b - a).cross(c - a);
+            for i in welded {
+                part.around[i as usize] += area;
+            }
+            part.indices.extend_from_slice(&welded);
+        }
+        if self.cursor.done() {
+            if self.parts.iter().all(|p| p.indices.is_empty()) {
+                return Err(ExportError::Empty);
+            }
+            self.stage = Stage::Vertices;
+            self.cursor = Cursor::new(self.parts[0].len() + self.parts[1].len());
+        }
+        Ok(())
+    }
+
+    fn vertices(&mut self) {
+        let outer = self.parts[0].len();
+        let textured = self.shell.paint.texture().is_some();
+        for i in self.cursor.next(VERTICES_PER_STEP) {
+            let (p, i) = if i < outer { (0, i) } else { (1, i - outer) };
+            let part = &mut self.parts[p];
+            let v = &self.shell.mesh.vertices[part.sources[i] as usize];
+            if i == 0 {
+                (part.min, part.max) = (v.position, v.position);
+            }
+            for k in 0..3 {
+                part.min[k] = part.min[k].min(v.position[k]);
+                part.max[k] = part.max[k].max(v.position[k]);
+            }
+            let position = DVec3::from(v.position.map(f64::from));
+            self.bounds.include(self.turn * position);
+            let normal = unit(Vec3::from(v.normal))
+                .or_else(|| unit(part.around[i]))
+                .unwrap_or(Vec3::Z);
+            part.positions
+                .extend(v.position.iter().flat_map(|x| x.to_le_bytes()));
+            part.normals
+                .extend(normal.to_array().iter().flat_map(|x| x.to_le_bytes()));
+            if p == 0 && textured {
+                let uv = self.shell.paint.uv(v.pattern);
+                part.uvs.extend(uv.iter().flat_map(|x| x.to_le_bytes()));
+            }
+        }
+        if self.cursor.done() {
+            match self.shell.paint.texture().filter(|_| outer > 0) {
+                Some(t) => {
+                    self.png = Some(PngRows::new(t.width, t.height, png::ColorType::Rgb));
+                    self.cursor = Cursor::new(t.height);
+                    self.stage = Stage::Texture;
+                }
+                None => self.stage = Stage::Assemble,
+            }
+        }
+    }
+
+    fn texture(&mut self) {
+        let t = self.shell.paint.texture().expect("a texture to encode");
+        let row_bytes = t.width * 3;
+        let rows = self.cursor.next(rows_per_step(row_bytes));
+        let png = self.png.as_mut().expect("the texture's encoder");
+        png.write(&t.rgb[rows.start * row_bytes..rows.end * row_bytes]);
+        if self.cursor.done() {
+            self.image = self.png.take().map(PngRows::finish).unwrap_or_default();
+            self.stage = Stage::Assemble;
+        }
+    }
+
+    fn assemble(&mut self) -> Vec<u8> {
+        let mut bin = Bin::default();
+        let mut primitives = Vec::new();
+        let mut materials = Vec::new();
+        let paint = &self.shell.paint;
+        let roughness = self.shell.roughness;
+        let image = (!self.image.is_empty()).then(|| bin.view(&self.image, None));
+        for (p, part) in self.parts.iter().enumerate() {
+            if part.indices.is_empty() {
+                continue;
+            }
+            let count = part.len();
+            let position = bin.accessor(
+                &part.positions,
+                ARRAY_BUFFER,
+                count,
+                "VEC3",
+                Some((&part.min, &part.max)),
+            );
+            let normal = bin.accessor(&part.normals, ARRAY_BUFFER, count, "VEC3", None);
+            let mut attributes = json!({ "POSITION": position, "NORMAL": normal });
+            let base = if p == 0 && image.is_some() {
+                attributes["TEXCOORD_0"] = bin
+                    .accessor(&part.uvs, ARRAY_BUFFER, count, "VEC2", None)
+                    .into();
+                json!({ "baseColorTexture": { "index": 0 } })
+            } else {
+                let colour = if p == 0 {
+                    paint.ground()
+                } else {
+                    paint.interior()
+                };
+                let [r, g, b] = paint.linear(colour);
+                json!({ "baseColorFactor": [r, g, b, 1.0] })
+            };
+            let indices = bin.indices(&part.indices);
+            let mut pbr = base;
+            pbr["metallicFactor"] = 0.0.into();
+            pbr["roughnessFactor"] = roughness.into();
+            primitives.push(json!({
+                "attributes": attributes,
+                "indices": indices,
+                "material": materials.len(),
+                "mode": 4,
+            }));
+            materials.push(json!({
+                "name": if p == 0 { "shell" } else { "interior" },
+                "pbrMetallicRoughness": pbr,
+                "doubleSided": true,
+            }));
+        }
+        let (scale, translation) = fit(&self.bounds, self.shell.size.mm() / 1000.0, 1);
+        let q = self.turn;
+        let mut document = json!({
+            "asset": { "version": "2.0", "generator": "seashells" },
+            "scene": 0,
+            "scenes": [{ "nodes": [0] }],
+            "nodes": [{
+                "name": self.shell.title,
+                "mesh": 0,
+                "rotation": [q.x, q.y, q.z, q.w],
+                "scale": [scale, scale, scale],
+                "translation": translation.to_array(),
+            }],
+            "meshes": [{ "name": self.shell.title, "primitives": primitives }],
+            "materials": materials,
+        });
+        if let Some(view) = image {
+            document["images"] = json!([{ "bufferView": view, "mimeType": "image/png" }]);
+            document["samplers"] = json!([{
+                "magFilter": LINEAR,
+                "minFilter": LINEAR_MIPMAP_LINEAR,
+                "wrapS": CLAMP_TO_EDGE,
+                "wrapT": CLAMP_TO_EDGE,
+            }]);
+            document["textures"] = json!([{ "sampler": 0, "source": 0 }]);
+        }
+        document["accessors"] = Value::Array(std::mem::take(&mut bin.accessors));
+        document["bufferViews"] = Value::Array(std::mem::take(&mut bin.views));
+        document["buffers"] = json!([{ "byteLength": bin.bytes.len() }]);
+        container(&document.to_string(), &bin.bytes)
+    }
+}
+
+/// The normal scaled to unit length, if it has a direction.
+fn unit(n: Vec3) -> Option<Vec3> {
+    let n = n.try_normalize()?;
+    n.is_finite().then_some(n)
+}
+
+/// The binary buffer and the views and accessors into it.
+#[derive(Default)]
+struct Bin {
+    bytes: Vec<u8>,
+    views: Vec<Value>,
+    accessors: Vec<Value>,
+}
+
+impl Bin {
+    /// Appends `data` (at a multiple of four bytes) as a buffer view; returns its index.
+    fn view(&mut self, data: &[u8], target: Option<u32>) -> usize {
+        self.bytes.resize(self.bytes.len().next_multiple_of(4), 0);
+        let mut view = json!({
+            "buffer": 0,
+            "byteOffset": self.bytes.len(),
+            "byteLength": data.len(),
+        });
+        if let Some(target) = target {
+            view["target"] = target.into();
+        }
+        self.bytes.extend_from_slice(data);
+        self.views.push(view);
+        self.views.len() - 1
+    }
+
+    /// Appends float vectors of `kind` ("VEC2", "VEC3"), with their bounds when given; returns
+    /// the accessor's index.
+    fn accessor(
+        &mut self,
+        data: &[u8],
+        target: u32,
+        count: usize,
+        kind: &str,
+        bounds: Option<(&[f32; 3], &[f32; 3])>,
+    ) -> usize {
+        let view = self.view(data, Some(target));
+        let mut accessor = json!({
+            "bufferView": view,
+            "componentType": FLOAT,
+            "count": count,
+            "type": kind,
+        });
+        if let Some((min, max)) = bounds {
+            // As doubles equal to the floats, so that readers compare them exactly.
+            accessor["min"] = json!(min.map(f64::from));
+            accessor["max"] = json!(max.map(f64::from));
+        }
+        self.accessors.push(accessor);
+        self.accessors.len() - 1
+    }
+
+    /// Appends triangle indices; returns the accessor's index.
+    fn indices(&mut self, indices: &[u32]) -> usize {
+        let view = self.view(bytemuck::cast_slice(indices), Some(ELEMENT_ARRAY_BUFFER));
+        self.accessors.push(json!({
+            "bufferView": view,
+            "componentType": UNSIGNED_INT,
+            "count": indices.len(),
+            "type": "SCALAR",
+        }));
+        self.accessors.len() - 1
+    }
+}
+
+/// The GLB container: a 12-byte header, the JSON chunk (padded with spaces) and the binary
+/// chunk (padded with zeros), each to a multiple of four bytes.
+fn container(json: &str, bin: &[u8]) -> Vec<u8> {
+    let json_len = json.len().next_multiple_of(4);
+    let bin_len = bin.len().next_multiple_of(4);
+    let total = 12 + 8 + json_len + 8 + bin_len;
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&(total as u32).to_le_bytes());
+    out.extend_from_slice(&(json_len as u32).to_le_bytes());
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(json.as_bytes());
+    out.resize(20 + json_len, b' ');
+    out.extend_from_slice(&(bin_len as u32).to_le_bytes());
+    out.extend_from_slice(b"BIN\0");
+    out.extend_from_slice(bin);
+    out.resize(total, 0);
+    out
+}
+
+impl Writer for Glb {
+    fn step(&mut self) -> Result<Option<Vec<u8>>, ExportError> {
+        match self.stage {
+            Stage::Weld => self.weld()?,
+            Stage::Vertices => self.vertices(),
+            Stage::Texture => self.texture(),
+            Stage::Assemble => return Ok(Some(self.assemble())),
+        }
+        Ok(None)
+    }
+
+    fn progress(&self) -> f64 {
+        let stage = match self.stage {
+            Stage::Weld => 0,
+            Stage::Vertices => 1,
+            Stage::Texture => 2,
+            Stage::Assemble => 3,
+        };
+        progress(&WEIGHTS, stage, self.cursor.fraction())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::export::print_size::PrintSize;
+    use crate::export::steps::Export;
+    use crate::generator::Generator;
+    use crate::presets::preset;
+
+    fn glb(id: &str) -> (Vec<u8>, Value, usize) {
+        let preset = preset(id).unwrap();
+        let mut g = Generator::new(&preset.spec).unwrap();
+        g.finish();
+        let shell = Shell::new(&g, &preset.spec, preset, PrintSize::default()).unwrap();
+        let triangles = shell.mesh.triangle_count();
+        let bytes = Export::new(super::super::MeshFormat::Glb, shell)
+            .and_then(Export::run)
+            .unwrap();
+        let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+        let json = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
+        (bytes, json, triangles)
+    }
+
+    #[test]
+    fn a_patterned_shell_has_a_textured_outer_part_and_an_interior_part() {
+        let (bytes, doc, triangles) = glb("oliva-porphyria");
+        assert_eq!(&bytes[..4], b"glTF");
+        assert_eq!(
+            u32::from_le_bytes(bytes[8..12].try_into().unwrap()) as usize,
+            bytes.len()
+        );
+        let primitives = doc["meshes"][0]["primitives"].as_array().unwrap();
+        assert_eq!(primitives.len(), 2);
+        assert!(primitives[0]["attributes"]["TEXCOORD_0"].is_u64());
+        assert!(primitives[1]["attributes"]["TEXCOORD_0"].is_null());
+        let written: u64 = primitives
+            .iter()
+            .map(|p| {
+                doc["accessors"][p["indices"].as_u64().unwrap() as usize]["count"]
+                    .as_u64()
+                    .unwrap()
+                    / 3
+            })
+            .sum();
+        assert!(written as usize <= triangles && written as usize > triangles * 99 / 100);
+        assert_eq!(doc["images"][0]["mimeType"], "image/png");
+        let roughness = doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"]
+            .as_f64()
+            .unwrap();
+        assert!((roughness - 0.225).abs() < 1e-6, "{roughness}");
+        assert!(doc["materials"][1]["pbrMetallicRoughness"]["baseColorFactor"].is_array());
+    }
+
+    #[test]
+    fn a_shell_without_a_pattern_has_its_ground_colour_and_no_texture() {
+        let (_, doc, _) = glb("kawaguchi-shell");
+        assert!(doc["images"].is_null());
+        let outer = &doc["materials"][0]["pbrMetallicRoughness"];
+        assert!(outer["baseColorTexture"].is_null());
+        assert_eq!(outer["baseColorFactor"].as_array().unwrap().len(), 4);
+    }
+}
