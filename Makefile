@@ -20,23 +20,35 @@ run: build
 
 ## Installation: each step skips what is already there.
 
+# Exits non-zero unless every devDependency of package.json is in node_modules at its version.
+define NPM_INSTALLED
+const wanted = require('./package.json').devDependencies;
+for (const [name, version] of Object.entries(wanted)) {
+  let found;
+  try { found = require(`./node_modules/$${name}/package.json`).version; } catch { found = 'missing'; }
+  if (found !== version) { console.log(`npm: $${name} $${version} is $${found}`); process.exit(1); }
+}
+endef
+export NPM_INSTALLED
+
 deps-build:
 	@rustup target list --installed | grep -qx $(TARGET) || rustup target add $(TARGET)
 	@if [ "$$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen $(WASM_BINDGEN_VERSION)" ]; then \
 	  echo "Installing wasm-bindgen-cli $(WASM_BINDGEN_VERSION) (about two minutes)"; \
 	  cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION); fi
 	@command -v node >/dev/null || { $(APT) update && $(APT) install -y nodejs npm; }
-	@[ -x $(BIN)/wasm-opt ] && [ -d node_modules/playwright-core ] || npm ci --no-audit --no-fund
+	@node -e "$$NPM_INSTALLED" || npm ci --no-audit --no-fund
 
 deps-browser:
 	@command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
 	  { $(APT) update && $(APT) install -y chromium chromium-driver; }
 	@command -v wasm-pack >/dev/null || cargo install wasm-pack --locked
 
-## Checkers nobody here wrote, for what leaves the product (trimesh for meshes).
+## Checkers nobody here wrote, for what leaves the product: trimesh for meshes (networkx and
+## lxml for 3MF, Pillow for textures), the Khronos glTF validator (npm, in deps-build).
 deps-check:
-	@python3 -c 'import trimesh, networkx, lxml' 2>/dev/null || \
-	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml
+	@python3 -c 'import trimesh, networkx, lxml, PIL' 2>/dev/null || \
+	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml pillow
 
 deps: deps-build deps-browser deps-check
 
@@ -70,8 +82,8 @@ test-page: build deps-browser
 	cargo build --release --bin seashells
 	node --test --test-concurrency=1 tests/page/
 
-## Exported files read back by third-party libraries.
-test-files: deps-check
+## Exported files read back by third-party libraries and checkers.
+test-files: deps-build deps-check
 	cargo build --release --bin seashells
 	python3 -m unittest discover --start-directory tests/files --verbose
 
