@@ -7,12 +7,13 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::DVec3;
-use seashells_core::export::MeshFormat;
 use seashells_core::export::error::ExportError;
+use seashells_core::export::estimate::{Counts, Size};
 use seashells_core::export::paint::Paint;
 use seashells_core::export::print_size::PrintSize;
 use seashells_core::export::shell::Shell;
 use seashells_core::export::steps::Export;
+use seashells_core::export::{Download, MeshFormat};
 use seashells_core::generator::Generator;
 use seashells_core::mesh::{Mesh, Surface, Vertex};
 use seashells_core::presets::preset;
@@ -151,7 +152,12 @@ fn a_surface_without_a_wall_is_refused_as_3mf_and_exported_as_glb() {
         .and_then(Export::run)
         .unwrap_err();
     assert!(
-        matches!(e, ExportError::Open { key: "form.wall.thickness", edges } if edges > 0),
+        matches!(
+            e,
+            ExportError::Open {
+                key: "form.wall.thickness"
+            }
+        ),
         "{e:?}"
     );
     assert!(e.to_string().contains("form.wall.thickness"), "{e}");
@@ -160,4 +166,47 @@ fn a_surface_without_a_wall_is_refused_as_3mf_and_exported_as_glb() {
             .and_then(Export::run)
             .is_ok()
     );
+}
+
+#[test]
+fn the_sizes_shown_before_export_are_within_half_again_of_the_files() {
+    for id in [
+        "oliva-porphyria",
+        "turbinate",
+        "kawaguchi-painted",
+        "kawaguchi-coral",
+        "implicit-whorl",
+        "murex-cabritii",
+    ] {
+        let (generator, _) = grown(&format!("v=1&preset={id}"));
+        let counts = Counts {
+            vertices: generator.mesh().vertices.len() + generator.edge().vertices.len(),
+            triangles: generator.mesh().triangle_count() + generator.edge().triangle_count(),
+            pattern: generator.pattern().map(|p| (p.cells(), p.rows())),
+            picture: (800, 600),
+        };
+        for format in MeshFormat::ALL {
+            let file = Export::new(format, shell(&format!("v=1&preset={id}")))
+                .and_then(Export::run)
+                .unwrap()
+                .len() as f64;
+            let Some(Size::Bytes(estimate)) = Download::Mesh(format).estimate(&counts) else {
+                panic!("no estimate of {format:?}");
+            };
+            let ratio = estimate as f64 / file;
+            println!("{id} {format:?}: {estimate} for {file} ({ratio:.2})");
+            assert!(
+                (1.0 / 1.5..1.5).contains(&ratio),
+                "{id} {format:?}: {estimate} for {file}"
+            );
+        }
+        assert_eq!(
+            Download::Pattern.estimate(&counts),
+            counts.pattern.map(|(w, h)| Size::Pixels(w, h))
+        );
+        assert_eq!(
+            Download::Picture.estimate(&counts),
+            Some(Size::Pixels(800, 600))
+        );
+    }
 }

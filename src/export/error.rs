@@ -9,9 +9,9 @@ pub enum ExportError {
     Empty,
     /// Growth stopped early; the message says why.
     Failed(String),
-    /// A closed solid was needed (3MF, for printing) and the surface is open along `edges`
-    /// edges: a swept shell with no wall is a single surface.
-    Open { key: &'static str, edges: usize },
+    /// A closed solid was needed (3MF, for printing) and the surface is open: a swept shell
+    /// with no wall is a single surface.
+    Open { key: &'static str },
     /// The print size (mm) is outside what makes sense.
     Size {
         key: &'static str,
@@ -34,15 +34,19 @@ impl fmt::Display for ExportError {
                  export ({})",
                 why.trim_end_matches('.')
             ),
-            ExportError::Open { key, edges } => write!(
+            ExportError::Open { key } => write!(
                 f,
-                "3MF holds closed solids for printing, and this shell is a surface open along \
-                 {edges} edges: give it a wall ({key} above 0)"
+                "3MF holds closed solids for printing, and this shell is an open surface: give \
+                 it a wall ({key} above 0)"
             ),
-            ExportError::Size { key, mm, min, max } => write!(
+            ExportError::Size { key, mm, min, max } if mm.is_finite() => write!(
                 f,
-                "{key}: {mm} mm is not a sensible height for the exported shell (from {min} to \
-                 {max} mm)"
+                "{key}: {mm} mm is outside the heights an exported shell may have, {min} to \
+                 {max} mm"
+            ),
+            ExportError::Size { key, min, max, .. } => write!(
+                f,
+                "{key}: give the exported shell's height in millimetres, from {min} to {max}"
             ),
         }
     }

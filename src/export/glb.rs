@@ -28,8 +28,12 @@ use std::collections::HashMap;
 const TRIANGLES_PER_STEP: usize = 4096;
 /// Vertices written per step.
 const VERTICES_PER_STEP: usize = 8192;
-/// Shares of the work: welding, vertices, texture, assembly.
-const WEIGHTS: [f64; 4] = [0.45, 0.25, 0.25, 0.05];
+/// Indices copied per step.
+const INDICES_PER_STEP: usize = 65_536;
+/// Bytes of the binary buffer copied into the file per step.
+const BYTES_PER_STEP: usize = 1 << 20;
+/// Shares of the work: welding, vertices, indices, texture, assembly, copying.
+const WEIGHTS: [f64; 6] = [0.45, 0.2, 0.05, 0.2, 0.01, 0.09];
 
 /// glTF's numbers for what the file uses.
 const FLOAT: u32 = 5126;
@@ -40,7 +44,16 @@ const LINEAR: u32 = 9729;
 const LINEAR_MIPMAP_LINEAR: u32 = 9987;
 const CLAMP_TO_EDGE: u32 = 33071;
 
-/// One primitive: the vertices welded into it, its triangles, and its attributes as bytes.
+/// Where a part's arrays lie in the binary buffer (byte offsets).
+#[derive(Clone, Copy, Default)]
+struct Layout {
+    positions: usize,
+    normals: usize,
+    uvs: Option<usize>,
+    indices: usize,
+}
+
+/// One primitive: the vertices welded into it, its triangles, and where they are written.
 #[derive(Default)]
 struct Part {
     /// Welded vertex of each distinct vertex (every bit of its data).
@@ -51,14 +64,19 @@ struct Part {
     /// own normal is unusable.
     around: Vec<Vec3>,
     indices: Vec<u32>,
-    positions: Vec<u8>,
-    normals: Vec<u8>,
-    uvs: Vec<u8>,
+    layout: Layout,
     min: [f32; 3],
     max: [f32; 3],
 }
 
 impl Part {
+    fn with_capacity(vertices: usize) -> Self {
+        Self {
+            keys: HashMap::with_capacity(vertices),
+            ..Self::default()
+        }
+    }
+
     fn weld(&mut self, vertex: &Vertex, source: u32) -> u32 {
         let key: [u32; 9] = bytemuck::cast(*vertex);
         *self.keys.entry(key).or_insert_with(|| {
@@ -77,8 +95,10 @@ impl Part {
 enum Stage {
     Weld,
     Vertices,
+    Indices,
     Texture,
     Assemble,
+    Copy,
 }
 
 /// A GLB being written.
@@ -91,23 +111,37 @@ pub(crate) struct Glb {
     turn: DQuat,
     /// Bounds of the turned shell.
     bounds: Bounds,
+    /// The binary buffer's vertex and index arrays, laid out once the welding has counted them.
+    bin: Vec<u8>,
     png: Option<PngRows>,
     image: Vec<u8>,
+    /// The file.
+    out: Vec<u8>,
 }
 
 impl Glb {
     pub fn new(shell: Shell) -> Self {
-        let triangles = shell.mesh.triangle_count();
+        let (triangles, vertices) = (shell.mesh.triangle_count(), shell.mesh.vertices.len());
+        let outer = shell.mesh.vertices.iter().filter(|v| v.is_outer()).count();
         Self {
             turn: turn(shell.facing, false),
             shell,
             stage: Stage::Weld,
             cursor: Cursor::new(triangles),
-            parts: Default::default(),
+            parts: [
+                Part::with_capacity(outer),
+                Part::with_capacity(vertices - outer),
+            ],
             bounds: Bounds::EMPTY,
+            bin: Vec::new(),
             png: None,
             image: Vec::new(),
+            out: Vec::new(),
         }
+    }
+
+    fn textured(&self) -> bool {
+        self.shell.paint.texture().is_some()
     }
 
     fn weld(&mut self) -> Result<(), ExportError> {
@@ -132,15 +166,37 @@ impl Glb {
             if self.parts.iter().all(|p| p.indices.is_empty()) {
                 return Err(ExportError::Empty);
             }
+            self.lay_out();
             self.stage = Stage::Vertices;
             self.cursor = Cursor::new(self.parts[0].len() + self.parts[1].len());
         }
         Ok(())
     }
 
+    /// Places every part's arrays in the binary buffer, each at a multiple of four bytes.
+    fn lay_out(&mut self) {
+        let textured = self.textured();
+        let mut at = 0;
+        let mut take = |bytes: usize| {
+            let start = at;
+            at += bytes.next_multiple_of(4);
+            start
+        };
+        for (p, part) in self.parts.iter_mut().enumerate() {
+            part.keys = HashMap::new();
+            let n = part.len();
+            part.layout = Layout {
+                positions: take(12 * n),
+                normals: take(12 * n),
+                uvs: (p == 0 && textured).then(|| take(8 * n)),
+                indices: take(4 * part.indices.len()),
+            };
+        }
+        self.bin = vec![0; at];
+    }
+
     fn vertices(&mut self) {
         let outer = self.parts[0].len();
-        let textured = self.shell.paint.texture().is_some();
         for i in self.cursor.next(VERTICES_PER_STEP) {
             let (p, i) = if i < outer { (0, i) } else { (1, i - outer) };
             let part = &mut self.parts[p];
@@ -157,17 +213,37 @@ impl Glb {
             let normal = unit(Vec3::from(v.normal))
                 .or_else(|| unit(part.around[i]))
                 .unwrap_or(Vec3::Z);
-            part.positions
-                .extend(v.position.iter().flat_map(|x| x.to_le_bytes()));
-            part.normals
-                .extend(normal.to_array().iter().flat_map(|x| x.to_le_bytes()));
-            if p == 0 && textured {
-                let uv = self.shell.paint.uv(v.pattern);
-                part.uvs.extend(uv.iter().flat_map(|x| x.to_le_bytes()));
+            let layout = part.layout;
+            put(&mut self.bin, layout.positions + 12 * i, &v.position);
+            put(&mut self.bin, layout.normals + 12 * i, &normal.to_array());
+            if let Some(uvs) = layout.uvs {
+                put(&mut self.bin, uvs + 8 * i, &self.shell.paint.uv(v.pattern));
             }
         }
         if self.cursor.done() {
-            match self.shell.paint.texture().filter(|_| outer > 0) {
+            self.stage = Stage::Indices;
+            self.cursor = Cursor::new(self.parts[0].indices.len() + self.parts[1].indices.len());
+        }
+    }
+
+    fn indices(&mut self) {
+        let outer = self.parts[0].indices.len();
+        let range = self.cursor.next(INDICES_PER_STEP);
+        for (p, part) in self.parts.iter().enumerate() {
+            let base = if p == 0 { 0 } else { outer };
+            let start = range.start.clamp(base, base + part.indices.len()) - base;
+            let end = range.end.clamp(base, base + part.indices.len()) - base;
+            let at = part.layout.indices + 4 * start;
+            self.bin[at..at + 4 * (end - start)]
+                .copy_from_slice(bytemuck::cast_slice(&part.indices[start..end]));
+        }
+        if self.cursor.done() {
+            match self
+                .shell
+                .paint
+                .texture()
+                .filter(|_| self.parts[0].len() > 0)
+            {
                 Some(t) => {
                     self.png = Some(PngRows::new(t.width, t.height, png::ColorType::Rgb));
                     self.cursor = Cursor::new(t.height);
@@ -190,48 +266,44 @@ impl Glb {
         }
     }
 
-    fn assemble(&mut self) -> Vec<u8> {
-        let mut bin = Bin::default();
-        let mut primitives = Vec::new();
-        let mut materials = Vec::new();
+    /// The glTF document of the parts laid out in the binary buffer, and the image after them.
+    fn document(&self) -> Value {
+        let mut views = Views::default();
+        let (mut primitives, mut materials) = (Vec::new(), Vec::new());
         let paint = &self.shell.paint;
         let roughness = self.shell.roughness;
-        let image = (!self.image.is_empty()).then(|| bin.view(&self.image, None));
+        let image =
+            (!self.image.is_empty()).then(|| views.add(self.bin.len(), self.image.len(), None));
         for (p, part) in self.parts.iter().enumerate() {
             if part.indices.is_empty() {
                 continue;
             }
-            let count = part.len();
-            let position = bin.accessor(
-                &part.positions,
-                ARRAY_BUFFER,
-                count,
-                "VEC3",
-                Some((&part.min, &part.max)),
-            );
-            let normal = bin.accessor(&part.normals, ARRAY_BUFFER, count, "VEC3", None);
+            let (n, layout) = (part.len(), part.layout);
+            let position = views.floats(layout.positions, n, "VEC3");
+            views.accessors[position]["min"] = json!(part.min.map(f64::from));
+            views.accessors[position]["max"] = json!(part.max.map(f64::from));
+            let normal = views.floats(layout.normals, n, "VEC3");
             let mut attributes = json!({ "POSITION": position, "NORMAL": normal });
-            let base = if p == 0 && image.is_some() {
-                attributes["TEXCOORD_0"] = bin
-                    .accessor(&part.uvs, ARRAY_BUFFER, count, "VEC2", None)
-                    .into();
-                json!({ "baseColorTexture": { "index": 0 } })
-            } else {
-                let colour = if p == 0 {
-                    paint.ground()
-                } else {
-                    paint.interior()
-                };
-                let [r, g, b] = paint.linear(colour);
-                json!({ "baseColorFactor": [r, g, b, 1.0] })
+            let mut pbr = match layout.uvs.filter(|_| image.is_some()) {
+                Some(uvs) => {
+                    attributes["TEXCOORD_0"] = views.floats(uvs, n, "VEC2").into();
+                    json!({ "baseColorTexture": { "index": 0 } })
+                }
+                None => {
+                    let colour = if p == 0 {
+                        paint.ground()
+                    } else {
+                        paint.interior()
+                    };
+                    let [r, g, b] = paint.linear(colour);
+                    json!({ "baseColorFactor": [r, g, b, 1.0] })
+                }
             };
-            let indices = bin.indices(&part.indices);
-            let mut pbr = base;
             pbr["metallicFactor"] = 0.0.into();
             pbr["roughnessFactor"] = roughness.into();
             primitives.push(json!({
                 "attributes": attributes,
-                "indices": indices,
+                "indices": views.indices(layout.indices, part.indices.len()),
                 "material": materials.len(),
                 "mode": 4,
             }));
@@ -256,6 +328,9 @@ impl Glb {
             }],
             "meshes": [{ "name": self.shell.title, "primitives": primitives }],
             "materials": materials,
+            "accessors": views.accessors,
+            "bufferViews": views.views,
+            "buffers": [{ "byteLength": (self.bin.len() + self.image.len()).next_multiple_of(4) }],
         });
         if let Some(view) = image {
             document["images"] = json!([{ "bufferView": view, "mimeType": "image/png" }]);
@@ -267,10 +342,50 @@ impl Glb {
             }]);
             document["textures"] = json!([{ "sampler": 0, "source": 0 }]);
         }
-        document["accessors"] = Value::Array(std::mem::take(&mut bin.accessors));
-        document["bufferViews"] = Value::Array(std::mem::take(&mut bin.views));
-        document["buffers"] = json!([{ "byteLength": bin.bytes.len() }]);
-        container(&document.to_string(), &bin.bytes)
+        document
+    }
+
+    /// Starts the GLB container: a 12-byte header, the JSON chunk (padded with spaces to a
+    /// multiple of four bytes) and the binary chunk's header; its data (the arrays, then the
+    /// image, padded with zeros) follows a megabyte a step.
+    fn assemble(&mut self) {
+        let json = self.document().to_string();
+        let json_len = json.len().next_multiple_of(4);
+        let bin_len = (self.bin.len() + self.image.len()).next_multiple_of(4);
+        let total = 12 + 8 + json_len + 8 + bin_len;
+        let out = &mut self.out;
+        out.reserve_exact(total);
+        out.extend_from_slice(b"glTF");
+        out.extend_from_slice(&2u32.to_le_bytes());
+        out.extend_from_slice(&(total as u32).to_le_bytes());
+        out.extend_from_slice(&(json_len as u32).to_le_bytes());
+        out.extend_from_slice(b"JSON");
+        out.extend_from_slice(json.as_bytes());
+        out.resize(20 + json_len, b' ');
+        out.extend_from_slice(&(bin_len as u32).to_le_bytes());
+        out.extend_from_slice(b"BIN\0");
+        self.stage = Stage::Copy;
+        self.cursor = Cursor::new(self.bin.len());
+    }
+
+    /// Copies the next megabyte of the arrays; the whole file once they and the image are in.
+    fn copy(&mut self) -> Option<Vec<u8>> {
+        let range = self.cursor.next(BYTES_PER_STEP);
+        self.out.extend_from_slice(&self.bin[range]);
+        if !self.cursor.done() {
+            return None;
+        }
+        self.out.extend_from_slice(&self.image);
+        let total = u32::from_le_bytes(self.out[8..12].try_into().expect("the header's length"));
+        self.out.resize(total as usize, 0);
+        Some(std::mem::take(&mut self.out))
+    }
+}
+
+/// Writes floats at `at` in `bin`, little-endian.
+fn put(bin: &mut [u8], at: usize, values: &[f32]) {
+    for (k, x) in values.iter().enumerate() {
+        bin[at + 4 * k..at + 4 * k + 4].copy_from_slice(&x.to_le_bytes());
     }
 }
 
@@ -280,89 +395,49 @@ fn unit(n: Vec3) -> Option<Vec3> {
     n.is_finite().then_some(n)
 }
 
-/// The binary buffer and the views and accessors into it.
+/// The buffer views and accessors of the document.
 #[derive(Default)]
-struct Bin {
-    bytes: Vec<u8>,
+struct Views {
     views: Vec<Value>,
     accessors: Vec<Value>,
 }
 
-impl Bin {
-    /// Appends `data` (at a multiple of four bytes) as a buffer view; returns its index.
-    fn view(&mut self, data: &[u8], target: Option<u32>) -> usize {
-        self.bytes.resize(self.bytes.len().next_multiple_of(4), 0);
-        let mut view = json!({
-            "buffer": 0,
-            "byteOffset": self.bytes.len(),
-            "byteLength": data.len(),
-        });
+impl Views {
+    /// A view of `length` bytes at `offset` of the buffer; returns its index.
+    fn add(&mut self, offset: usize, length: usize, target: Option<u32>) -> usize {
+        let mut view = json!({ "buffer": 0, "byteOffset": offset, "byteLength": length });
         if let Some(target) = target {
             view["target"] = target.into();
         }
-        self.bytes.extend_from_slice(data);
         self.views.push(view);
         self.views.len() - 1
     }
 
-    /// Appends float vectors of `kind` ("VEC2", "VEC3"), with their bounds when given; returns
-    /// the accessor's index.
-    fn accessor(
-        &mut self,
-        data: &[u8],
-        target: u32,
-        count: usize,
-        kind: &str,
-        bounds: Option<(&[f32; 3], &[f32; 3])>,
-    ) -> usize {
-        let view = self.view(data, Some(target));
-        let mut accessor = json!({
+    /// An accessor of `count` float vectors of `kind` ("VEC2", "VEC3") at `offset`; returns
+    /// its index.
+    fn floats(&mut self, offset: usize, count: usize, kind: &str) -> usize {
+        let size = if kind == "VEC2" { 8 } else { 12 };
+        let view = self.add(offset, size * count, Some(ARRAY_BUFFER));
+        self.accessors.push(json!({
             "bufferView": view,
             "componentType": FLOAT,
             "count": count,
             "type": kind,
-        });
-        if let Some((min, max)) = bounds {
-            // As doubles equal to the floats, so that readers compare them exactly.
-            accessor["min"] = json!(min.map(f64::from));
-            accessor["max"] = json!(max.map(f64::from));
-        }
-        self.accessors.push(accessor);
+        }));
         self.accessors.len() - 1
     }
 
-    /// Appends triangle indices; returns the accessor's index.
-    fn indices(&mut self, indices: &[u32]) -> usize {
-        let view = self.view(bytemuck::cast_slice(indices), Some(ELEMENT_ARRAY_BUFFER));
+    /// An accessor of `count` triangle indices at `offset`; returns its index.
+    fn indices(&mut self, offset: usize, count: usize) -> usize {
+        let view = self.add(offset, 4 * count, Some(ELEMENT_ARRAY_BUFFER));
         self.accessors.push(json!({
             "bufferView": view,
             "componentType": UNSIGNED_INT,
-            "count": indices.len(),
+            "count": count,
             "type": "SCALAR",
         }));
         self.accessors.len() - 1
     }
-}
-
-/// The GLB container: a 12-byte header, the JSON chunk (padded with spaces) and the binary
-/// chunk (padded with zeros), each to a multiple of four bytes.
-fn container(json: &str, bin: &[u8]) -> Vec<u8> {
-    let json_len = json.len().next_multiple_of(4);
-    let bin_len = bin.len().next_multiple_of(4);
-    let total = 12 + 8 + json_len + 8 + bin_len;
-    let mut out = Vec::with_capacity(total);
-    out.extend_from_slice(b"glTF");
-    out.extend_from_slice(&2u32.to_le_bytes());
-    out.extend_from_slice(&(total as u32).to_le_bytes());
-    out.extend_from_slice(&(json_len as u32).to_le_bytes());
-    out.extend_from_slice(b"JSON");
-    out.extend_from_slice(json.as_bytes());
-    out.resize(20 + json_len, b' ');
-    out.extend_from_slice(&(bin_len as u32).to_le_bytes());
-    out.extend_from_slice(b"BIN\0");
-    out.extend_from_slice(bin);
-    out.resize(total, 0);
-    out
 }
 
 impl Writer for Glb {
@@ -370,8 +445,10 @@ impl Writer for Glb {
         match self.stage {
             Stage::Weld => self.weld()?,
             Stage::Vertices => self.vertices(),
+            Stage::Indices => self.indices(),
             Stage::Texture => self.texture(),
-            Stage::Assemble => return Ok(Some(self.assemble())),
+            Stage::Assemble => self.assemble(),
+            Stage::Copy => return Ok(self.copy()),
         }
         Ok(None)
     }
@@ -380,8 +457,10 @@ impl Writer for Glb {
         let stage = match self.stage {
             Stage::Weld => 0,
             Stage::Vertices => 1,
-            Stage::Texture => 2,
-            Stage::Assemble => 3,
+            Stage::Indices => 2,
+            Stage::Texture => 3,
+            Stage::Assemble => 4,
+            Stage::Copy => 5,
         };
         progress(&WEIGHTS, stage, self.cursor.fraction())
     }

@@ -6,6 +6,7 @@
 mod bodies;
 pub mod csv;
 pub mod error;
+pub mod estimate;
 mod glb;
 pub mod obj;
 pub mod paint;

@@ -8,7 +8,7 @@ use crate::mesh::Mesh;
 use std::fmt::Write;
 
 /// Vertices, normals or triangles per step.
-const PER_STEP: usize = 4096;
+const PER_STEP: usize = 2048;
 /// Shares of the work: welding, positions, normals, faces.
 const WEIGHTS: [f64; 4] = [0.1, 0.3, 0.3, 0.3];
 
@@ -30,6 +30,12 @@ pub(crate) struct Obj {
 
 impl Obj {
     pub fn new(mesh: Mesh) -> Self {
+        // About what the lines take (see `Download::estimate`), so the text grows in place.
+        let capacity = 60 * mesh.vertices.len() + 40 * mesh.triangle_count();
+        let mut out = String::with_capacity(capacity);
+        out.push_str(
+            "# seashells: a shell grown from the Fowler, Meinhardt & Prusinkiewicz model\n",
+        );
         Self {
             cursor: Cursor::new(mesh.vertices.len()),
             welder: Some(Welder::new(&mesh)),
@@ -37,9 +43,7 @@ impl Obj {
             stage: 0,
             welded: None,
             faces: 0,
-            out: String::from(
-                "# seashells: a shell grown from the Fowler, Meinhardt & Prusinkiewicz model\n",
-            ),
+            out,
         }
     }
 }

@@ -12,13 +12,14 @@ use super::weld::{Welded, Welder};
 use glam::Vec3;
 
 /// Vertices or triangles per step.
-const PER_STEP: usize = 8192;
-/// Shares of the work: welding, vertices, faces.
-const WEIGHTS: [f64; 3] = [0.4, 0.35, 0.25];
+const PER_STEP: usize = 4096;
+/// Shares of the work: welding, counting faces, vertices, faces.
+const WEIGHTS: [f64; 4] = [0.35, 0.05, 0.35, 0.25];
 
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Stage {
     Weld,
+    Count,
     Vertices,
     Faces,
 }
@@ -32,8 +33,8 @@ pub(crate) struct Ply {
     welded: Option<Welded>,
     /// The sum of the normals of every vertex at each position.
     normals: Vec<Vec3>,
-    body: Vec<u8>,
     faces: usize,
+    out: Vec<u8>,
 }
 
 impl Ply {
@@ -45,19 +46,24 @@ impl Ply {
             stage: Stage::Weld,
             welded: None,
             normals: Vec::new(),
-            body: Vec::new(),
             faces: 0,
+            out: Vec::new(),
         }
     }
 
-    fn header(&self, vertices: usize) -> String {
+    fn welded(&self) -> &Welded {
+        self.welded.as_ref().expect("welded")
+    }
+
+    fn header(&self) -> String {
         format!(
-            "ply\nformat binary_little_endian 1.0\ncomment seashells: {}\nelement vertex {vertices}\n\
+            "ply\nformat binary_little_endian 1.0\ncomment seashells: {}\nelement vertex {}\n\
              property float x\nproperty float y\nproperty float z\n\
              property float nx\nproperty float ny\nproperty float nz\n\
              property uchar red\nproperty uchar green\nproperty uchar blue\n\
              element face {}\nproperty list uchar uint vertex_indices\nend_header\n",
             self.shell.title.replace('\n', " "),
+            self.welded().positions.len(),
             self.faces
         )
     }
@@ -77,9 +83,26 @@ impl Writer for Ply {
                     for (v, &i) in mesh.vertices.iter().zip(&welded.index) {
                         self.normals[i as usize] += Vec3::from(v.normal);
                     }
-                    self.cursor = Cursor::new(welded.positions.len());
                     self.welded = Some(welded);
+                    self.stage = Stage::Count;
+                    self.cursor = Cursor::new(mesh.triangle_count());
+                }
+            }
+            Stage::Count => {
+                let welded = self.welded.as_ref().expect("welded");
+                self.faces += range
+                    .filter(|&t| welded.triangle(mesh, t).is_some())
+                    .count();
+                if self.cursor.done() {
+                    if self.faces == 0 {
+                        return Err(ExportError::Empty);
+                    }
+                    let header = self.header();
+                    let vertices = self.welded().positions.len();
+                    self.out = Vec::with_capacity(header.len() + 27 * vertices + 13 * self.faces);
+                    self.out.extend_from_slice(header.as_bytes());
                     self.stage = Stage::Vertices;
+                    self.cursor = Cursor::new(vertices);
                 }
             }
             Stage::Vertices => {
@@ -87,33 +110,26 @@ impl Writer for Ply {
                 for i in range {
                     let n = self.normals[i].normalize_or(Vec3::Z);
                     for x in welded.positions[i].iter().chain(n.to_array().iter()) {
-                        self.body.extend_from_slice(&x.to_le_bytes());
+                        self.out.extend_from_slice(&x.to_le_bytes());
                     }
                     let source = &mesh.vertices[welded.source[i] as usize];
-                    self.body
-                        .extend_from_slice(&self.shell.paint.colour(source));
+                    self.out.extend_from_slice(&self.shell.paint.colour(source));
                 }
                 if self.cursor.done() {
-                    self.cursor = Cursor::new(mesh.triangle_count());
                     self.stage = Stage::Faces;
+                    self.cursor = Cursor::new(mesh.triangle_count());
                 }
             }
             Stage::Faces => {
                 let welded = self.welded.as_ref().expect("welded");
                 for t in range.filter_map(|t| welded.triangle(mesh, t)) {
-                    self.body.push(3);
+                    self.out.push(3);
                     for i in t {
-                        self.body.extend_from_slice(&i.to_le_bytes());
+                        self.out.extend_from_slice(&i.to_le_bytes());
                     }
-                    self.faces += 1;
                 }
                 if self.cursor.done() {
-                    if self.faces == 0 {
-                        return Err(ExportError::Empty);
-                    }
-                    let mut out = self.header(welded.positions.len()).into_bytes();
-                    out.append(&mut self.body);
-                    return Ok(Some(out));
+                    return Ok(Some(std::mem::take(&mut self.out)));
                 }
             }
         }
@@ -123,8 +139,9 @@ impl Writer for Ply {
     fn progress(&self) -> f64 {
         let stage = match self.stage {
             Stage::Weld => 0,
-            Stage::Vertices => 1,
-            Stage::Faces => 2,
+            Stage::Count => 1,
+            Stage::Vertices => 2,
+            Stage::Faces => 3,
         };
         progress(&WEIGHTS, stage, self.cursor.fraction())
     }

@@ -8,7 +8,7 @@ use crate::mesh::Mesh;
 use glam::Vec3;
 
 /// Vertices or triangles per step.
-const PER_STEP: usize = 8192;
+const PER_STEP: usize = 4096;
 /// Shares of the work: welding, triangles.
 const WEIGHTS: [f64; 2] = [0.4, 0.6];
 

@@ -13,14 +13,16 @@ use super::placement::{fit, turn};
 use super::shell::Shell;
 use super::steps::{Cursor, Writer, progress};
 use super::weld::{Welded, Welder};
-use super::zip::{Deflating, Part, package};
+use super::zip::{Deflating, Package};
 use crate::mesh::Bounds;
 use glam::{DQuat, DVec3};
 use std::collections::HashMap;
 use std::fmt::Write;
 
-/// Vertices or triangles per step (each step's XML is deflated in the same step).
-const PER_STEP: usize = 2048;
+/// Vertices or triangles welded, linked, coloured or sorted per step.
+const PER_STEP: usize = 4096;
+/// Vertices or triangles written per step (their XML is deflated in the same step).
+const XML_PER_STEP: usize = 512;
 /// Shares of the work: welding, linking, colouring, sorting, writing.
 const WEIGHTS: [f64; 5] = [0.1, 0.15, 0.1, 0.05, 0.6];
 
@@ -119,6 +121,8 @@ impl ThreeMf {
             let welded = self.welder.take().expect("welding").finish();
             self.pieces = Pieces::new(welded.positions.len());
             self.used = vec![false; welded.positions.len()];
+            let triangles = self.shell.mesh.triangle_count();
+            self.triangles.reserve(triangles);
             self.welded = Some(welded);
             self.begin(Stage::Link, self.shell.mesh.triangle_count());
         }
@@ -141,9 +145,8 @@ impl ThreeMf {
             if self.triangles.is_empty() {
                 return Err(ExportError::Empty);
             }
-            let edges = self.edges.unmatched();
-            if edges > 0 {
-                return Err(ExportError::Open { key: WALL, edges });
+            if !self.edges.matched() {
+                return Err(ExportError::Open { key: WALL });
             }
             let n = self.welded().positions.len();
             self.begin(Stage::Colour, n);
@@ -199,7 +202,10 @@ impl ThreeMf {
             self.bodies[body as usize].1.push(t as u32);
         }
         if self.cursor.done() {
-            let mut model = Deflating::new("3D/3dmodel.model");
+            let mut model = Package::default()
+                .add("[Content_Types].xml", CONTENT_TYPES.as_bytes())
+                .add("_rels/.rels", RELATIONSHIPS.as_bytes())
+                .begin("3D/3dmodel.model");
             model.write(self.head().as_bytes());
             self.model = Some(model);
             let first = self.bodies[0].0.len() + self.bodies[0].1.len();
@@ -238,7 +244,7 @@ impl ThreeMf {
         let (body, cursor) = &mut self.writing;
         let (vertices, triangles) = &self.bodies[*body];
         let id = COLOURS + 1 + *body;
-        let range = cursor.next(PER_STEP);
+        let range = cursor.next(XML_PER_STEP);
         for item in range.clone() {
             if item == 0 {
                 writeln!(
@@ -294,11 +300,7 @@ impl ThreeMf {
         xml.push_str("</build>\n</model>\n");
         let mut model = self.model.take().expect("the model under way");
         model.write(xml.as_bytes());
-        package(&[
-            Part::whole("[Content_Types].xml", CONTENT_TYPES.as_bytes()),
-            Part::whole("_rels/.rels", RELATIONSHIPS.as_bytes()),
-            model.finish(),
-        ])
+        model.finish().finish()
     }
 }
 
