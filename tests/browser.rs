@@ -1,8 +1,13 @@
 //! In-browser tests (wasm-bindgen-test in headless Chromium, WebGL2 through SwiftShader; see
-//! tests/webdriver.json): the renderer comes up and draws a shell the core grew.
+//! tests/webdriver.json): the renderer comes up and draws a shell the core grew, and it paints
+//! the pattern in the colours the exporters give the same points.
 #![cfg(target_arch = "wasm32")]
 
-use seashells_core::generator::Generator;
+use glam::{DVec3, Vec3};
+use seashells_core::export::paint::{Paint, PatternImage};
+use seashells_core::generator::{Advance, Generator};
+use seashells_core::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
+use seashells_core::pattern::texture_layout::TextureLayout;
 use seashells_core::presets;
 use seashells_core::render::{Renderer, ShellLook};
 use seashells_core::view::camera::OrbitCamera;
@@ -79,5 +84,138 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
     let (share, shades) = coverage(&canvas);
     assert!(share > 0.05, "the shell covers {share:.3} of the canvas");
     assert!(shades > 20, "only {shades} grey levels: not lit");
+    assert_eq!(renderer.failure(), None);
+}
+
+/// The colour at the centre of the canvas.
+fn centre(canvas: &HtmlCanvasElement) -> [u8; 3] {
+    let size = canvas.width();
+    let copy = self::canvas(size);
+    let context: CanvasRenderingContext2d =
+        copy.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
+    context
+        .draw_image_with_html_canvas_element(canvas, 0.0, 0.0)
+        .unwrap();
+    let half = f64::from(size / 2);
+    let data = context.get_image_data(half, half, 1.0, 1.0).unwrap().data();
+    [data[0], data[1], data[2]]
+}
+
+#[wasm_bindgen_test]
+async fn the_renderer_paints_the_pattern_in_the_colours_the_exporters_give() {
+    // Four cells by three rows of strongly different colours.
+    let texels: [[u8; 3]; 12] = [
+        [230, 20, 20],
+        [20, 200, 40],
+        [30, 40, 220],
+        [250, 250, 250],
+        [10, 10, 10],
+        [240, 200, 30],
+        [200, 30, 200],
+        [40, 210, 210],
+        [120, 60, 20],
+        [250, 150, 150],
+        [60, 60, 160],
+        [180, 180, 90],
+    ];
+    let rgba: Vec<u8> = texels
+        .iter()
+        .flat_map(|c| [c[0], c[1], c[2], 255])
+        .collect();
+    let (cells, rows) = (4, 3);
+    let preset = presets::preset("oliva-porphyria").expect("preset");
+    let paint = Paint::new(
+        &preset.spec.colours,
+        Some(PatternImage {
+            cells,
+            rows,
+            rgba: &rgba,
+        }),
+    );
+    let canvas = canvas(64);
+    let mut renderer = Renderer::new(canvas.clone()).await.expect("a renderer");
+    renderer.set_background([0, 0, 0]);
+    // A square facing the camera, every corner at the same pattern coordinates, so the
+    // pattern paints it in one colour.
+    let square = |at: [f64; 2]| {
+        let mut mesh = Mesh::default();
+        for (x, z) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            mesh.vertices.push(Vertex::new(
+                DVec3::new(x, 0.0, z),
+                DVec3::Y,
+                at,
+                Surface::Outer,
+            ));
+        }
+        mesh.quad([0, 1, 2, 3], true);
+        mesh
+    };
+    let bounds = Bounds {
+        min: DVec3::new(-1.0, -0.1, -1.0),
+        max: DVec3::new(1.0, 0.1, 1.0),
+    };
+    let camera = OrbitCamera::framing(&bounds, DVec3::Y, 0.0, -0.2);
+    let look = ShellLook::new(&preset.spec.colours, &preset.spec.material, 100.0);
+    let capacity = (
+        Capacity {
+            vertices: 4,
+            indices: 6,
+        },
+        Capacity::default(),
+    );
+    let advance = Advance {
+        vertices: 0..4,
+        indices: 0..6,
+        edge_changed: false,
+        rows: 0..rows,
+    };
+    // Drawn with the pattern, or with no pattern and the exporters' colour as its ground.
+    let mut draw = |mesh: &Mesh, plain: Option<[u8; 3]>| {
+        let (layout, look, rgba) = match plain {
+            None => (
+                TextureLayout::new(cells as u32, rows as u32),
+                look,
+                &rgba[..],
+            ),
+            Some(colour) => {
+                let ground = Vec3::from(paint.linear(colour));
+                (None, ShellLook { ground, ..look }, &[][..])
+            }
+        };
+        renderer.load_shell(capacity, layout, look);
+        renderer.upload(mesh, &Mesh::default(), &advance, rgba);
+        renderer.draw(&camera).expect("a frame");
+        centre(&canvas)
+    };
+    let mut seen = Vec::new();
+    for at in [
+        [0.0, 0.0],
+        [1.0 / 3.0, 1.0],
+        [1.0, 2.0],
+        [0.5, 0.5],
+        [1.0 / 6.0, 1.25],
+        [0.9, 1.8],
+    ] {
+        let mesh = square(at);
+        let colour = paint.colour(&mesh.vertices[0]);
+        let drawn = draw(&mesh, None);
+        let expected = draw(&mesh, Some(colour));
+        let off = (0..3)
+            .map(|k| drawn[k].abs_diff(expected[k]))
+            .max()
+            .unwrap();
+        assert!(
+            off <= 2,
+            "at {at:?} the page draws {drawn:?}, the exporters' colour {colour:?} draws {expected:?}"
+        );
+        seen.push(drawn);
+    }
+    seen.sort();
+    seen.dedup();
+    assert_eq!(
+        seen.len(),
+        6,
+        "the points are drawn in different colours: {seen:?}"
+    );
     assert_eq!(renderer.failure(), None);
 }
