@@ -30,20 +30,27 @@ fn canvas(size: u32) -> HtmlCanvasElement {
     canvas
 }
 
-/// Share of pixels that are not the black background, and the number of distinct grey levels
-/// among them (a lit surface has many).
-fn coverage(canvas: &HtmlCanvasElement) -> (f64, usize) {
-    let size = canvas.width();
-    let copy = self::canvas(size);
+/// The RGBA pixels of a `size`-wide square of `canvas` from (`x`, `y`), read as drawn.
+fn pixels(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> Vec<u8> {
+    let copy = self::canvas(canvas.width());
     let context: CanvasRenderingContext2d =
         copy.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
     context
         .draw_image_with_html_canvas_element(canvas, 0.0, 0.0)
         .unwrap();
-    let data = context
-        .get_image_data(0.0, 0.0, f64::from(size), f64::from(size))
+    let [x, y, size] = [x, y, size].map(f64::from);
+    context
+        .get_image_data(x, y, size, size)
         .unwrap()
-        .data();
+        .data()
+        .to_vec()
+}
+
+/// Share of pixels that are not the black background, and the number of distinct grey levels
+/// among them (a lit surface has many).
+fn coverage(canvas: &HtmlCanvasElement) -> (f64, usize) {
+    let size = canvas.width();
+    let data = pixels(canvas, 0, 0, size);
     let mut lit = 0;
     let mut shades = std::collections::BTreeSet::new();
     for px in data.chunks_exact(4) {
@@ -89,15 +96,8 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
 
 /// The colour at the centre of the canvas.
 fn centre(canvas: &HtmlCanvasElement) -> [u8; 3] {
-    let size = canvas.width();
-    let copy = self::canvas(size);
-    let context: CanvasRenderingContext2d =
-        copy.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
-    context
-        .draw_image_with_html_canvas_element(canvas, 0.0, 0.0)
-        .unwrap();
-    let half = f64::from(size / 2);
-    let data = context.get_image_data(half, half, 1.0, 1.0).unwrap().data();
+    let half = canvas.width() / 2;
+    let data = pixels(canvas, half, half, 1);
     [data[0], data[1], data[2]]
 }
 

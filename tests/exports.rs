@@ -19,7 +19,8 @@ use seashells_core::mesh::{Mesh, Surface, Vertex};
 use seashells_core::presets::preset;
 use seashells_core::share::link;
 
-fn grown(fragment: &str) -> (Generator, Shell) {
+/// The shell of a link grown to its end, and what an export makes of it.
+fn grown(fragment: &str) -> (Generator, Result<Shell, ExportError>) {
     let decoded = link::decode(fragment);
     assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
     let mut generator = Generator::new(&decoded.spec).unwrap();
@@ -30,11 +31,11 @@ fn grown(fragment: &str) -> (Generator, Shell) {
         decoded.preset,
         PrintSize::default(),
     );
-    (generator, shell.unwrap())
+    (generator, shell)
 }
 
 fn shell(fragment: &str) -> Shell {
-    grown(fragment).1
+    grown(fragment).1.unwrap()
 }
 
 /// Writes `shell` one step per call, checking that progress rises; returns the file and the
@@ -91,15 +92,7 @@ fn the_murex_at_its_own_resolution_is_written_over_many_steps() {
 #[test]
 fn a_failed_shell_is_refused_with_why_it_stopped() {
     let fragment = "v=1&preset=oliva-porphyria&pattern.model.kappa=0&pattern.model.rho=5";
-    let decoded = link::decode(fragment);
-    let mut generator = Generator::new(&decoded.spec).unwrap();
-    generator.finish();
-    let refused = Shell::new(
-        &generator,
-        &decoded.spec,
-        decoded.preset,
-        PrintSize::default(),
-    );
+    let (_, refused) = grown(fragment);
     let Err(e @ ExportError::Failed(_)) = refused else {
         panic!("a failed shell was exported");
     };

@@ -454,14 +454,8 @@ impl Writer for Glb {
     }
 
     fn progress(&self) -> f64 {
-        let stage = match self.stage {
-            Stage::Weld => 0,
-            Stage::Vertices => 1,
-            Stage::Indices => 2,
-            Stage::Texture => 3,
-            Stage::Assemble => 4,
-            Stage::Copy => 5,
-        };
+        // Stages are numbered in their order.
+        let stage = self.stage as usize;
         progress(&WEIGHTS, stage, self.cursor.fraction())
     }
 }

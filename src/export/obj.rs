@@ -30,8 +30,8 @@ pub(crate) struct Obj {
 
 impl Obj {
     pub fn new(mesh: Mesh) -> Self {
-        // About what the lines take (see `Download::estimate`), so the text grows in place.
-        let capacity = 60 * mesh.vertices.len() + 40 * mesh.triangle_count();
+        // More than the lines take (see `Download::estimate`), so the text is never moved.
+        let capacity = 84 * mesh.vertices.len() + 44 * mesh.triangle_count();
         let mut out = String::with_capacity(capacity);
         out.push_str(
             "# seashells: a shell grown from the Fowler, Meinhardt & Prusinkiewicz model\n",

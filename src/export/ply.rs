@@ -137,12 +137,8 @@ impl Writer for Ply {
     }
 
     fn progress(&self) -> f64 {
-        let stage = match self.stage {
-            Stage::Weld => 0,
-            Stage::Count => 1,
-            Stage::Vertices => 2,
-            Stage::Faces => 3,
-        };
+        // Stages are numbered in their order.
+        let stage = self.stage as usize;
         progress(&WEIGHTS, stage, self.cursor.fraction())
     }
 }

@@ -202,7 +202,8 @@ impl ThreeMf {
             self.bodies[body as usize].1.push(t as u32);
         }
         if self.cursor.done() {
-            let mut model = Package::default()
+            // Deflated, the model takes about 14 bytes a triangle (see `Download::estimate`).
+            let mut model = Package::with_capacity(20 * self.triangles.len() + 4096)
                 .add("[Content_Types].xml", CONTENT_TYPES.as_bytes())
                 .add("_rels/.rels", RELATIONSHIPS.as_bytes())
                 .begin("3D/3dmodel.model");

@@ -46,6 +46,16 @@ pub(crate) struct Package {
     entries: Vec<Entry>,
 }
 
+impl Package {
+    /// A package with room for `bytes`, so that a large part is never moved as it grows.
+    pub fn with_capacity(bytes: usize) -> Self {
+        Self {
+            out: Vec::with_capacity(bytes),
+            entries: Vec::new(),
+        }
+    }
+}
+
 /// A part being deflated into its package, a piece at a time.
 pub(crate) struct Deflating {
     encoder: DeflateEncoder<Vec<u8>>,
