@@ -10,9 +10,9 @@
 use crate::blobtree::falloff::ISO;
 use crate::blobtree::polygonize::{Grid, polygonize};
 use crate::export::MeshFormat;
+use crate::export::job::Export;
 use crate::export::print_size::PrintSize;
 use crate::export::shell::Shell;
-use crate::export::steps::Export;
 use crate::forms::murex::whorl::whorl;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;

@@ -9,10 +9,10 @@
 use glam::DVec3;
 use seashells_core::export::error::ExportError;
 use seashells_core::export::estimate::{Counts, Size};
+use seashells_core::export::job::Export;
 use seashells_core::export::paint::Paint;
 use seashells_core::export::print_size::PrintSize;
 use seashells_core::export::shell::Shell;
-use seashells_core::export::steps::Export;
 use seashells_core::export::{Download, MeshFormat};
 use seashells_core::generator::Generator;
 use seashells_core::mesh::{Mesh, Surface, Vertex};

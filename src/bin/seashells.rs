@@ -9,9 +9,9 @@
 //!
 //! A wrong preset, link, option or extension gets one line on stderr and a non-zero exit.
 
+use seashells_core::export::job::Export;
 use seashells_core::export::print_size::PrintSize;
 use seashells_core::export::shell::Shell;
-use seashells_core::export::steps::Export;
 use seashells_core::export::{self, MeshFormat};
 use seashells_core::generator::Generator;
 use seashells_core::pattern::run::PatternRun;

@@ -464,7 +464,7 @@ impl Writer for Glb {
 mod tests {
     use super::*;
     use crate::export::print_size::PrintSize;
-    use crate::export::steps::Export;
+    use crate::export::steps::run;
     use crate::generator::Generator;
     use crate::presets::preset;
 
@@ -474,9 +474,7 @@ mod tests {
         g.finish();
         let shell = Shell::new(&g, &preset.spec, preset, PrintSize::default()).unwrap();
         let triangles = shell.mesh.triangle_count();
-        let bytes = Export::new(super::super::MeshFormat::Glb, shell)
-            .and_then(Export::run)
-            .unwrap();
+        let bytes = run(&mut Glb::new(shell)).unwrap();
         let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
         let json = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
         (bytes, json, triangles)

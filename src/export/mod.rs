@@ -1,13 +1,14 @@
 //! Writing what the core grows to files: meshes as GLB (glTF 2.0 binary, the pattern as a
 //! texture), PLY (vertex colours), 3MF (colour printing), OBJ or STL, and patterns as PNG or
 //! CSV, chosen by the file's extension. Every file is written in resumable steps
-//! ([`steps::Export`]), so the page spreads a large export over frames.
+//! ([`job::Export`]), so the page spreads a large export over frames.
 
 mod bodies;
 pub mod csv;
 pub mod error;
 pub mod estimate;
 mod glb;
+pub mod job;
 pub mod obj;
 pub mod paint;
 mod placement;

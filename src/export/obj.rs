@@ -2,7 +2,7 @@
 //! has no standard way to carry colours; GLB, PLY and 3MF do.
 
 use super::error::ExportError;
-use super::steps::{Cursor, Export, Writer, progress};
+use super::steps::{Cursor, Writer, progress, run};
 use super::weld::{Welded, Welder};
 use crate::mesh::Mesh;
 use std::fmt::Write;
@@ -14,7 +14,7 @@ const WEIGHTS: [f64; 4] = [0.1, 0.3, 0.3, 0.3];
 
 /// The mesh as OBJ, at once; refused when no triangle has an area.
 pub fn write(mesh: &Mesh) -> Result<Vec<u8>, ExportError> {
-    Export::from_writer(Box::new(Obj::new(mesh.clone()))).run()
+    run(&mut Obj::new(mesh.clone()))
 }
 
 /// An OBJ being written.

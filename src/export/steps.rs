@@ -1,14 +1,12 @@
 //! Exports as resumable steps. Writing a large shell (the Murex at its own resolution: 180,000
 //! vertices) takes longer than a frame, so every writer is a state machine that does one small
 //! unit of work per [`Writer::step`] (a few thousand vertices or triangles, a few dozen rows
-//! of an image) and keeps everything else in itself: the page calls [`Export::work`] within
-//! its frame budget, frame after frame (or, later, a Web Worker calls it), the command line
-//! runs it to the end, and both get the same bytes.
+//! of an image) and keeps everything else in itself: the page calls
+//! [`Export::work`](super::job::Export::work) within its frame budget, frame after frame (or,
+//! later, a Web Worker calls it), the command line runs it to the end, and both get the same
+//! bytes.
 
 use super::error::ExportError;
-use super::png::PatternPng;
-use super::shell::Shell;
-use super::{MeshFormat, glb, obj, ply, stl, three_mf};
 use std::ops::Range;
 
 /// One writer's work, a unit per step.
@@ -62,63 +60,11 @@ pub(crate) fn progress(weights: &[f64], stage: usize, fraction: f64) -> f64 {
     ((before + current) / total).clamp(0.0, 1.0)
 }
 
-/// One file being written from a shell.
-pub struct Export {
-    writer: Box<dyn Writer>,
-}
-
-impl Export {
-    /// Starts writing `shell` in `format`; a shell without triangles is refused.
-    pub fn new(format: MeshFormat, shell: Shell) -> Result<Self, ExportError> {
-        if shell.mesh.triangle_count() == 0 {
-            return Err(ExportError::Empty);
-        }
-        let writer: Box<dyn Writer> = match format {
-            MeshFormat::Glb => Box::new(glb::Glb::new(shell)),
-            MeshFormat::Ply => Box::new(ply::Ply::new(shell)),
-            MeshFormat::ThreeMf => Box::new(three_mf::ThreeMf::new(shell)),
-            MeshFormat::Obj => Box::new(obj::Obj::new(shell.mesh)),
-            MeshFormat::Stl => Box::new(stl::Stl::new(shell.mesh)),
-        };
-        Ok(Self { writer })
-    }
-
-    /// Runs `writer`.
-    pub(crate) fn from_writer(writer: Box<dyn Writer>) -> Self {
-        Self { writer }
-    }
-
-    /// Starts writing the pattern's planar representation (`cells × rows` RGBA texels) as PNG.
-    pub fn pattern(cells: usize, rows: usize, rgba: Vec<u8>) -> Self {
-        Self::from_writer(Box::new(PatternPng::new(cells, rows, rgba)))
-    }
-
-    /// Works while `keep_going` allows (at least one step); returns the file once it is whole.
-    pub fn work(
-        &mut self,
-        mut keep_going: impl FnMut() -> bool,
-    ) -> Result<Option<Vec<u8>>, ExportError> {
-        loop {
-            if let Some(bytes) = self.writer.step()? {
-                return Ok(Some(bytes));
-            }
-            if !keep_going() {
-                return Ok(None);
-            }
-        }
-    }
-
-    /// How much of the file is written, from 0 to 1.
-    pub fn progress(&self) -> f64 {
-        self.writer.progress()
-    }
-
-    /// Writes the whole file at once.
-    pub fn run(mut self) -> Result<Vec<u8>, ExportError> {
-        loop {
-            if let Some(bytes) = self.work(|| true)? {
-                return Ok(bytes);
-            }
+/// Runs `writer` to its end: the whole file at once.
+pub(crate) fn run(writer: &mut dyn Writer) -> Result<Vec<u8>, ExportError> {
+    loop {
+        if let Some(bytes) = writer.step()? {
+            return Ok(bytes);
         }
     }
 }

@@ -2,7 +2,7 @@
 //! three corners.
 
 use super::error::ExportError;
-use super::steps::{Cursor, Export, Writer, progress};
+use super::steps::{Cursor, Writer, progress, run};
 use super::weld::{Welded, Welder};
 use crate::mesh::Mesh;
 use glam::Vec3;
@@ -14,7 +14,7 @@ const WEIGHTS: [f64; 2] = [0.4, 0.6];
 
 /// The mesh as binary STL, at once; refused when no triangle has an area.
 pub fn write(mesh: &Mesh) -> Result<Vec<u8>, ExportError> {
-    Export::from_writer(Box::new(Stl::new(mesh.clone()))).run()
+    run(&mut Stl::new(mesh.clone()))
 }
 
 /// An STL being written.

@@ -124,7 +124,7 @@ impl ThreeMf {
             let triangles = self.shell.mesh.triangle_count();
             self.triangles.reserve(triangles);
             self.welded = Some(welded);
-            self.begin(Stage::Link, self.shell.mesh.triangle_count());
+            self.begin(Stage::Link, triangles);
         }
     }
 
@@ -173,14 +173,12 @@ impl ThreeMf {
                 .or_insert(next);
             self.colour.push(colour);
             let position = DVec3::from(welded.positions[i].map(f64::from));
+            self.bounds.include(self.turn * position);
             // A piece's representative is its first vertex (see `Pieces::join`), so a body is
             // numbered when its first vertex comes.
             let root = self.pieces.find(i as u32) as usize;
-            self.bounds.include(self.turn * position);
-            if root == i {
-                self.bodies.push((Vec::new(), Vec::new()));
-            }
             let body = if root == i {
+                self.bodies.push((Vec::new(), Vec::new()));
                 self.bodies.len() as u32 - 1
             } else {
                 self.body[root]
