@@ -5,6 +5,7 @@
 use proptest::prelude::*;
 use seashells_core::generator::Generator;
 use seashells_core::presets::{DEFAULT_PRESET, presets};
+use seashells_core::share::embed::{Ui, with_ui};
 use seashells_core::share::link::{MAX_LINK, decode, encode, flatten};
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
@@ -208,6 +209,49 @@ fn bad_links_get_specific_messages_and_still_give_a_shell() {
             panic!("{link} was repaired into a spec that cannot be built: {e}");
         }
     }
+}
+
+#[test]
+fn the_interface_rides_beside_the_spec_and_an_unknown_one_opens_the_full_page() {
+    for ui in Ui::ALL {
+        let link = format!(
+            "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02&ui={}",
+            ui.name()
+        );
+        let decoded = decode(&link);
+        assert_eq!(decoded.ui, ui, "{link}");
+        assert!(
+            decoded.problems.is_empty(),
+            "{link}: {:?}",
+            decoded.problems
+        );
+        assert_eq!(
+            encode(decoded.preset, &decoded.spec),
+            "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02",
+            "the interface is not part of the shell's link"
+        );
+        assert_eq!(
+            with_ui(&encode(decoded.preset, &decoded.spec), ui),
+            if ui == Ui::Full {
+                "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02".to_string()
+            } else {
+                link.clone()
+            }
+        );
+    }
+    let decoded = decode("v=1&preset=murex-cabritii&ui=sidebar");
+    assert_eq!(decoded.ui, Ui::Full);
+    assert_eq!(decoded.preset.id, "murex-cabritii");
+    assert_eq!(decoded.problems.len(), 1, "{:?}", decoded.problems);
+    assert_eq!(decoded.problems[0].key, "ui");
+    assert!(
+        decoded.problems[0]
+            .message
+            .contains("opened the full interface"),
+        "{}",
+        decoded.problems[0]
+    );
+    assert_eq!(decode("v=1&preset=turbinate").ui, Ui::Full);
 }
 
 #[test]

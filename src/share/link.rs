@@ -9,6 +9,7 @@
 //! built from what could be read. Numbers are written in their shortest exact form, so
 //! `decode(encode(spec))` gives back the very same spec.
 
+use super::embed::{self, Ui};
 use super::repair::repair;
 use crate::presets::{self, DEFAULT_PRESET, Preset};
 use crate::spec::ShellSpec;
@@ -41,6 +42,8 @@ pub struct Decoded {
     pub preset: &'static Preset,
     pub spec: ShellSpec,
     pub problems: Vec<Problem>,
+    /// The interface the link asks for (`ui=`; not part of the spec).
+    pub ui: Ui,
 }
 
 /// Every leaf of a serialised spec by its dotted path; lists are leaves.
@@ -283,6 +286,7 @@ fn plain(preset: &'static Preset, problems: Vec<Problem>) -> Decoded {
         preset,
         spec: preset.spec.clone(),
         problems,
+        ui: Ui::Full,
     }
 }
 
@@ -353,6 +357,11 @@ pub fn decode(fragment: &str) -> Decoded {
             format!("is not a version number; read the link as version {VERSION}"),
         )),
     }
+    let ui = take(&mut pairs, embed::KEY).map_or(Ui::Full, |text| {
+        let (ui, problem) = Ui::parse(&text);
+        problems.extend(problem);
+        ui
+    });
     let preset = match take(&mut pairs, "preset") {
         Some(id) => presets::preset(&id).unwrap_or_else(|| {
             problems.push(Problem::new(
@@ -378,7 +387,10 @@ pub fn decode(fragment: &str) -> Decoded {
             ));
         }
     }
-    apply(preset, &preset.spec, pairs, problems)
+    Decoded {
+        ui,
+        ..apply(preset, &preset.spec, pairs, problems)
+    }
 }
 
 /// `spec` (a variant of `preset`) with one more `key=value`, read exactly as a link's would be:
@@ -473,6 +485,7 @@ fn apply(
         preset,
         spec,
         problems: merged(problems),
+        ui: Ui::Full,
     }
 }
 
