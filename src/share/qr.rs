@@ -59,7 +59,7 @@ mod tests {
         let code = QrCode::with_error_correction_level(link, EcLevel::M).unwrap();
         let modules = code.width() as u32 + 8;
         // The side is a whole number of modules, at least the size asked for.
-        let side = (240 + modules - 1) / modules * modules;
+        let side = 240u32.div_ceil(modules) * modules;
         assert!(
             svg.contains(&format!("viewBox=\"0 0 {side} {side}\"")),
             "{side}: {svg}"

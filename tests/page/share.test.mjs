@@ -16,6 +16,8 @@ const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
 // A shell of few triangles, grown at once: 30 growth frames (the one-second minimum at 30 fps).
 const SHELL = 'v=1&preset=kawaguchi-claw&growth.speed=200';
+// The same with a value changed, in the link's canonical form.
+const EDITED = 'v=1&preset=kawaguchi-claw&form.chamber.width=0.5&growth.speed=200';
 let server;
 let base;
 
@@ -151,7 +153,7 @@ for (const backend of ['WebGL2', 'WebGPU']) {
     const browser = await launch(backend);
     try {
       // The QR code in the share panel holds the link.
-      const { page, errors } = await openShell(browser, 'v=1&preset=oliva-porphyria&pattern.model.d_a=0.02&growth.speed=200');
+      const { page, errors } = await openShell(browser, EDITED);
       const decoded = await page.evaluate(async () => {
         const img = document.getElementById('qr');
         await img.decode();
@@ -165,14 +167,14 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       });
       const code = jsQR(Uint8ClampedArray.from(decoded), 320, 320);
       assert.ok(code, 'jsQR finds a QR code');
-      assert.equal(code.data, `${base}#v=1&preset=oliva-porphyria&growth.speed=200&pattern.model.d_a=0.02`);
+      assert.equal(code.data, `${base}#${EDITED}`);
       // The embed code for the shell alone.
       await page.selectOption('#embed-ui', 'none');
       await page.click('#copy-embed');
       const snippet = await page.inputValue('#embed-code');
       assert.equal(
         snippet,
-        `<iframe src="${base}#v=1&amp;preset=oliva-porphyria&amp;growth.speed=200&amp;pattern.model.d_a=0.02&amp;ui=none" title="Oliva porphyria — Seashells" width="640" height="480" style="border:0" loading="lazy" allow="fullscreen"></iframe>`,
+        `<iframe src="${base}#${EDITED.replaceAll('&', '&amp;')}&amp;ui=none" title="Claw — Seashells" width="640" height="480" style="border:0" loading="lazy" allow="fullscreen"></iframe>`,
       );
       await page.close();
       assert.deepEqual(errors, []);
@@ -216,10 +218,10 @@ for (const backend of ['WebGL2', 'WebGPU']) {
 
       // A reader who asked for reduced motion gets the grown shell, still.
       const still = await browser.newPage({ viewport: { width: 640, height: 480 }, reducedMotion: 'reduce' });
-      await still.goto(`${base}#v=1&preset=turbinate&ui=none`);
+      await still.goto(`${base}#v=1&preset=kawaguchi-claw&ui=none`);
       const grown = await waitForState(still, ['grown']);
       assert.equal(grown.playing, 'false');
-      assert.equal(grown.rows, '576');
+      assert.equal(grown.rows, '25', 'grown at once although the link grows 0.2 rows a frame');
       await still.close();
     } finally {
       await browser.close();
