@@ -13,6 +13,14 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 export XDG_RUNTIME_DIR ?= /tmp/seashells-runtime
 APT := DEBIAN_FRONTEND=noninteractive apt-get
 
+# Whether every npm package in package.json is installed at its version (binaryen for wasm-opt,
+# playwright-core to drive Chromium, mediabunny to read recorded videos, jsqr to read QR codes).
+export NPM_INSTALLED := const fs = require('fs'); \
+  const wanted = JSON.parse(fs.readFileSync('package.json', 'utf8')).devDependencies; \
+  process.exit(Object.entries(wanted).every(([name, version]) => { \
+    try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
+    catch { return false; } }) ? 0 : 1);
+
 .PHONY: run test build bench deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots
 
 run: build
@@ -26,7 +34,7 @@ deps-build:
 	  echo "Installing wasm-bindgen-cli $(WASM_BINDGEN_VERSION) (about two minutes)"; \
 	  cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION); fi
 	@command -v node >/dev/null || { $(APT) update && $(APT) install -y nodejs npm; }
-	@[ -x $(BIN)/wasm-opt ] && [ -d node_modules/playwright-core ] || npm ci --no-audit --no-fund
+	@node -e "$$NPM_INSTALLED" || npm ci --no-audit --no-fund
 
 deps-browser:
 	@command -v chromium >/dev/null && command -v chromedriver >/dev/null || \

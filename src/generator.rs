@@ -133,6 +133,13 @@ impl Generator {
         self.failure.as_deref()
     }
 
+    /// Whether the shape has grown as far as the rows (within a call of
+    /// [`Self::advance_while`] it may lag behind them): the shell then stands exactly at
+    /// [`Self::rows_done`], as a frame-exact recording needs.
+    pub fn caught_up(&self) -> bool {
+        self.shape.steps_done() >= self.target_step()
+    }
+
     /// The pattern, when the shell has one.
     pub fn pattern(&self) -> Option<&PatternRun> {
         self.pattern.as_ref()

@@ -1,11 +1,12 @@
 //! Writing what the core grows to files: meshes as OBJ, binary PLY or binary STL, and patterns
-//! as PNG or CSV, chosen by the file's extension.
+//! as PNG or CSV, chosen by the file's extension; recorded growth as WebM.
 
 pub mod csv;
 pub mod obj;
 pub mod ply;
 pub mod png;
 pub mod stl;
+pub mod webm;
 pub(crate) mod weld;
 
 use crate::mesh::Mesh;
