@@ -4,3 +4,4 @@
 pub mod link;
 pub mod parameter_map;
 pub mod repair;
+mod retired;

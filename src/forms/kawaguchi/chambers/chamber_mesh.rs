@@ -1,7 +1,7 @@
 //! Kawaguchi's chamber stack as a growing mesh: the first step lays the apex base (nothing to
 //! show yet), and every later step adds one chamber, its sides joined to the ring below band by
 //! band, and moves the cap that closes the mouth (the transient edge mesh). The result is one closed
-//! solid, outward-facing, whatever the look, handedness or shift between chambers.
+//! solid, outward-facing, whatever the look, handedness or position of the top base.
 //!
 //! The pigmentation paints it as it paints a sweep: a chamber stack is a sweep of N-gon rims,
 //! so apex j sits at position j/N along the growing edge and chamber c spans the rows from
@@ -44,9 +44,7 @@ pub struct ChamberMesh {
 pub fn mesh_capacity(spec: &ChambersSpec) -> (Capacity, Capacity) {
     let n = spec.mouth.apexes as usize;
     let chambers = spec.chambers as usize;
-    let shift = spec.chamber.translation.to_array() != [0.0; 3];
-    let per_chamber = 1 + usize::from(spec.septa) + usize::from(shift);
-    let rings = chambers * per_chamber + usize::from(!shift);
+    let rings = chambers * (1 + usize::from(spec.septa)) + 1;
     let bands = rings.saturating_sub(1);
     let band_vertices = match spec.look {
         Look::Faceted => 4 * n,
@@ -196,8 +194,7 @@ impl ChamberMesh {
         let next_frame = self.stack.next_frame(&frame);
         let rings: Vec<Ring> = self
             .stack
-            .rings_of(c)
-            .filter(|&k| !(c == 0 && k == RingKind::Bottom))
+            .rings_above_bottom()
             .map(|k| self.ring(&frame, c, k))
             .collect();
         // Smooth normals at the last ring look at the next chamber's first ring.
@@ -205,7 +202,7 @@ impl ChamberMesh {
         let following = (smooth && c + 1 < self.stack.chambers()).then(|| {
             let kind = self
                 .stack
-                .rings_of(c + 1)
+                .rings_above_bottom()
                 .next()
                 .expect("a chamber has rings");
             self.ring(&next_frame, c + 1, kind)
