@@ -16,7 +16,7 @@ use seashells_core::forms::kawaguchi::chambers::chamber_stack::{
 };
 use seashells_core::generator::{BuildError, Generator};
 use seashells_core::presets::preset;
-use seashells_core::share::link::decode;
+use seashells_core::share::link::{Decoded, decode};
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
 use seashells_core::spec::form::chambers::{ChambersSpec, Look, Pair, Triple};
@@ -58,6 +58,24 @@ fn arbitrary(ratio: f64, q: [f64; 3], t: [f64; 2], apexes: u32) -> ChambersSpec 
         c.chamber.width *= 1.25;
     }
     c
+}
+
+/// R(Q): rotations about x, then y, then z, by Q in degrees, as the paper's inclination.
+fn inclination(q: [f64; 3]) -> DQuat {
+    let [x, y, z] = q.map(f64::to_radians);
+    DQuat::from_rotation_z(z) * DQuat::from_rotation_y(y) * DQuat::from_rotation_x(x)
+}
+
+/// Decodes `link` and checks that its first problem starts with `expected`.
+fn first_problem_starts_with(link: &str, expected: &str) -> Decoded {
+    let decoded = decode(link);
+    let first = decoded.problems.first().map(ToString::to_string);
+    assert!(
+        first.as_deref().is_some_and(|p| p.starts_with(expected)),
+        "{link}: {:?}",
+        decoded.problems
+    );
+    decoded
 }
 
 fn close(a: DVec3, b: DVec3, scale: f64) -> bool {
@@ -117,10 +135,6 @@ proptest! {
             }
         }
     }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(200))]
 
     /// The principle of accumulation for any position T: a chamber's top base is the next
     /// one's bottom base exactly, and it lies at T = (Tx, Ty, H) from the bottom base, scaled
@@ -136,9 +150,7 @@ proptest! {
         let mut c = arbitrary(ratio, q, t, apexes);
         c.septa = septa;
         let s = stack(&c);
-        let [qx, qy, qz] = q.map(f64::to_radians);
-        let rotation =
-            DQuat::from_rotation_z(qz) * DQuat::from_rotation_y(qy) * DQuat::from_rotation_x(qx);
+        let rotation = inclination(q);
         let position = DVec3::new(t[0], t[1], c.chamber.width);
         for k in 0..c.chambers as usize - 1 {
             let frame = s.frame(k);
@@ -355,21 +367,13 @@ fn bad_parameters_get_messages_that_name_them() {
         );
         Generator::new(&decoded.spec).unwrap_or_else(|e| panic!("{change}: {e}"));
     }
-    let inverted = decode("v=1&preset=kawaguchi-shell&form.chamber.width=0.01");
-    assert!(
-        inverted.problems[0]
-            .to_string()
-            .starts_with("form.chamber.inclination: the top base crosses the bottom base"),
-        "{:?}",
-        inverted.problems
+    first_problem_starts_with(
+        "v=1&preset=kawaguchi-shell&form.chamber.width=0.01",
+        "form.chamber.inclination: the top base crosses the bottom base",
     );
-    let leaning = decode("v=1&preset=kawaguchi-shell&form.chamber.shift.x=-5");
-    assert!(
-        leaning.problems[0].to_string().starts_with(
-            "form.chamber.shift: the chamber leans over so far that its bottom base crosses the top base's plane"
-        ),
-        "{:?}",
-        leaning.problems
+    let leaning = first_problem_starts_with(
+        "v=1&preset=kawaguchi-shell&form.chamber.shift.x=-5",
+        "form.chamber.shift: the chamber leans over so far that its bottom base crosses the top base's plane",
     );
     Generator::new(&leaning.spec).unwrap();
     // A spec that skips validation still gets a message, never a broken mesh.
@@ -422,9 +426,7 @@ fn a_link_of_the_old_reading_of_t_opens_as_the_same_spiral_and_says_so() {
         unreachable!()
     };
     let c = &old.chamber;
-    let [qx, qy, qz] = c.inclination.to_array().map(f64::to_radians);
-    let rotation =
-        DQuat::from_rotation_z(qz) * DQuat::from_rotation_y(qy) * DQuat::from_rotation_x(qx);
+    let rotation = inclination(c.inclination.to_array());
     let beyond = DVec3::new(0.1, 0.2, 0.15);
     let position = DVec3::new(0.0, 0.0, c.width) + c.ratio * (rotation * beyond);
     let n = &new.chamber;
@@ -439,13 +441,9 @@ fn a_link_of_the_old_reading_of_t_opens_as_the_same_spiral_and_says_so() {
     assert!(decode(&link).problems.is_empty());
     Generator::new(&decoded.spec).unwrap();
     // A bad old value is read as 0 and named; on another form the old key is ignored.
-    let decoded = decode("v=1&preset=kawaguchi-horn&form.chamber.translation.y=x");
-    assert!(
-        decoded.problems[0]
-            .to_string()
-            .starts_with("form.chamber.translation.y: 'x' is not a finite number; read as 0"),
-        "{:?}",
-        decoded.problems
+    first_problem_starts_with(
+        "v=1&preset=kawaguchi-horn&form.chamber.translation.y=x",
+        "form.chamber.translation.y: 'x' is not a finite number; read as 0",
     );
     let decoded = decode("v=1&preset=turbinate&form.chamber.translation.y=0.2");
     assert_eq!(

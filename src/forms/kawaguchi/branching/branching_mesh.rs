@@ -15,6 +15,7 @@
 //! across them, so a tube bends smoothly through its knots.
 
 use super::branching_tree::{Base, BranchingTree, Segment};
+use crate::forms::kawaguchi::facet::Facet;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::shape::{GrowingShape, ShapeError};
 use crate::spec::form::branching::BranchingSpec;
@@ -135,35 +136,25 @@ impl BranchingMesh {
     /// The side of a tube from ring `a` up to ring `b`. Where the two touch (at K), the quad
     /// there has collapsed to a triangle and only that triangle is kept.
     fn band(&self, mesh: &mut Mesh, a: &Ring, b: &Ring) {
-        let n = self.sides;
-        let x = |j: usize| j as f64 / n as f64;
-        for j in 0..n {
-            let k = (j + 1) % n;
-            let corners = [a.points[j], a.points[k], b.points[k], b.points[j]];
+        for j in 0..self.sides {
+            let facet = Facet::new([&a.points, &b.points], [a.row, b.row], j);
             let indices = match self.look {
                 Look::Smooth => {
                     let (j, k) = (j as u32, j as u32 + 1);
                     [a.start + j, a.start + k, b.start + k, b.start + j]
                 }
                 Look::Faceted => {
-                    let face = (corners[2] - corners[0]).cross(corners[3] - corners[1]);
-                    let normal = face.normalize_or_zero();
-                    let at = [
-                        (x(j), a.row),
-                        (x(j + 1), a.row),
-                        (x(j + 1), b.row),
-                        (x(j), b.row),
-                    ];
+                    let normal = facet.face.normalize_or_zero();
                     let base = mesh.next_index();
-                    for (p, (u, row)) in corners.into_iter().zip(at) {
+                    for (p, at) in facet.corners.into_iter().zip(facet.pattern) {
                         mesh.vertices
-                            .push(Vertex::new(p, normal, [u, row], Surface::Outer));
+                            .push(Vertex::new(p, normal, at, Surface::Outer));
                     }
                     [base, base + 1, base + 2, base + 3]
                 }
             };
             for t in [[0, 1, 2], [0, 2, 3]] {
-                let [p, q, r] = t.map(|i| corners[i]);
+                let [p, q, r] = t.map(|i| facet.corners[i]);
                 if p != q && q != r && r != p {
                     mesh.triangle(t.map(|i| indices[i]), false);
                 }

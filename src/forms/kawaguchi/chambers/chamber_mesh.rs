@@ -9,6 +9,7 @@
 //! row more than chambers gives each facet a cell of its own.
 
 use super::chamber_stack::{ChamberStack, RingKind};
+use crate::forms::kawaguchi::facet::Facet;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::shape::{GrowingShape, ShapeError};
 use crate::spec::form::chambers::{ChambersSpec, Look};
@@ -129,18 +130,11 @@ impl ChamberMesh {
         match self.look {
             Look::Faceted => {
                 for j in 0..n {
-                    let k = (j + 1) % n;
-                    let corners = [a.points[j], a.points[k], b.points[k], b.points[j]];
-                    let face = (corners[2] - corners[0]).cross(corners[3] - corners[1]);
+                    let facet = Facet::new([&a.points, &b.points], [a.row, b.row], j);
+                    let face = facet.face;
                     let normal = if self.inward { -face } else { face }.normalize_or_zero();
-                    let at = [
-                        (x(j), a.row),
-                        (x(j + 1), a.row),
-                        (x(j + 1), b.row),
-                        (x(j), b.row),
-                    ];
                     let base = mesh.next_index();
-                    for (p, (u, row)) in corners.into_iter().zip(at) {
+                    for (p, [u, row]) in facet.corners.into_iter().zip(facet.pattern) {
                         mesh.vertices.push(self.vertex(p, normal, u, row, surface));
                     }
                     mesh.quad([base, base + 1, base + 2, base + 3], flip);
