@@ -7,7 +7,7 @@ use crate::forms::shape_for;
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
@@ -146,6 +146,11 @@ impl Generator {
     /// Bounds and viewing direction of the fully grown shell.
     pub fn framing(&self) -> (Bounds, DVec3) {
         (self.shape.bounds(), self.shape.front())
+    }
+
+    /// Where a line drawing of the shape draws its lines.
+    pub fn line_grid(&self) -> LineGrid {
+        self.shape.line_grid()
     }
 
     /// The permanent mesh grown so far.

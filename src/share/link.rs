@@ -9,6 +9,7 @@
 //! built from what could be read. Numbers are written in their shortest exact form, so
 //! `decode(encode(spec))` gives back the very same spec.
 
+use super::presentation::Presentation;
 use super::repair::repair;
 use super::retired::Retired;
 use crate::presets::{self, DEFAULT_PRESET, Preset};
@@ -41,6 +42,8 @@ const KEEP: &AsciiSet = &NON_ALPHANUMERIC
 pub struct Decoded {
     pub preset: &'static Preset,
     pub spec: ShellSpec,
+    /// How the link asks the page to show the shell.
+    pub presentation: Presentation,
     pub problems: Vec<Problem>,
 }
 
@@ -283,6 +286,7 @@ fn plain(preset: &'static Preset, problems: Vec<Problem>) -> Decoded {
     Decoded {
         preset,
         spec: preset.spec.clone(),
+        presentation: Presentation::default(),
         problems,
     }
 }
@@ -370,6 +374,8 @@ pub fn decode(fragment: &str) -> Decoded {
             default_preset()
         }
     };
+    let mut presentation = Presentation::default();
+    pairs.retain(|(key, value)| !presentation.read(key, value, &mut problems));
     let mut seen = std::collections::BTreeSet::new();
     for (key, _) in &pairs {
         if !seen.insert(key.clone()) {
@@ -379,7 +385,10 @@ pub fn decode(fragment: &str) -> Decoded {
             ));
         }
     }
-    apply(preset, &preset.spec, pairs, problems)
+    Decoded {
+        presentation,
+        ..apply(preset, &preset.spec, pairs, problems)
+    }
 }
 
 /// `spec` (a variant of `preset`) with one more `key=value`, read exactly as a link's would be:
@@ -476,6 +485,7 @@ fn apply(
     Decoded {
         preset,
         spec,
+        presentation: Presentation::default(),
         problems: merged(problems),
     }
 }

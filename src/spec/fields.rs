@@ -380,6 +380,7 @@ pub const SHELL: &[Field] = &[
     f("colours.ground", Colours, "", "shell ground", Kind::Colour),
     f("colours.pigment", Colours, "", "pigment", Kind::Colour),
     f("colours.interior", Colours, "", "inside of the wall", Kind::Colour),
+    f("material.drawing", Material, "", "drawn as", Kind::Choice(&["shaded", "lines"])),
     f("material.gloss", Material, "", "polished reflections", real(0.0, 1.0)),
     f("material.anisotropy", Material, "", "highlights along the growth lines", real(0.0, 1.0)),
     f("material.translucency", Material, "", "light through the wall", real(0.0, 1.0)),

@@ -5,8 +5,10 @@
 //! `data-playing`, `data-pattern-hash`, `data-mesh` (the grown mesh's vertex and triangle
 //! counts, as the command line prints them), `data-pictures`, `data-preview` (filling, whole,
 //! stopped: the planar view's preview of a pattern slider being dragged, or empty), `data-map`
-//! (filling, whole, refused, none: the parameter map, or empty when it is closed).
+//! (filling, whole, refused, none: the parameter map, or empty when it is closed), `data-layout`
+//! (single, four: one view or Kawaguchi's four).
 
+use super::dom;
 use super::download;
 use super::gallery::Pictures;
 use super::map::MapView;
@@ -17,9 +19,11 @@ use crate::export::{self, Download};
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
+use crate::share::presentation::{Layout, Presentation};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
+use crate::view::panes::arrangement;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
 
@@ -33,6 +37,8 @@ pub struct App {
     pictures: Pictures,
     map: MapView,
     current: Option<(&'static Preset, ShellSpec)>,
+    /// How the link asks the page to show the shell.
+    presentation: Presentation,
     panel: Option<Panel>,
     on_change: Option<OnChange>,
     in_gallery: bool,
@@ -76,6 +82,7 @@ impl App {
             pictures,
             map: MapView::default(),
             current: None,
+            presentation: Presentation::default(),
             panel: None,
             on_change: None,
             in_gallery: false,
@@ -106,10 +113,12 @@ impl App {
         let Decoded {
             preset,
             spec,
+            presentation,
             problems,
         } = link::decode(&fragment);
         say(&problems);
         self.show(false);
+        self.present(presentation);
         let same = self
             .current
             .as_ref()
@@ -171,6 +180,7 @@ impl App {
             preset,
             spec: next,
             problems,
+            ..
         } = link::with(preset, spec, key, &value);
         if change == Change::Moving {
             if previews(key) {
@@ -194,11 +204,61 @@ impl App {
         self.url_due = Some(now() + URL_DELAY_MS);
     }
 
-    /// The link of what is shown.
+    /// The link of what is shown, as it is shown.
     fn fragment(&self) -> Option<String> {
-        self.current
-            .as_ref()
-            .map(|(p, s)| format!("#{}", link::encode(p, s)))
+        self.current.as_ref().map(|(p, s)| {
+            let mut fragment = format!("#{}", link::encode(p, s));
+            self.presentation.write(&mut fragment);
+            fragment
+        })
+    }
+
+    /// Shows the shell as `presentation` asks: one view, or Kawaguchi's four with each pane
+    /// named over the canvas.
+    fn present(&mut self, presentation: Presentation) {
+        self.presentation = presentation;
+        let layout = presentation.layout;
+        self.viewer.set_layout(layout);
+        signal("layout", layout.name());
+        if let Some(button) = element("views") {
+            dom::attr(
+                &button,
+                "aria-pressed",
+                if layout == Layout::Four {
+                    "true"
+                } else {
+                    "false"
+                },
+            );
+        }
+        if let Some(viewer) = element("viewer") {
+            let _ = viewer
+                .class_list()
+                .toggle_with_force("four", layout == Layout::Four);
+        }
+        if let Some(labels) = element("panes") {
+            dom::clear(&labels);
+            labels.set_hidden(layout == Layout::Single);
+            for place in arrangement(layout) {
+                let label = dom::create("span", "pane", Some(place.name));
+                let style = label.style();
+                for (property, fraction) in ["left", "top", "width", "height"]
+                    .into_iter()
+                    .zip(place.viewport)
+                {
+                    let _ = style.set_property(property, &format!("{}%", fraction * 100.0));
+                }
+                dom::append(&labels, &[&label]);
+            }
+        }
+    }
+
+    /// Between one view and Kawaguchi's four (the link follows).
+    pub fn toggle_views(&mut self) {
+        let mut presentation = self.presentation;
+        presentation.layout = presentation.layout.toggled();
+        self.present(presentation);
+        self.update_url();
     }
 
     fn update_url(&mut self) {

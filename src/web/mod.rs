@@ -209,6 +209,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("step", app, App::step)?;
     on_click("finish", app, App::finish)?;
     on_click("reset-camera", app, App::reset_camera)?;
+    on_click("views", app, App::toggle_views)?;
     on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
     on_click("copy-link", app, App::copy_link)?;
     for what in Download::ALL {
@@ -265,6 +266,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             "s" | "ArrowRight" => a.step(),
             "e" | "End" => a.finish(),
             "c" => a.reset_camera(),
+            "v" => a.toggle_views(),
             "f" => a.toggle_fullscreen(),
             "+" | "=" => a.set_speed(a.speed() * 1.5),
             "-" => a.set_speed(a.speed() / 1.5),

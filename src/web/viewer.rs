@@ -12,9 +12,11 @@ use crate::pattern::run::PatternRun;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
 use crate::render::{Renderer, ShellLook};
+use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::camera::OrbitCamera;
 use crate::view::gestures::{Pointers, wheel_zoom};
+use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::Preview;
 use web_sys::HtmlCanvasElement;
@@ -40,6 +42,11 @@ impl Growing {
     pub fn view_at_rest(&self) -> bool {
         self.camera.settled(&self.grown)
     }
+
+    /// The panes of `layout` on a canvas of aspect `aspect`.
+    fn panes(&self, layout: Layout, aspect: f32) -> Vec<Pane> {
+        panes(layout, &self.camera, &self.grown, aspect)
+    }
 }
 
 pub struct Viewer {
@@ -53,6 +60,8 @@ pub struct Viewer {
     dirty: bool,
     /// Whether the camera follows the growing shell (else it frames the whole).
     follows: bool,
+    /// One view, or Kawaguchi's four.
+    layout: Layout,
     /// When the last frame was drawn, milliseconds.
     last_frame: f64,
 }
@@ -82,6 +91,7 @@ impl Viewer {
             playback: Playback::new(1.0),
             dirty: true,
             follows,
+            layout: Layout::Single,
             last_frame: now(),
         })
     }
@@ -122,6 +132,7 @@ impl Viewer {
                 &spec.colours,
                 &spec.material,
                 crate::forms::rows_per_whorl(spec),
+                generator.line_grid(),
             ),
         );
         let (bounds, front) = generator.framing();
@@ -312,9 +323,16 @@ impl Viewer {
         let Some(g) = &self.growing else {
             return Ok(false);
         };
-        self.renderer.draw(&g.camera)?;
+        self.renderer
+            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.dirty = false;
         Ok(true)
+    }
+
+    /// Shows one view or Kawaguchi's four.
+    pub fn set_layout(&mut self, layout: Layout) {
+        self.layout = layout;
+        self.dirty = true;
     }
 
     /// Back to the first view: following the growth again on the main view.
@@ -353,7 +371,8 @@ impl Viewer {
         let Some(g) = &self.growing else {
             return Err("nothing is drawn yet".into());
         };
-        self.renderer.draw(&g.camera)?;
+        self.renderer
+            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.canvas
             .to_data_url_with_type("image/png")
             .map_err(|_| "the browser refused to read the canvas".to_string())

@@ -17,7 +17,7 @@
 use super::branching_tree::{Base, BranchingTree, Segment};
 use crate::forms::kawaguchi::facet::Facet;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::form::branching::BranchingSpec;
 use crate::spec::form::chambers::Look;
 use glam::DVec3;
@@ -314,6 +314,15 @@ impl GrowingShape for BranchingMesh {
             }
         }
         bounds
+    }
+
+    /// The tubes' edges: side j of n at x = j / n, and the bases, which lie half a
+    /// generation apart (a trunk's bottom and top, then the knot's top).
+    fn line_grid(&self) -> LineGrid {
+        LineGrid {
+            across: self.sides as f64,
+            rows: self.rows_per_generation / 2.0,
+        }
     }
 
     fn front(&self) -> DVec3 {

@@ -11,7 +11,7 @@
 use super::chamber_stack::{ChamberStack, RingKind};
 use crate::forms::kawaguchi::facet::Facet;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::form::chambers::{ChambersSpec, Look};
 use glam::{DAffine3, DVec3};
 
@@ -239,6 +239,14 @@ impl GrowingShape for ChamberMesh {
 
     fn bounds(&self) -> Bounds {
         self.stack.bounds()
+    }
+
+    /// The chambers' edges: apex j of N at x = j / N, a base every chamber.
+    fn line_grid(&self) -> LineGrid {
+        LineGrid {
+            across: self.stack.apexes() as f64,
+            rows: self.rows_per_chamber,
+        }
     }
 
     fn front(&self) -> DVec3 {
