@@ -85,7 +85,8 @@ pub trait GrowingShape {
     /// Where a line drawing of the shape draws its lines.
     fn line_grid(&self) -> LineGrid;
     /// Grows one step: appends to `mesh`, and may replace `edge` with the geometry that closes
-    /// the new growing edge; says whether it did.
+    /// the new growing edge, or change it in place (it holds what the previous step left in
+    /// it); says whether it did.
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool;
     /// Grows every remaining step (a form may know a shorter way to the end than step by step).
     fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {

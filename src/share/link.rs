@@ -11,6 +11,7 @@
 
 use super::presentation::Presentation;
 use super::repair::repair;
+use super::retired::Retired;
 use crate::presets::{self, DEFAULT_PRESET, Preset};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, field};
@@ -417,6 +418,8 @@ fn apply(
             order.push(k);
         }
     }
+    let retired = Retired::take(&mut last);
+    order.retain(|k| last.contains_key(k));
     // Switch forms and models first: their parameters start from that kind's first preset.
     order.sort_by_key(|k| (!k.ends_with(".kind"), k.matches('.').count()));
     for key in order {
@@ -464,6 +467,7 @@ fn apply(
             )),
         }
     }
+    retired.apply(&mut value, &mut problems);
     let mut spec: ShellSpec = match serde_json::from_value(value) {
         Ok(spec) => spec,
         Err(e) => {
