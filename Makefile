@@ -13,23 +13,21 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 export XDG_RUNTIME_DIR ?= /tmp/seashells-runtime
 APT := DEBIAN_FRONTEND=noninteractive apt-get
 
+# Whether every npm package in package.json is installed at its version (binaryen for wasm-opt,
+# playwright-core to drive Chromium, mediabunny to read recorded videos, jsqr to read QR codes,
+# gltf-validator and three to check exported GLB files).
+export NPM_INSTALLED := const fs = require('fs'); \
+  const wanted = JSON.parse(fs.readFileSync('package.json', 'utf8')).devDependencies; \
+  process.exit(Object.entries(wanted).every(([name, version]) => { \
+    try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
+    catch { return false; } }) ? 0 : 1);
+
 .PHONY: run test build bench deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
 
 ## Installation: each step skips what is already there.
-
-# Exits non-zero unless every devDependency of package.json is in node_modules at its version.
-define NPM_INSTALLED
-const wanted = require('./package.json').devDependencies;
-for (const [name, version] of Object.entries(wanted)) {
-  let found;
-  try { found = require(`./node_modules/$${name}/package.json`).version; } catch { found = 'missing'; }
-  if (found !== version) { console.log(`npm: $${name} $${version} is $${found}`); process.exit(1); }
-}
-endef
-export NPM_INSTALLED
 
 deps-build:
 	@rustup target list --installed | grep -qx $(TARGET) || rustup target add $(TARGET)

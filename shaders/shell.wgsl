@@ -5,6 +5,14 @@
 // of the pattern's x, taken from screen-space derivatives), light through the wall where it is
 // lit from behind, and darkening with depth into the opening. The ground quad under the shell
 // is drawn in the background colour, darkened by a soft contact shadow.
+//
+// Or the shell is drawn in lines on paper, as Kawaguchi drew GROWTH's shells on a vector
+// display: lines on the iso-lines of the pattern coordinates that the form puts on its facets'
+// edges (or on a sparse set of rims and lines of growth), and its outline; the depth test
+// removes the hidden ones.
+//
+// A pane is drawn in perspective (eye.w = 1: the eye is a point) or orthographically (eye.w =
+// 0: eye.xyz is the direction towards the viewer, the same for every point).
 
 struct Globals {
     view_proj: mat4x4<f32>,
@@ -23,6 +31,10 @@ struct Globals {
     shadow: vec4<f32>,
     // The clear colour, linear.
     background: vec4<f32>,
+    // x: 1 for a line drawing, y: lines across the edge (at x = k / y), z: rows between rims.
+    lines: vec4<f32>,
+    // The pane's width and height in pixels.
+    pixels: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> g: Globals;
@@ -43,8 +55,8 @@ struct VertexOut {
     @location(3) @interpolate(flat) surface: f32,
 }
 
-@vertex
-fn vs_main(v: VertexIn) -> VertexOut {
+// A vertex in display and clip space.
+fn place(v: VertexIn) -> VertexOut {
     var out: VertexOut;
     let world = g.model * vec4<f32>(v.position, 1.0);
     out.clip = g.view_proj * world;
@@ -53,6 +65,33 @@ fn vs_main(v: VertexIn) -> VertexOut {
     out.pattern = v.pattern;
     out.surface = v.surface;
     return out;
+}
+
+@vertex
+fn vs_main(v: VertexIn) -> VertexOut {
+    return place(v);
+}
+
+// The line drawing's outline, drawn before the shell: the faces turned away from the eye (which
+// lie behind those turned towards it), pushed out along their normals by a pixel and a half on
+// screen and a little back in depth, in ink. The shell drawn over them covers all of it but a
+// band around its silhouette and along every occluding contour.
+@vertex
+fn vs_outline(v: VertexIn) -> VertexOut {
+    var out = place(v);
+    let normal = (g.view_proj * vec4<f32>(out.normal, 0.0)).xy * g.pixels.xy;
+    let length = max(sqrt(dot(normal, normal)), 1e-6);
+    out.clip = vec4<f32>(
+        out.clip.xy + normal / length * 3.0 / g.pixels.xy * out.clip.w,
+        out.clip.z + 0.002 * out.clip.w,
+        out.clip.w,
+    );
+    return out;
+}
+
+@fragment
+fn fs_outline() -> @location(0) vec4<f32> {
+    return vec4<f32>(0.02, 0.02, 0.03, 1.0);
 }
 
 // One texel of the pattern; rows are folded into blocks of `pattern.z` rows laid side by side.
@@ -110,6 +149,17 @@ fn environment(r: vec3<f32>) -> vec3<f32> {
     return sky + vec3<f32>(key + strip);
 }
 
+// How much of a pixel the line drawing's lines cover: `cells` is the position in units of the
+// spacing between lines (lines on whole numbers), `width` its change across one pixel. Lines are
+// about a pixel and a half wide, and fade where they crowd closer than a few pixels.
+fn ink(cells: vec2<f32>, width: vec2<f32>) -> f32 {
+    let w = max(width, vec2<f32>(1e-6));
+    let pixels = abs(fract(cells + 0.5) - 0.5) / w;
+    let line = (vec2<f32>(1.0) - smoothstep(vec2<f32>(0.4), vec2<f32>(1.2), pixels))
+        * (vec2<f32>(1.0) - smoothstep(vec2<f32>(0.2), vec2<f32>(0.45), w));
+    return max(line.x, line.y);
+}
+
 fn encode_srgb(c: vec3<f32>) -> vec3<f32> {
     let low = c * 12.92;
     let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
@@ -125,6 +175,9 @@ fn fs_main(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) ve
     let dux = dpdx(in.pattern);
     let duy = dpdy(in.pattern);
     let along = dpx * duy.y - dpy * dux.y;
+    let cells = vec2<f32>(in.pattern.x * g.lines.y, in.pattern.y / max(g.lines.z, 1e-6));
+    let cells_width = fwidth(cells);
+    let toward = select(g.eye.xyz, g.eye.xyz - in.world, g.eye.w > 0.5);
     if (in.surface > 2.5) {
         // The ground: a soft shadow under the shell, seen only from above.
         if (!front) {
@@ -138,11 +191,22 @@ fn fs_main(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) ve
         }
         return vec4<f32>(ground, 1.0);
     }
+    if (g.lines.x > 0.5) {
+        // Paper and ink (the outline is drawn behind, see vs_outline). Only the outer surface
+        // and the inside of the wall carry the grid: the pattern coordinates of the caps and
+        // lip fan out from their centres and draw no edges.
+        let coverage = select(0.0, ink(cells, cells_width), in.surface < 1.5);
+        var drawn = mix(vec3<f32>(0.98, 0.975, 0.96), vec3<f32>(0.02, 0.02, 0.03), coverage);
+        if (g.options.x > 0.5) {
+            drawn = encode_srgb(drawn);
+        }
+        return vec4<f32>(drawn, 1.0);
+    }
     var n = normalize(in.normal);
     if (!front) {
         n = -n;
     }
-    let v = normalize(g.eye.xyz - in.world);
+    let v = normalize(toward);
     var t = along - n * dot(n, along);
     t = select(vec3<f32>(0.0), normalize(t), dot(t, t) > 1e-20);
     var albedo: vec3<f32>;

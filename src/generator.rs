@@ -7,7 +7,7 @@ use crate::forms::shape_for;
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
@@ -133,6 +133,13 @@ impl Generator {
         self.failure.as_deref()
     }
 
+    /// Whether the shape has grown as far as the rows (within a call of
+    /// [`Self::advance_while`] it may lag behind them): the shell then stands exactly at
+    /// [`Self::rows_done`], as a frame-exact recording needs.
+    pub fn caught_up(&self) -> bool {
+        self.shape.steps_done() >= self.target_step()
+    }
+
     /// The pattern, when the shell has one.
     pub fn pattern(&self) -> Option<&PatternRun> {
         self.pattern.as_ref()
@@ -146,6 +153,11 @@ impl Generator {
     /// Bounds and viewing direction of the fully grown shell.
     pub fn framing(&self) -> (Bounds, DVec3) {
         (self.shape.bounds(), self.shape.front())
+    }
+
+    /// Where a line drawing of the shape draws its lines.
+    pub fn line_grid(&self) -> LineGrid {
+        self.shape.line_grid()
     }
 
     /// The permanent mesh grown so far.

@@ -38,6 +38,36 @@ impl fmt::Display for ShapeError {
 
 impl std::error::Error for ShapeError {}
 
+/// Where a line drawing of a shape draws its lines, in pattern coordinates (x along the growing
+/// edge in [0, 1], y the growth time in rows): lines along the growth direction at x = k /
+/// `across`, and rims every `rows` rows. A faceted form puts them on its facets' edges; a smooth
+/// one on a sparse set of its rims and of its lines of growth.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LineGrid {
+    pub across: f64,
+    pub rows: f64,
+}
+
+impl LineGrid {
+    /// Lines along the growth direction on a smooth form.
+    const SPARSE_ACROSS: f64 = 16.0;
+    /// Rims per whorl on a smooth form: one every 15° of turn.
+    const SPARSE_RIMS_PER_WHORL: f64 = 24.0;
+
+    /// The grid of a smooth form that has `rows_per_whorl` pattern rows a turn, its rims
+    /// falling on the form's own rims when those are `rows_per_rim` apart (a multiple of them).
+    pub(crate) fn sparse(rows_per_whorl: f64, rows_per_rim: Option<f64>) -> Self {
+        let rows = rows_per_whorl / Self::SPARSE_RIMS_PER_WHORL;
+        Self {
+            across: Self::SPARSE_ACROSS,
+            rows: match rows_per_rim {
+                Some(rim) if rim > 0.0 => rim * (rows / rim).round().max(1.0),
+                _ => rows,
+            },
+        }
+    }
+}
+
 /// A shape grown step by step.
 pub trait GrowingShape {
     /// Steps from the first to the fully grown shape.
@@ -52,8 +82,11 @@ pub trait GrowingShape {
     fn bounds(&self) -> Bounds;
     /// The direction the fully grown shape is best seen from (where its opening faces).
     fn front(&self) -> DVec3;
+    /// Where a line drawing of the shape draws its lines.
+    fn line_grid(&self) -> LineGrid;
     /// Grows one step: appends to `mesh`, and may replace `edge` with the geometry that closes
-    /// the new growing edge; says whether it did.
+    /// the new growing edge, or change it in place (it holds what the previous step left in
+    /// it); says whether it did.
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool;
     /// Grows every remaining step (a form may know a shorter way to the end than step by step).
     fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {

@@ -1,8 +1,9 @@
 //! Kawaguchi's growth by branching (1982, rules 1–8 and the tendril's self-adjustment): every
 //! trunk keeps H/D = S, a branch's diameter follows its knot's height, growth stops at the
 //! threshold and nowhere else, the self-adjusting force keeps α within bounds and turns it,
-//! narrower limits give more and shorter branches, every segment is a closed outward tube,
-//! growth is deterministic, and bad parameters get messages that name them.
+//! narrower limits give more and shorter branches, every branch is one closed outward tube at
+//! every stage of growth with no face coinciding with another, growth is deterministic, and
+//! bad parameters get messages that name them.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -18,6 +19,7 @@ use seashells_core::shape::GrowingShape;
 use seashells_core::share::link::decode;
 use seashells_core::spec::form::Form;
 use seashells_core::spec::form::branching::{BranchingSpec, KnotSpec};
+use seashells_core::spec::form::chambers::Look;
 
 const PRESETS: [&str; 5] = [
     "kawaguchi-spiral-plant",
@@ -183,34 +185,102 @@ fn narrower_limits_give_more_and_shorter_branches() {
     );
 }
 
-/// Each step's mesh on its own.
-fn segment_meshes(id: &str) -> Vec<Mesh> {
-    let (spec, seed) = form(id);
-    let mut shape = BranchingMesh::new(&spec, seed, 200).unwrap();
-    let mut meshes = Vec::new();
-    while shape.steps_done() < shape.steps() {
-        let (mut mesh, mut edge) = (Mesh::default(), Mesh::default());
-        shape.grow(&mut mesh, &mut edge);
-        assert_eq!(edge.triangle_count(), 0, "no transient edge");
-        meshes.push(mesh);
+/// Branches that have started among the first `steps` segments, counting the main stem: the
+/// bodies the mesh should have by then.
+fn branches_started(tree: &BranchingTree, steps: usize) -> usize {
+    tree.segments[..steps]
+        .iter()
+        .filter(|s| s.previous.is_none())
+        .count()
+}
+
+/// No two triangles have the same three corners (welded by position), however wound.
+fn assert_no_face_coincides(mesh: &Mesh, what: &str) {
+    let mut seen = std::collections::HashSet::new();
+    for t in mesh.indices.chunks_exact(3) {
+        let mut corners =
+            [t[0], t[1], t[2]].map(|i| mesh.vertices[i as usize].position.map(f32::to_bits));
+        corners.sort_unstable();
+        assert!(seen.insert(corners), "{what}: two faces coincide");
     }
-    meshes
 }
 
 #[test]
-fn every_segment_is_a_closed_outward_tube() {
+fn every_branch_is_one_closed_outward_tube_at_every_stage() {
     for id in PRESETS {
-        for (k, mesh) in segment_meshes(id).iter().enumerate() {
-            common::assert_closed_and_outward(mesh, &format!("{id}, segment {k}"));
+        for look in [Look::Smooth, Look::Faceted] {
+            let (mut spec, seed) = form(id);
+            spec.look = look;
+            let tree = BranchingTree::new(&spec, seed).unwrap();
+            let mut shape = BranchingMesh::new(&spec, seed, 200).unwrap();
+            let (mut mesh, mut edge) = (Mesh::default(), Mesh::default());
+            let steps = shape.steps();
+            // Twelve stages along the way and the end; the shape is closed after every step,
+            // but checking every step of the largest forms would take minutes.
+            let stages: Vec<usize> = (1..=12).map(|i| i * steps / 13).chain([steps]).collect();
+            let per_step = 2 * (spec.trunk.sides as usize + 1) + 8 * spec.trunk.sides as usize;
+            while shape.steps_done() < steps {
+                let before = mesh.vertices.len();
+                shape.grow(&mut mesh, &mut edge);
+                // A step adds its own segment's vertices, whatever has grown before.
+                assert!(
+                    mesh.vertices.len() - before <= 2 * per_step,
+                    "{id}: a step added {} vertices",
+                    mesh.vertices.len() - before
+                );
+                assert!(edge.vertices.len() <= shape.edge_capacity().vertices);
+                let done = shape.steps_done();
+                if !stages.contains(&done) {
+                    continue;
+                }
+                let mut whole = mesh.clone();
+                whole.append(&edge);
+                let what = format!("{id} ({look:?}) after {done} of {steps} steps");
+                common::assert_closed_and_outward(&whole, &what);
+                assert_no_face_coincides(&whole, &what);
+                assert_eq!(
+                    common::pieces(&whole).len(),
+                    branches_started(&tree, done),
+                    "{what}: one body per branch"
+                );
+            }
+            assert_eq!(
+                edge.triangle_count(),
+                0,
+                "{id}: every tip closed at the end"
+            );
+            let branches = tree.segments.iter().filter(|s| s.parent.is_some()).count();
+            assert_eq!(
+                branches_started(&tree, steps),
+                branches + 1,
+                "{id}: the stem and its branches"
+            );
+            assert_eq!(mesh.vertices.len(), shape.capacity().vertices, "{id}");
+            assert!(mesh.indices.len() <= shape.capacity().indices, "{id}");
         }
     }
     let mut g = Generator::new(&preset("kawaguchi-coral").unwrap().spec).unwrap();
     g.finish();
     let share = common::share_of_normals_agreeing(&g.snapshot());
     assert!(share > 0.99, "only {share} of normals agree");
-    let (capacity, _) = g.capacity();
-    assert_eq!(g.mesh().vertices.len(), capacity.vertices);
-    assert!(g.mesh().indices.len() <= capacity.indices);
+}
+
+#[test]
+fn a_caller_that_hands_in_another_edge_mesh_gets_the_open_caps_back() {
+    let (spec, seed) = form("kawaguchi-tentacles");
+    let mut kept = BranchingMesh::new(&spec, seed, 200).unwrap();
+    let mut fresh = BranchingMesh::new(&spec, seed, 200).unwrap();
+    let (mut mesh, mut edge, mut other) = (Mesh::default(), Mesh::default(), Mesh::default());
+    for _ in 0..kept.steps() / 2 {
+        kept.grow(&mut mesh, &mut edge);
+        other = Mesh::default();
+        fresh.grow(&mut Mesh::default(), &mut other);
+    }
+    assert!(
+        edge.triangle_count() > 0,
+        "branches are still growing half-way"
+    );
+    assert_eq!(other, edge);
 }
 
 #[test]

@@ -1,6 +1,7 @@
 //! In-browser tests (wasm-bindgen-test in headless Chromium, WebGL2 through SwiftShader; see
-//! tests/webdriver.json): the renderer comes up and draws a shell the core grew, and it paints
-//! the pattern in the colours the exporters give the same points.
+//! tests/webdriver.json): the renderer comes up and draws a shell the core grew, in one view and
+//! in Kawaguchi's four, and it paints the pattern in the colours the exporters give the same
+//! points.
 #![cfg(target_arch = "wasm32")]
 
 use glam::{DVec3, Vec3};
@@ -10,7 +11,10 @@ use seashells_core::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use seashells_core::pattern::texture_layout::TextureLayout;
 use seashells_core::presets;
 use seashells_core::render::{Renderer, ShellLook};
+use seashells_core::shape::LineGrid;
+use seashells_core::share::presentation::Layout;
 use seashells_core::view::camera::OrbitCamera;
+use seashells_core::view::panes::panes;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
@@ -46,11 +50,10 @@ fn pixels(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> Vec<u8> {
         .to_vec()
 }
 
-/// Share of pixels that are not the black background, and the number of distinct grey levels
-/// among them (a lit surface has many).
-fn coverage(canvas: &HtmlCanvasElement) -> (f64, usize) {
-    let size = canvas.width();
-    let data = pixels(canvas, 0, 0, size);
+/// Share of pixels that are not the black background in the square of `size` at (x, y) of
+/// the canvas, and the number of distinct grey levels among them (a lit surface has many).
+fn coverage_in(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> (f64, usize) {
+    let data = pixels(canvas, x, y, size);
     let mut lit = 0;
     let mut shades = std::collections::BTreeSet::new();
     for px in data.chunks_exact(4) {
@@ -63,14 +66,15 @@ fn coverage(canvas: &HtmlCanvasElement) -> (f64, usize) {
     (f64::from(lit) / f64::from(size * size), shades.len())
 }
 
-#[wasm_bindgen_test]
-async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
-    let canvas = canvas(256);
+/// A renderer on a new square canvas of `size`, with `id`'s shell grown whole and loaded, a
+/// camera framing it, and its bounds.
+async fn grown(id: &str, size: u32) -> (HtmlCanvasElement, Renderer, OrbitCamera, Bounds) {
+    let canvas = canvas(size);
     let mut renderer = Renderer::new(canvas.clone())
         .await
         .expect("a renderer on WebGL2");
     assert_eq!(renderer.backend(), "WebGL2");
-    let preset = presets::preset("turbinate").expect("preset");
+    let preset = presets::preset(id).expect("preset");
     let mut generator = Generator::new(&preset.spec).expect("generator");
     generator.finish();
     renderer.set_background([0, 0, 0]);
@@ -81,16 +85,44 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
             &preset.spec.colours,
             &preset.spec.material,
             seashells_core::forms::rows_per_whorl(&preset.spec),
+            generator.line_grid(),
         ),
     );
     renderer.upload(generator.mesh(), generator.edge(), &generator.grown(), &[]);
     let (bounds, front) = generator.framing();
+    let camera = OrbitCamera::framing(&bounds, front, 0.0, 0.0);
+    (canvas, renderer, camera, bounds)
+}
+
+#[wasm_bindgen_test]
+async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
+    let (canvas, mut renderer, camera, bounds) = grown("turbinate", 256).await;
     renderer
-        .draw(&OrbitCamera::framing(&bounds, front, 0.0, 0.0))
+        .draw(&panes(Layout::Single, &camera, &bounds, renderer.aspect()))
         .expect("a frame");
-    let (share, shades) = coverage(&canvas);
+    let (share, shades) = coverage_in(&canvas, 0, 0, 256);
     assert!(share > 0.05, "the shell covers {share:.3} of the canvas");
     assert!(shades > 20, "only {shades} grey levels: not lit");
+    assert_eq!(renderer.failure(), None);
+}
+
+#[wasm_bindgen_test]
+async fn four_views_draw_the_shell_in_every_quarter() {
+    let (canvas, mut renderer, camera, bounds) = grown("kawaguchi-horn", 256).await;
+    renderer
+        .draw(&panes(Layout::Four, &camera, &bounds, renderer.aspect()))
+        .expect("a frame");
+    for (x, y) in [(0, 0), (128, 0), (0, 128), (128, 128)] {
+        let (share, shades) = coverage_in(&canvas, x, y, 128);
+        assert!(
+            share > 0.03,
+            "the quarter at ({x}, {y}) is {share:.3} shell"
+        );
+        assert!(
+            shades > 10,
+            "the quarter at ({x}, {y}) has {shades} grey levels"
+        );
+    }
     assert_eq!(renderer.failure(), None);
 }
 
@@ -155,7 +187,16 @@ async fn the_renderer_paints_the_pattern_in_the_colours_the_exporters_give() {
         max: DVec3::new(1.0, 0.1, 1.0),
     };
     let camera = OrbitCamera::framing(&bounds, DVec3::Y, 0.0, -0.2);
-    let look = ShellLook::new(&preset.spec.colours, &preset.spec.material, 100.0);
+    let look = ShellLook::new(
+        &preset.spec.colours,
+        &preset.spec.material,
+        100.0,
+        // Unused: the Oliva is shaded, not drawn in lines.
+        LineGrid {
+            across: 1.0,
+            rows: 1.0,
+        },
+    );
     let capacity = (
         Capacity {
             vertices: 4,
@@ -184,7 +225,9 @@ async fn the_renderer_paints_the_pattern_in_the_colours_the_exporters_give() {
         };
         renderer.load_shell(capacity, layout, look);
         renderer.upload(mesh, &Mesh::default(), &advance, rgba);
-        renderer.draw(&camera).expect("a frame");
+        renderer
+            .draw(&panes(Layout::Single, &camera, &bounds, renderer.aspect()))
+            .expect("a frame");
         centre(&canvas)
     };
     let mut seen = Vec::new();

@@ -1,21 +1,25 @@
 //! Properties of Kawaguchi's accumulated chambers (1982) that must hold for any parameters:
 //! one similarity carries each chamber onto the next, vertex distances from the centre of
-//! similitude form a geometric progression, chambers adjoin exactly when T = 0, the mesh is a
-//! closed outward-facing solid at every stage of growth, handedness mirrors, growth is
-//! deterministic, and bad parameters get messages that name them.
+//! similitude form a geometric progression, each chamber's top base lies at the position
+//! T = (Tx, Ty, H) and is the next chamber's bottom base bit for bit, a position off the
+//! vertical opens the whorls into a horn, the mesh is a closed outward-facing solid at every
+//! stage of growth, handedness mirrors, growth is deterministic, links of the old reading of T
+//! still open, and bad parameters get messages that name them.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
 
-use glam::DVec3;
+use glam::{DQuat, DVec3};
 use proptest::prelude::*;
-use seashells_core::forms::kawaguchi::chambers::chamber_stack::{ChamberStack, RingKind};
+use seashells_core::forms::kawaguchi::chambers::chamber_stack::{
+    ChamberStack, RingKind, turn_per_chamber,
+};
 use seashells_core::generator::{BuildError, Generator};
 use seashells_core::presets::preset;
-use seashells_core::share::link::decode;
+use seashells_core::share::link::{Decoded, decode};
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
-use seashells_core::spec::form::chambers::{ChambersSpec, Look, Triple};
+use seashells_core::spec::form::chambers::{ChambersSpec, Look, Pair, Triple};
 use seashells_core::spec::handedness::Handedness;
 
 fn spec_of(id: &str) -> ShellSpec {
@@ -34,8 +38,8 @@ fn stack(spec: &ChambersSpec) -> ChamberStack {
 }
 
 /// A chamber spec from proptest's numbers, with the width raised until the top base clears the
-/// bottom base.
-fn arbitrary(ratio: f64, q: [f64; 3], t: [f64; 3], apexes: u32) -> ChambersSpec {
+/// bottom base and the bottom base stays below the top base's plane.
+fn arbitrary(ratio: f64, q: [f64; 3], t: [f64; 2], apexes: u32) -> ChambersSpec {
     let mut c = match spec_of("kawaguchi-shell").form {
         Form::Chambers(c) => c,
         _ => unreachable!(),
@@ -47,15 +51,31 @@ fn arbitrary(ratio: f64, q: [f64; 3], t: [f64; 3], apexes: u32) -> ChambersSpec 
         y: q[1],
         z: q[2],
     };
-    c.chamber.translation = Triple {
-        x: t[0],
-        y: t[1],
-        z: t[2],
-    };
-    let tilt = q[0].to_radians().abs().max(q[1].to_radians().abs());
-    c.chamber.width = 0.05 + 1.2 * ratio * tilt.sin() * c.mouth.radius_a.max(c.mouth.radius_b);
+    c.chamber.shift = Pair { x: t[0], y: t[1] };
+    c.chamber.width = 0.05;
     c.chambers = 12;
+    while ChamberStack::new(&c).is_err() {
+        c.chamber.width *= 1.25;
+    }
     c
+}
+
+/// R(Q): rotations about x, then y, then z, by Q in degrees, as the paper's inclination.
+fn inclination(q: [f64; 3]) -> DQuat {
+    let [x, y, z] = q.map(f64::to_radians);
+    DQuat::from_rotation_z(z) * DQuat::from_rotation_y(y) * DQuat::from_rotation_x(x)
+}
+
+/// Decodes `link` and checks that its first problem starts with `expected`.
+fn first_problem_starts_with(link: &str, expected: &str) -> Decoded {
+    let decoded = decode(link);
+    let first = decoded.problems.first().map(ToString::to_string);
+    assert!(
+        first.as_deref().is_some_and(|p| p.starts_with(expected)),
+        "{link}: {:?}",
+        decoded.problems
+    );
+    decoded
 }
 
 fn close(a: DVec3, b: DVec3, scale: f64) -> bool {
@@ -69,11 +89,11 @@ proptest! {
     fn one_similarity_of_ratio_r_carries_each_chamber_onto_the_next(
         ratio in 0.8f64..1.25,
         q in prop::array::uniform3(-25.0f64..25.0),
-        t in prop::array::uniform3(0.0f64..0.5),
+        t in prop::array::uniform2(-0.5f64..0.5),
         shifted in any::<bool>(),
         sinistral in any::<bool>(),
     ) {
-        let mut c = arbitrary(ratio, q, if shifted { t } else { [0.0; 3] }, 9);
+        let mut c = arbitrary(ratio, q, if shifted { t } else { [0.0; 2] }, 9);
         if sinistral {
             c.handedness = Handedness::Sinistral;
         }
@@ -101,7 +121,7 @@ proptest! {
     fn distances_from_the_centre_of_similitude_form_a_geometric_progression(
         ratio in prop_oneof![0.8f64..0.98, 1.02f64..1.25],
         q in prop::array::uniform3(-25.0f64..25.0),
-        t in prop::array::uniform3(0.0f64..0.5),
+        t in prop::array::uniform2(-0.5f64..0.5),
     ) {
         // The centre of similitude is shell space's origin by construction.
         let c = arbitrary(ratio, q, t, 7);
@@ -115,34 +135,85 @@ proptest! {
             }
         }
     }
+
+    /// The principle of accumulation for any position T: a chamber's top base is the next
+    /// one's bottom base exactly, and it lies at T = (Tx, Ty, H) from the bottom base, scaled
+    /// by r and inclined by R(Q): C(x) = T + r R(Q) x.
+    #[test]
+    fn every_top_base_is_the_next_bottom_base_at_the_position_t(
+        ratio in 0.7f64..1.4,
+        q in prop::array::uniform3(-40.0f64..40.0),
+        t in prop::array::uniform2(-3.0f64..3.0),
+        apexes in 3u32..40,
+        septa in any::<bool>(),
+    ) {
+        let mut c = arbitrary(ratio, q, t, apexes);
+        c.septa = septa;
+        let s = stack(&c);
+        let rotation = inclination(q);
+        let position = DVec3::new(t[0], t[1], c.chamber.width);
+        for k in 0..c.chambers as usize - 1 {
+            let frame = s.frame(k);
+            let bottom = s.ring(&frame, RingKind::Bottom);
+            let top = s.ring(&frame, RingKind::Top);
+            prop_assert_eq!(&top, &s.ring(&s.frame(k + 1), RingKind::Bottom));
+            let to_local = frame.inverse();
+            let scale = frame.matrix3.x_axis.length();
+            for (b, p) in bottom.iter().zip(&top) {
+                let (b, p) = (to_local.transform_point3(*b), to_local.transform_point3(*p));
+                prop_assert!(b.z.abs() <= 1e-9 * scale.max(1.0) / scale);
+                let expected = position + ratio * (rotation * b);
+                prop_assert!(
+                    (p - expected).length() <= 1e-9 * (1.0 + expected.length()),
+                    "chamber {}: top apex at {} in the bottom base's frame, not {}", k, p, expected
+                );
+            }
+        }
+    }
+}
+
+/// The highest point of a chamber on the coiling axis (z) and the lowest, over its two bases.
+fn axial_extent(s: &ChamberStack, k: usize) -> (f64, f64) {
+    let frame = s.frame(k);
+    let z: Vec<f64> = [RingKind::Bottom, RingKind::Top]
+        .into_iter()
+        .flat_map(|kind| s.ring(&frame, kind))
+        .map(|p| p.z)
+        .collect();
+    let low = z.iter().copied().fold(f64::INFINITY, f64::min);
+    let high = z.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    (low, high)
+}
+
+/// The smallest gap along the coiling axis between a chamber of the last whorl and the chamber
+/// one whorl before it: negative where the whorls rest on each other.
+fn gap_between_whorls(c: &ChambersSpec) -> f64 {
+    let s = stack(c);
+    let per_whorl = (std::f64::consts::TAU / turn_per_chamber(&c.chamber)).round() as usize;
+    let n = c.chambers as usize;
+    assert!(n > per_whorl, "more than one whorl");
+    (per_whorl.max(n - per_whorl)..n)
+        .map(|k| axial_extent(&s, k).0 - axial_extent(&s, k - per_whorl).1)
+        .fold(f64::INFINITY, f64::min)
 }
 
 #[test]
-fn chambers_share_their_bases_without_a_shift_and_separate_with_one() {
-    let base = arbitrary(1.08, [0.0, 14.0, 4.0], [0.0; 3], 10);
-    let s = stack(&base);
-    assert!(s.adjoining());
-    for k in 0..base.chambers as usize - 1 {
-        let top = s.ring(&s.frame(k), RingKind::Top);
-        let next = s.ring(&s.frame(k + 1), RingKind::Bottom);
-        for (a, b) in top.iter().zip(&next) {
-            assert!(close(*a, *b, a.length()), "chamber {k}: {a} and {b}");
-        }
-    }
-    let t = [0.1, 0.2, 0.15];
-    let shifted = arbitrary(1.08, [0.0, 14.0, 4.0], t, 10);
-    let s = stack(&shifted);
-    assert!(!s.adjoining());
-    let shift = DVec3::from(t).length();
-    for k in 0..shifted.chambers as usize - 1 {
-        let top = s.ring(&s.frame(k), RingKind::Top);
-        let next = s.ring(&s.frame(k + 1), RingKind::Bottom);
-        // The gap is T in the top base's frame, scaled like the chamber: r^(k+1) |T|.
-        let expected = 1.08f64.powi(k as i32 + 1) * shift;
-        for (a, b) in top.iter().zip(&next) {
-            assert!(((*b - *a).length() - expected).abs() < 1e-9 * expected);
-        }
-    }
+fn a_position_off_the_vertical_opens_the_whorls_into_a_horn() {
+    let mut horn = spec_of("kawaguchi-horn");
+    let c = chambers_of(&mut horn);
+    let open = gap_between_whorls(c);
+    assert!(
+        open > 0.0,
+        "the horn's whorls rest on each other: gap {open}"
+    );
+    // The same chamber with its top base straight above the bottom base, as high as the
+    // horn's chamber reaches: the whorls coil in one plane and rest on each other.
+    c.chamber.shift = Pair { x: 0.0, y: 0.0 };
+    let closed = gap_between_whorls(c);
+    assert!(
+        closed < 0.0,
+        "without the position the whorls still part: gap {closed}"
+    );
 }
 
 /// Every combination of look, handedness, shift, septa and protuberances.
@@ -162,11 +233,7 @@ fn variants() -> Vec<(String, ShellSpec)> {
                         c.handedness = Handedness::Sinistral;
                     }
                     if shifted {
-                        c.chamber.translation = Triple {
-                            x: 0.1,
-                            y: 0.2,
-                            z: 0.1,
-                        };
+                        c.chamber.shift = Pair { x: 0.1, y: 0.2 };
                     }
                     spec.growth.rows = 31;
                     let what = format!(
@@ -300,14 +367,15 @@ fn bad_parameters_get_messages_that_name_them() {
         );
         Generator::new(&decoded.spec).unwrap_or_else(|e| panic!("{change}: {e}"));
     }
-    let inverted = decode("v=1&preset=kawaguchi-shell&form.chamber.width=0.01");
-    assert!(
-        inverted.problems[0]
-            .to_string()
-            .starts_with("form.chamber.inclination: the top base crosses the bottom base"),
-        "{:?}",
-        inverted.problems
+    first_problem_starts_with(
+        "v=1&preset=kawaguchi-shell&form.chamber.width=0.01",
+        "form.chamber.inclination: the top base crosses the bottom base",
     );
+    let leaning = first_problem_starts_with(
+        "v=1&preset=kawaguchi-shell&form.chamber.shift.x=-5",
+        "form.chamber.shift: the chamber leans over so far that its bottom base crosses the top base's plane",
+    );
+    Generator::new(&leaning.spec).unwrap();
     // A spec that skips validation still gets a message, never a broken mesh.
     let mut spec = spec_of("kawaguchi-shell");
     chambers_of(&mut spec).chamber.ratio = 0.0;
@@ -334,4 +402,52 @@ fn a_link_switches_a_sweep_to_chambers_and_back() {
         decoded.problems
     );
     Generator::new(&decoded.spec).unwrap();
+}
+
+#[test]
+fn a_link_of_the_old_reading_of_t_opens_as_the_same_spiral_and_says_so() {
+    // Before T became the top base's position, a link shifted each chamber by T beyond its
+    // top base (in that base's scaled frame): one period was x ↦ (0, 0, H) + r R(Q)(x + T).
+    let decoded = decode(
+        "v=1&preset=kawaguchi-shell&form.chamber.translation.x=0.1&form.chamber.translation.y=0.2&form.chamber.translation.z=0.15",
+    );
+    let said: Vec<String> = decoded.problems.iter().map(ToString::to_string).collect();
+    assert_eq!(said.len(), 1, "{said:?}");
+    assert!(
+        said[0].starts_with(
+            "form.chamber.translation: links made before T became the top base's position"
+        ),
+        "{said:?}"
+    );
+    let Form::Chambers(new) = &decoded.spec.form else {
+        panic!("a chamber stack")
+    };
+    let Form::Chambers(old) = &spec_of("kawaguchi-shell").form else {
+        unreachable!()
+    };
+    let c = &old.chamber;
+    let rotation = inclination(c.inclination.to_array());
+    let beyond = DVec3::new(0.1, 0.2, 0.15);
+    let position = DVec3::new(0.0, 0.0, c.width) + c.ratio * (rotation * beyond);
+    let n = &new.chamber;
+    assert!((DVec3::new(n.shift.x, n.shift.y, n.width) - position).length() < 1e-12);
+    assert_eq!((n.ratio, n.inclination), (c.ratio, c.inclination));
+    // The encoded link carries today's keys, and opens without a word.
+    let link = seashells_core::share::link::encode(decoded.preset, &decoded.spec);
+    assert!(
+        link.contains("form.chamber.shift.x=") && !link.contains("translation"),
+        "{link}"
+    );
+    assert!(decode(&link).problems.is_empty());
+    Generator::new(&decoded.spec).unwrap();
+    // A bad old value is read as 0 and named; on another form the old key is ignored.
+    first_problem_starts_with(
+        "v=1&preset=kawaguchi-horn&form.chamber.translation.y=x",
+        "form.chamber.translation.y: 'x' is not a finite number; read as 0",
+    );
+    let decoded = decode("v=1&preset=turbinate&form.chamber.translation.y=0.2");
+    assert_eq!(
+        decoded.problems[0].to_string(),
+        "form.chamber.translation: is not a key of this shell; ignored"
+    );
 }

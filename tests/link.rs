@@ -5,7 +5,9 @@
 use proptest::prelude::*;
 use seashells_core::generator::Generator;
 use seashells_core::presets::{DEFAULT_PRESET, presets};
+
 use seashells_core::share::link::{MAX_LINK, decode, encode, flatten};
+use seashells_core::share::presentation::{Presentation, Ui};
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{FORM_KINDS, Field, Kind, Section, field, fields};
@@ -208,6 +210,51 @@ fn bad_links_get_specific_messages_and_still_give_a_shell() {
             panic!("{link} was repaired into a spec that cannot be built: {e}");
         }
     }
+}
+
+#[test]
+fn the_interface_rides_beside_the_spec_and_an_unknown_one_opens_the_full_page() {
+    for ui in Ui::ALL {
+        let link = format!(
+            "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02&ui={}",
+            ui.name()
+        );
+        let decoded = decode(&link);
+        assert_eq!(decoded.presentation.ui, ui, "{link}");
+        assert!(
+            decoded.problems.is_empty(),
+            "{link}: {:?}",
+            decoded.problems
+        );
+        assert_eq!(
+            encode(decoded.preset, &decoded.spec),
+            "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02",
+            "the interface is not part of the shell's link"
+        );
+        let mut written = encode(decoded.preset, &decoded.spec);
+        decoded.presentation.write(&mut written);
+        assert_eq!(
+            written,
+            if ui == Ui::Full {
+                "v=1&preset=oliva-porphyria&pattern.model.d_a=0.02".to_string()
+            } else {
+                link.clone()
+            }
+        );
+    }
+    let decoded = decode("v=1&preset=murex-cabritii&ui=sidebar");
+    assert_eq!(decoded.presentation, Presentation::default());
+    assert_eq!(decoded.preset.id, "murex-cabritii");
+    assert_eq!(decoded.problems.len(), 1, "{:?}", decoded.problems);
+    assert_eq!(decoded.problems[0].key, "ui");
+    assert!(
+        decoded.problems[0]
+            .message
+            .contains("opened the full interface"),
+        "{}",
+        decoded.problems[0]
+    );
+    assert_eq!(decode("v=1&preset=turbinate").presentation.ui, Ui::Full);
 }
 
 #[test]

@@ -32,7 +32,7 @@ use seashells_core::share::link::{decode, encode};
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::implicit::Placement;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 
 /// Table 1 as we read it: (whorl, angle°, σ).
 const TABLE_1: &[(u32, f64, f64)] = &[
@@ -195,46 +195,13 @@ fn spines_stand_out_of_the_body_by_their_relative_size() {
     }
 }
 
-/// Triangles in each connected piece of a mesh (welded by position), largest first.
-fn pieces(mesh: &Mesh) -> Vec<usize> {
-    let key = |i: u32| mesh.vertices[i as usize].position.map(f32::to_bits);
-    let mut id: HashMap<[u32; 3], usize> = HashMap::new();
-    for &i in &mesh.indices {
-        let n = id.len();
-        id.entry(key(i)).or_insert(n);
-    }
-    let mut parent: Vec<usize> = (0..id.len()).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    for t in mesh.indices.chunks_exact(3) {
-        let [a, b, c] = [t[0], t[1], t[2]].map(|i| id[&key(i)]);
-        for (x, y) in [(a, b), (b, c)] {
-            let (rx, ry) = (root(&mut parent, x), root(&mut parent, y));
-            parent[rx] = ry;
-        }
-    }
-    let mut count: HashMap<usize, usize> = HashMap::new();
-    for t in mesh.indices.chunks_exact(3) {
-        let r = root(&mut parent, id[&key(t[0])]);
-        *count.entry(r).or_insert(0) += 1;
-    }
-    let mut sizes: Vec<usize> = count.into_values().collect();
-    sizes.sort_unstable_by(|a, b| b.cmp(a));
-    sizes
-}
-
 #[test]
 fn at_256_voxels_the_shell_is_one_closed_hollow_solid() {
     let mut spec = spec_of("murex-cabritii");
     implicit(&mut spec).resolution = 256;
     let mesh = grown(&spec).snapshot();
     assert_closed_and_outward(&mesh, "murex-cabritii at 256³");
-    let sizes = pieces(&mesh);
+    let sizes = common::pieces(&mesh);
     assert_eq!(
         sizes.len(),
         1,

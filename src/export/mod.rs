@@ -1,7 +1,7 @@
 //! Writing what the core grows to files: meshes as GLB (glTF 2.0 binary, the pattern as a
 //! texture), PLY (vertex colours), 3MF (colour printing), OBJ or STL, and patterns as PNG or
-//! CSV, chosen by the file's extension. Every file is written in resumable steps
-//! ([`job::Export`]), so the page spreads a large export over frames.
+//! CSV, chosen by the file's extension; recorded growth as WebM. Every mesh and pattern file is
+//! written in resumable steps ([`job::Export`]), so the page spreads a large export over frames.
 
 mod bodies;
 pub mod csv;
@@ -19,6 +19,7 @@ pub mod shell;
 pub mod steps;
 pub mod stl;
 mod three_mf;
+pub mod webm;
 pub(crate) mod weld;
 mod zip;
 

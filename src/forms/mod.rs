@@ -71,7 +71,7 @@ pub fn rows_per_whorl(spec: &ShellSpec) -> f64 {
         Form::Chambers(c) => {
             f64::from(c.chambers) * turn_per_chamber(&c.chamber) / std::f64::consts::TAU
         }
-        Form::Implicit(i) => f64::from(i.whorls) * i.whorl_angle / 360.0,
+        Form::Implicit(i) => i.turns(),
         // No whorls: the whole growth counts as one.
         Form::Branching(_) => return rows,
     };

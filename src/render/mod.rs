@@ -1,6 +1,7 @@
 //! The one renderer: wgpu on WebGPU when the browser has an adapter, WebGL2 otherwise. It only
-//! moves data: the mesh and pattern rows that the generator adds, the camera's matrices, the
-//! material's strengths, and a quad on the ground under what has grown for the contact shadow.
+//! moves data: the mesh and pattern rows that the generator adds, the matrices of each pane of
+//! the canvas (one view, or Kawaguchi's four), the material's strengths or the line drawing's
+//! grid, and a quad on the ground under what has grown for the contact shadow.
 
 mod gpu;
 mod pattern_texture;
@@ -10,14 +11,16 @@ mod shell_buffers;
 use crate::generator::Advance;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::pattern::texture_layout::TextureLayout;
+use crate::shape::LineGrid;
 use crate::spec::Colours;
-use crate::spec::material::MaterialSpec;
-use crate::view::camera::{OrbitCamera, display_from_shell};
+use crate::spec::material::{Drawing, MaterialSpec};
+use crate::view::camera::display_from_shell;
+use crate::view::panes::{MAX_PANES, Pane};
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use gpu::Gpu;
 use pattern_texture::PatternTexture;
-use pipeline::DEPTH_FORMAT;
+use pipeline::{DEPTH_FORMAT, Pipelines};
 use shell_buffers::MeshBuffers;
 
 /// The uniform block of shaders/shell.wgsl.
@@ -37,7 +40,14 @@ struct Globals {
     shadow: [f32; 4],
     /// The clear colour in linear light (the ground is drawn in it).
     background: [f32; 4],
+    /// x: 1 for a line drawing, y: lines across the edge, z: rows between rims.
+    lines: [f32; 4],
+    /// The pane's width and height in pixels.
+    pixels: [f32; 4],
 }
+
+/// Bytes of one pane's uniform block.
+const GLOBALS_SIZE: u64 = size_of::<Globals>() as u64;
 
 /// What the shader needs to know about the shell being drawn.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -49,10 +59,17 @@ pub struct ShellLook {
     /// Gloss, anisotropy, translucency, occlusion.
     pub material: [f32; 4],
     pub shadow: f32,
+    /// Where the lines go, when the shell is drawn in lines.
+    pub lines: Option<LineGrid>,
 }
 
 impl ShellLook {
-    pub fn new(colours: &Colours, material: &MaterialSpec, rows_per_whorl: f64) -> Self {
+    pub fn new(
+        colours: &Colours,
+        material: &MaterialSpec,
+        rows_per_whorl: f64,
+        line_grid: LineGrid,
+    ) -> Self {
         let m = material;
         Self {
             ground: colours.ground.linear().into(),
@@ -60,7 +77,13 @@ impl ShellLook {
             rows_per_whorl: rows_per_whorl as f32,
             material: [m.gloss, m.anisotropy, m.translucency, m.occlusion].map(|x| x as f32),
             shadow: m.shadow as f32,
+            lines: (m.drawing == Drawing::Lines).then_some(line_grid),
         }
+    }
+
+    /// Whether the ground's shadow is drawn: a line drawing is on plain paper.
+    fn shadowed(&self) -> bool {
+        self.shadow > 0.0 && self.lines.is_none()
     }
 }
 
@@ -102,9 +125,11 @@ struct Targets {
 pub struct Renderer {
     gpu: Gpu,
     encode_srgb: bool,
-    pipeline: wgpu::RenderPipeline,
+    pipelines: Pipelines,
     layout: wgpu::BindGroupLayout,
+    /// One uniform block per pane, `stride` bytes apart.
     uniforms: wgpu::Buffer,
+    stride: u64,
     blank: PatternTexture,
     targets: Targets,
     shell: Option<Shell>,
@@ -146,11 +171,14 @@ impl Renderer {
     pub async fn new(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
         let gpu = Gpu::open(canvas).await?;
         let device = &gpu.device;
-        let layout = pipeline::bind_group_layout(device);
-        let pipeline = pipeline::shell_pipeline(device, &layout, gpu.config.format, gpu.samples);
+        let layout = pipeline::bind_group_layout(device, GLOBALS_SIZE);
+        let pipelines = pipeline::pipelines(device, &layout, gpu.config.format, gpu.samples);
+        let stride = GLOBALS_SIZE.next_multiple_of(u64::from(
+            device.limits().min_uniform_buffer_offset_alignment,
+        ));
         let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
-            size: size_of::<Globals>() as u64,
+            size: stride * MAX_PANES as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
@@ -159,9 +187,10 @@ impl Renderer {
         Ok(Self {
             encode_srgb: !gpu.config.format.is_srgb(),
             gpu,
-            pipeline,
+            pipelines,
             layout,
             uniforms,
+            stride,
             blank,
             targets,
             shell: None,
@@ -189,6 +218,11 @@ impl Renderer {
         };
         self.background = wgpu::Color { r, g, b, a: 1.0 };
         self.background_linear = crate::spec::colour::Rgb(srgb).linear();
+    }
+
+    /// Width over height of the canvas.
+    pub fn aspect(&self) -> f32 {
+        self.gpu.config.width as f32 / self.gpu.config.height as f32
     }
 
     /// Follows the canvas size in device pixels.
@@ -223,7 +257,11 @@ impl Renderer {
                 entries: &[
                     wgpu::BindGroupEntry {
                         binding: 0,
-                        resource: self.uniforms.as_entire_binding(),
+                        resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                            buffer: &self.uniforms,
+                            offset: 0,
+                            size: wgpu::BufferSize::new(GLOBALS_SIZE),
+                        }),
                     },
                     wgpu::BindGroupEntry {
                         binding: 1,
@@ -282,8 +320,51 @@ impl Renderer {
         }
     }
 
-    /// Draws one frame.
-    pub fn draw(&mut self, camera: &OrbitCamera) -> Result<(), String> {
+    /// The uniform block of `pane` for `shell`.
+    fn globals(&self, shell: &Shell, pane: &Pane) -> Globals {
+        let [_, _, width, height] =
+            pixels(pane.viewport, self.gpu.config.width, self.gpu.config.height);
+        let (cells, block_rows, patterned) = match &shell.pattern {
+            Some(p) => (p.layout.cells, p.layout.block_rows, 1.0),
+            None => (1, 1, 0.0),
+        };
+        let lines = match shell.look.lines {
+            Some(grid) => [1.0, grid.across as f32, grid.rows as f32, 0.0],
+            None => [0.0; 4],
+        };
+        Globals {
+            view_proj: pane.view_projection.to_cols_array_2d(),
+            model: display_from_shell().to_cols_array_2d(),
+            eye: pane.eye.to_array(),
+            ground: shell.look.ground.extend(1.0).to_array(),
+            interior: shell.look.interior.extend(1.0).to_array(),
+            pattern: [
+                cells as f32,
+                shell.rows_grown as f32,
+                block_rows as f32,
+                patterned,
+            ],
+            options: [
+                if self.encode_srgb { 1.0 } else { 0.0 },
+                shell.look.rows_per_whorl,
+                0.0,
+                0.0,
+            ],
+            material: shell.look.material,
+            shadow: [shell.look.shadow, 0.0, 0.0, 0.0],
+            background: [
+                self.background_linear[0],
+                self.background_linear[1],
+                self.background_linear[2],
+                1.0,
+            ],
+            lines,
+            pixels: [width as f32, height as f32, 0.0, 0.0],
+        }
+    }
+
+    /// Draws one frame: the shell in each of `panes` (at most [`MAX_PANES`]).
+    pub fn draw(&mut self, panes: &[Pane]) -> Result<(), String> {
         let frame = match self.gpu.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(frame)
             | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
@@ -301,42 +382,16 @@ impl Renderer {
         let view = frame
             .texture
             .create_view(&wgpu::TextureViewDescriptor::default());
-        let aspect = self.gpu.config.width as f32 / self.gpu.config.height as f32;
+        let panes = &panes[..panes.len().min(MAX_PANES)];
         if let Some(shell) = &self.shell {
-            let (cells, block_rows, patterned) = match &shell.pattern {
-                Some(p) => (p.layout.cells, p.layout.block_rows, 1.0),
-                None => (1, 1, 0.0),
-            };
-            let globals = Globals {
-                view_proj: camera.view_projection(aspect).to_cols_array_2d(),
-                model: display_from_shell().to_cols_array_2d(),
-                eye: camera.eye().extend(1.0).to_array(),
-                ground: shell.look.ground.extend(1.0).to_array(),
-                interior: shell.look.interior.extend(1.0).to_array(),
-                pattern: [
-                    cells as f32,
-                    shell.rows_grown as f32,
-                    block_rows as f32,
-                    patterned,
-                ],
-                options: [
-                    if self.encode_srgb { 1.0 } else { 0.0 },
-                    shell.look.rows_per_whorl,
-                    0.0,
-                    0.0,
-                ],
-                material: shell.look.material,
-                shadow: [shell.look.shadow, 0.0, 0.0, 0.0],
-                background: [
-                    self.background_linear[0],
-                    self.background_linear[1],
-                    self.background_linear[2],
-                    1.0,
-                ],
-            };
-            self.gpu
-                .queue
-                .write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&globals));
+            for (i, pane) in panes.iter().enumerate() {
+                let globals = self.globals(shell, pane);
+                self.gpu.queue.write_buffer(
+                    &self.uniforms,
+                    i as u64 * self.stride,
+                    bytemuck::bytes_of(&globals),
+                );
+            }
         }
         let mut encoder = self
             .gpu
@@ -373,17 +428,41 @@ impl Renderer {
                 multiview_mask: None,
             });
             if let Some(shell) = &self.shell {
-                pass.set_pipeline(&self.pipeline);
-                pass.set_bind_group(0, &shell.bind_group, &[]);
-                shell.mesh.draw(&mut pass);
-                shell.edge.draw(&mut pass);
-                if shell.look.shadow > 0.0 {
-                    shell.ground.draw(&mut pass);
+                let (width, height) = (self.gpu.config.width, self.gpu.config.height);
+                for (i, pane) in panes.iter().enumerate() {
+                    let [x, y, w, h] = pixels(pane.viewport, width, height);
+                    if w == 0 || h == 0 {
+                        continue;
+                    }
+                    pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
+                    pass.set_scissor_rect(x, y, w, h);
+                    pass.set_bind_group(0, &shell.bind_group, &[(i as u64 * self.stride) as u32]);
+                    if shell.look.lines.is_some() {
+                        pass.set_pipeline(&self.pipelines.outline);
+                        shell.mesh.draw(&mut pass);
+                        shell.edge.draw(&mut pass);
+                    }
+                    pass.set_pipeline(&self.pipelines.shell);
+                    shell.mesh.draw(&mut pass);
+                    shell.edge.draw(&mut pass);
+                    if shell.look.shadowed() {
+                        shell.ground.draw(&mut pass);
+                    }
                 }
+                // WebGL2 resolves the multisampled target with a blit that the scissor still
+                // clips: open it to the whole canvas again, or only the last pane shows.
+                pass.set_scissor_rect(0, 0, width, height);
             }
         }
         self.gpu.queue.submit([encoder.finish()]);
         self.gpu.queue.present(frame);
         Ok(())
     }
+}
+
+/// A viewport given in fractions of the canvas, in whole pixels within it.
+fn pixels([x, y, w, h]: [f32; 4], width: u32, height: u32) -> [u32; 4] {
+    let at = |f: f32, size: u32| ((f * size as f32).round() as u32).min(size);
+    let (left, top) = (at(x, width), at(y, height));
+    [left, top, at(x + w, width) - left, at(y + h, height) - top]
 }

@@ -9,7 +9,9 @@
 //! built from what could be read. Numbers are written in their shortest exact form, so
 //! `decode(encode(spec))` gives back the very same spec.
 
+use super::presentation::Presentation;
 use super::repair::repair;
+use super::retired::Retired;
 use crate::presets::{self, DEFAULT_PRESET, Preset};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, field};
@@ -40,6 +42,8 @@ const KEEP: &AsciiSet = &NON_ALPHANUMERIC
 pub struct Decoded {
     pub preset: &'static Preset,
     pub spec: ShellSpec,
+    /// How the link asks the page to show the shell.
+    pub presentation: Presentation,
     pub problems: Vec<Problem>,
 }
 
@@ -282,6 +286,7 @@ fn plain(preset: &'static Preset, problems: Vec<Problem>) -> Decoded {
     Decoded {
         preset,
         spec: preset.spec.clone(),
+        presentation: Presentation::default(),
         problems,
     }
 }
@@ -369,6 +374,8 @@ pub fn decode(fragment: &str) -> Decoded {
             default_preset()
         }
     };
+    let mut presentation = Presentation::default();
+    pairs.retain(|(key, value)| !presentation.read(key, value, &mut problems));
     let mut seen = std::collections::BTreeSet::new();
     for (key, _) in &pairs {
         if !seen.insert(key.clone()) {
@@ -378,7 +385,10 @@ pub fn decode(fragment: &str) -> Decoded {
             ));
         }
     }
-    apply(preset, &preset.spec, pairs, problems)
+    Decoded {
+        presentation,
+        ..apply(preset, &preset.spec, pairs, problems)
+    }
 }
 
 /// `spec` (a variant of `preset`) with one more `key=value`, read exactly as a link's would be:
@@ -408,6 +418,8 @@ fn apply(
             order.push(k);
         }
     }
+    let retired = Retired::take(&mut last);
+    order.retain(|k| last.contains_key(k));
     // Switch forms and models first: their parameters start from that kind's first preset.
     order.sort_by_key(|k| (!k.ends_with(".kind"), k.matches('.').count()));
     for key in order {
@@ -455,6 +467,7 @@ fn apply(
             )),
         }
     }
+    retired.apply(&mut value, &mut problems);
     let mut spec: ShellSpec = match serde_json::from_value(value) {
         Ok(spec) => spec,
         Err(e) => {
@@ -472,6 +485,7 @@ fn apply(
     Decoded {
         preset,
         spec,
+        presentation: Presentation::default(),
         problems: merged(problems),
     }
 }

@@ -1,6 +1,13 @@
-//! Sharing a shell: the link codec that reproduces a spec exactly, the repair of whatever a
-//! link or an edit asks that cannot be built, and the parameter map of pattern previews.
+//! Sharing a shell: the link codec that reproduces a spec exactly (and carries the page's
+//! presentation of it: one view or four, the interface an embed shows), the repair of whatever
+//! a link or an edit asks that cannot be built, the keys of earlier links now read another way,
+//! the parameter map of pattern previews, the `<iframe>` of an embedded link, and the link's QR
+//! code.
 
+pub mod embed;
 pub mod link;
 pub mod parameter_map;
+pub mod presentation;
+pub mod qr;
 pub mod repair;
+mod retired;

@@ -252,13 +252,12 @@ pub const CHAMBERS: &[Field] = &[
     f("form.mouth.radius_b", Mouth, "", "short radius", log(0.01, 100.0)),
     f("form.mouth.protuberances", Mouth, "", "protuberances: radial offsets around the ellipse (fractions)", Kind::List { width: 1, integer: false }),
     f("form.chamber.ratio", Chamber, "r", "growth ratio D₀′/D₀ per chamber", log(0.5, 2.0)),
-    f("form.chamber.width", Chamber, "H", "width between bottom and top base", log(0.001, 100.0)),
+    f("form.chamber.width", Chamber, "H", "width between bottom and top base (Tz)", log(0.001, 100.0)),
     f("form.chamber.inclination.x", Chamber, "Qx", "inclination about x (degrees)", real(-90.0, 90.0)),
     f("form.chamber.inclination.y", Chamber, "Qy", "inclination about y (degrees)", real(-90.0, 90.0)),
     f("form.chamber.inclination.z", Chamber, "Qz", "inclination about z (degrees)", real(-90.0, 90.0)),
-    f("form.chamber.translation.x", Chamber, "Tx", "shift of the next chamber along x", real(-10.0, 10.0)),
-    f("form.chamber.translation.y", Chamber, "Ty", "shift of the next chamber along y", real(-10.0, 10.0)),
-    f("form.chamber.translation.z", Chamber, "Tz", "shift of the next chamber along z", real(0.0, 10.0)),
+    f("form.chamber.shift.x", Chamber, "Tx", "position: top base moved sideways along x", real(-10.0, 10.0)),
+    f("form.chamber.shift.y", Chamber, "Ty", "position: top base moved sideways along y", real(-10.0, 10.0)),
 ];
 
 /// The fields of Kawaguchi's branching forms.
@@ -268,6 +267,7 @@ pub const BRANCHING: &[Field] = &[
     f("form.depth", Shape, "", "most generations of branches on branches", int(0, 12)),
     f("form.stop", Shape, "", "stop size: fraction of the first trunk's height (rule 8)", log(0.001, 1.0)),
     f("form.jitter", Shape, "", "random turn of rolls and branch angles (degrees)", real(0.0, 90.0)),
+    f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
     f("form.trunk.diameter", Trunk, "D₀", "diameter of the first trunk", log(0.01, 100.0)),
     f("form.trunk.slenderness", Trunk, "S", "H/D of every trunk (rule 1)", log(0.05, 20.0)),
     f("form.trunk.taper", Trunk, "", "diameter ratio from trunk to trunk", log(0.5, 1.0)),
@@ -380,6 +380,7 @@ pub const SHELL: &[Field] = &[
     f("colours.ground", Colours, "", "shell ground", Kind::Colour),
     f("colours.pigment", Colours, "", "pigment", Kind::Colour),
     f("colours.interior", Colours, "", "inside of the wall", Kind::Colour),
+    f("material.drawing", Material, "", "drawn as", Kind::Choice(&["shaded", "lines"])),
     f("material.gloss", Material, "", "polished reflections", real(0.0, 1.0)),
     f("material.anisotropy", Material, "", "highlights along the growth lines", real(0.0, 1.0)),
     f("material.translucency", Material, "", "light through the wall", real(0.0, 1.0)),

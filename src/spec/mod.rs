@@ -5,7 +5,7 @@ pub(crate) mod colour;
 pub mod fields;
 pub mod form;
 pub mod handedness;
-pub(crate) mod material;
+pub mod material;
 pub mod pattern;
 pub(crate) mod problem;
 

@@ -123,6 +123,16 @@ impl OrbitCamera {
         self.target != t0 || self.radius != r0
     }
 
+    /// The yaw of the first view: the direction the shell's front faces.
+    pub fn front_yaw(&self) -> f32 {
+        self.default_yaw
+    }
+
+    /// The centre and radius the view frames now, in display space.
+    pub fn frame(&self) -> (Vec3, f32) {
+        (self.target, self.radius)
+    }
+
     /// Whether the view rests: on its framing of `grown`, or where the user left it.
     pub fn settled(&self, grown: &Bounds) -> bool {
         !self.following || self.framing_of(grown) == (self.target, self.radius)

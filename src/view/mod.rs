@@ -1,8 +1,11 @@
 //! The platform-free half of the viewer: the orbit camera and the gestures that move it, the
-//! playback (rows per frame, the growth budget), and the preview of a pattern being edited.
-//! Tested natively; the web runner applies what they return.
+//! panes of one or four views, the playback (rows per frame, the growth budget), the preview of
+//! a pattern being edited, and the plan of a frame-exact recording. Tested natively; the web
+//! runner applies what they return.
 
 pub mod camera;
 pub mod gestures;
+pub mod panes;
 pub mod playback;
 pub mod preview;
+pub mod recording;

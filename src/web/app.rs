@@ -5,21 +5,33 @@
 //! `data-playing`, `data-pattern-hash`, `data-mesh` (the grown mesh's vertex and triangle
 //! counts, as the command line prints them), `data-pictures`, `data-preview` (filling, whole,
 //! stopped: the planar view's preview of a pattern slider being dragged, or empty), `data-map`
-//! (filling, whole, refused, none: the parameter map, or empty when it is closed).
+//! (filling, whole, refused, none: the parameter map, or empty when it is closed), `data-ui`
+//! (the interface the link asks for), `data-layout` (single, four: one view or Kawaguchi's
+//! four), `data-encoder` (what the page records video with: a codec's name, MediaRecorder, none,
+//! or checking), `data-record` (recording, saved, cancelled, failed) and `data-record-frames`
+//! (video frames captured).
 
+use super::dom;
 use super::download::Downloads;
 use super::gallery::Pictures;
 use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
+use super::record::{self, Recording, Step, Support};
+use super::share;
 use super::viewer::{Viewer, now};
 use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
+use crate::share::presentation::{Layout, Presentation};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
+use crate::view::panes::arrangement;
+use crate::view::recording::RecordingPlan;
+use std::cell::RefCell;
+use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
 
@@ -34,12 +46,18 @@ pub struct App {
     map: MapView,
     downloads: Downloads,
     current: Option<(&'static Preset, ShellSpec)>,
+    /// How the link asks the page to show the shell: one view or four, the interface.
+    presentation: Presentation,
     panel: Option<Panel>,
     on_change: Option<OnChange>,
     in_gallery: bool,
     url_due: Option<f64>,
     /// Why the page cannot go on (the graphics device was lost): the next frame stops on it.
     failure: Option<String>,
+    /// What the browser can record video with (found out after the start).
+    support: Rc<RefCell<Support>>,
+    /// A video being recorded.
+    recording: Option<Recording>,
 }
 
 fn say(problems: &[Problem]) {
@@ -78,12 +96,25 @@ impl App {
             map: MapView::default(),
             downloads: Downloads::default(),
             current: None,
+            presentation: Presentation::default(),
             panel: None,
             on_change: None,
             in_gallery: false,
             url_due: None,
             failure: None,
+            support: Rc::new(RefCell::new(Support::Checking)),
+            recording: None,
         }
+    }
+
+    /// Where the browser's answer about video encoders is written.
+    pub fn support(&self) -> Rc<RefCell<Support>> {
+        Rc::clone(&self.support)
+    }
+
+    /// Whether the page is embedded in another (an interface other than the full one).
+    pub fn embedded(&self) -> bool {
+        self.presentation.ui.embedded()
     }
 
     /// The panel's callback, which needs the shared handle of the app itself.
@@ -100,6 +131,8 @@ impl App {
         self.map.close();
         let fragment = location_hash();
         if fragment.trim_start_matches('#').is_empty() {
+            self.stop_recording("you went back to the gallery");
+            self.present(Presentation::default());
             self.show(true);
             page::hide_message();
             signal("state", "gallery");
@@ -108,9 +141,11 @@ impl App {
         let Decoded {
             preset,
             spec,
+            presentation,
             problems,
         } = link::decode(&fragment);
         say(&problems);
+        self.present(presentation);
         self.show(false);
         let same = self
             .current
@@ -118,6 +153,11 @@ impl App {
             .is_some_and(|(p, s)| p.id == preset.id && *s == spec);
         if !same {
             self.load(preset, spec);
+            if presentation.ui.embedded() && share::reduced_motion() {
+                // An embed for a reader who asked for less motion: the grown shell, still.
+                self.viewer.finish();
+                self.set_playing(false);
+            }
         }
     }
 
@@ -136,6 +176,7 @@ impl App {
     }
 
     fn load(&mut self, preset: &'static Preset, spec: ShellSpec) {
+        self.stop_recording("the shell was changed");
         signal("state", "loading");
         signal("patternHash", "");
         signal("mesh", "");
@@ -159,6 +200,9 @@ impl App {
             _ => {}
         }
         self.current = Some((preset, spec));
+        if let Some(link) = self.link() {
+            share::show_qr(&link);
+        }
         self.set_playing(true);
     }
 
@@ -173,6 +217,7 @@ impl App {
             preset,
             spec: next,
             problems,
+            ..
         } = link::with(preset, spec, key, &value);
         if change == Change::Moving {
             if previews(key) {
@@ -196,11 +241,69 @@ impl App {
         self.url_due = Some(now() + URL_DELAY_MS);
     }
 
-    /// The link of what is shown.
+    /// The link of what is shown, as it is shown.
     fn fragment(&self) -> Option<String> {
+        self.current.as_ref().map(|(p, s)| {
+            let mut fragment = format!("#{}", link::encode(p, s));
+            self.presentation.write(&mut fragment);
+            fragment
+        })
+    }
+
+    /// The whole link of what is shown, in the full interface: what the QR code holds.
+    fn link(&self) -> Option<String> {
         self.current
             .as_ref()
-            .map(|(p, s)| format!("#{}", link::encode(p, s)))
+            .map(|(p, s)| format!("{}#{}", share::page_url(), link::encode(p, s)))
+    }
+
+    /// Shows the shell as `presentation` asks: one view, or Kawaguchi's four with each pane
+    /// named over the canvas.
+    fn present(&mut self, presentation: Presentation) {
+        self.presentation = presentation;
+        share::apply_ui(presentation.ui);
+        let layout = presentation.layout;
+        self.viewer.set_layout(layout);
+        signal("layout", layout.name());
+        if let Some(button) = element("views") {
+            dom::attr(
+                &button,
+                "aria-pressed",
+                if layout == Layout::Four {
+                    "true"
+                } else {
+                    "false"
+                },
+            );
+        }
+        if let Some(viewer) = element("viewer") {
+            let _ = viewer
+                .class_list()
+                .toggle_with_force("four", layout == Layout::Four);
+        }
+        if let Some(labels) = element("panes") {
+            dom::clear(&labels);
+            labels.set_hidden(layout == Layout::Single);
+            for place in arrangement(layout) {
+                let label = dom::create("span", "pane", Some(place.name));
+                let style = label.style();
+                for (property, fraction) in ["left", "top", "width", "height"]
+                    .into_iter()
+                    .zip(place.viewport)
+                {
+                    let _ = style.set_property(property, &format!("{}%", fraction * 100.0));
+                }
+                dom::append(&labels, &[&label]);
+            }
+        }
+    }
+
+    /// Between one view and Kawaguchi's four (the link follows).
+    pub fn toggle_views(&mut self) {
+        let mut presentation = self.presentation;
+        presentation.layout = presentation.layout.toggled();
+        self.present(presentation);
+        self.update_url();
     }
 
     fn update_url(&mut self) {
@@ -226,6 +329,7 @@ impl App {
     }
 
     pub fn restart(&mut self) {
+        self.stop_recording("growth was restarted");
         if let Some((preset, spec)) = self.current.clone() {
             self.load(preset, spec);
         }
@@ -233,12 +337,14 @@ impl App {
 
     /// Grows one row, paused.
     pub fn step(&mut self) {
+        self.stop_recording("growth was moved by hand");
         self.set_playing(false);
         self.viewer.grow(1, GROWTH_BUDGET_MS);
     }
 
     /// Grows the shell to its end at once.
     pub fn finish(&mut self) {
+        self.stop_recording("growth was moved by hand");
         self.viewer.finish();
     }
 
@@ -289,18 +395,137 @@ impl App {
             return;
         };
         let url = window.location().href().unwrap_or_default();
-        let promise = window.navigator().clipboard().write_text(&url);
-        wasm_bindgen_futures::spawn_local(async move {
-            let done = wasm_bindgen_futures::JsFuture::from(promise).await.is_ok();
-            set_text(
-                "copy-status",
-                &if done {
-                    "Link copied".to_string()
+        share::copy(url.clone(), "Link copied", format!("Copy this link: {url}"));
+    }
+
+    /// Copies the `<iframe>` that embeds what is shown, in the interface chosen beside it.
+    pub fn copy_embed(&mut self) {
+        if let Some((preset, spec)) = &self.current {
+            let presentation = Presentation {
+                ui: share::chosen_ui(),
+                ..self.presentation
+            };
+            let snippet = share::snippet(&link::encode(preset, spec), presentation, &preset.name);
+            share::copy_embed(snippet);
+        }
+    }
+
+    /// Shows what the browser can record with, and refuses Record where it cannot.
+    pub fn show_support(&self) {
+        let support = self.support.borrow();
+        signal("encoder", support.signal());
+        set_text("record-status", &support.note());
+        if let Some(button) = element("record") {
+            dom::attr(
+                &button,
+                "aria-disabled",
+                if matches!(*support, Support::Nothing(_)) {
+                    "true"
                 } else {
-                    format!("Copy this link: {url}")
+                    "false"
                 },
             );
-        });
+        }
+    }
+
+    /// Grows the shell from its apex again and records every frame of its growth as a video,
+    /// with the options chosen in the panel.
+    pub fn record(&mut self) {
+        if self.recording.is_some() {
+            return;
+        }
+        let support = self.support.borrow().clone();
+        if matches!(support, Support::Checking | Support::Nothing(_)) {
+            set_text("record-status", &support.note());
+            return;
+        }
+        let Some((preset, spec)) = self.current.clone() else {
+            return;
+        };
+        self.close_map();
+        self.load(preset, spec);
+        let Some(rows) = self.viewer.growing().map(|g| g.generator.rows()) else {
+            return;
+        };
+        let speed = self.viewer.playback.speed;
+        let plan = RecordingPlan::new(rows, speed, record::options());
+        self.viewer.fix_size(Some((plan.width, plan.height)));
+        match Recording::start(plan, preset.id, &support, self.viewer.canvas()) {
+            Ok(recording) => {
+                signal("record", "recording");
+                record::show_recording(Some(&recording));
+                self.recording = Some(recording);
+            }
+            Err(e) => {
+                self.viewer.fix_size(None);
+                signal("record", "failed");
+                set_text(
+                    "record-status",
+                    &format!("The recording could not start: {e}."),
+                );
+            }
+        }
+    }
+
+    /// Stops a recording under way, keeping nothing of it, and says why.
+    pub fn stop_recording(&mut self, why: &str) {
+        let Some(recording) = self.recording.take() else {
+            return;
+        };
+        recording.cancel();
+        self.viewer.fix_size(None);
+        record::show_recording(None);
+        signal("record", "cancelled");
+        set_text(
+            "record-status",
+            &format!("Recording cancelled: {why}. Nothing was saved."),
+        );
+    }
+
+    /// One animation frame of a recording under way.
+    fn record_frame(&mut self) {
+        let Some(recording) = &mut self.recording else {
+            return;
+        };
+        let step = recording.step(&mut self.viewer);
+        if let Step::Working = step {
+            record::show_recording(Some(recording));
+            return;
+        }
+        let Some(recording) = self.recording.take() else {
+            return;
+        };
+        let (frames, seconds) = (
+            recording.plan().frames(),
+            recording.plan().duration_us() as f64 / 1e6,
+        );
+        self.viewer.fix_size(None);
+        record::show_recording(None);
+        signal("recordFrames", &recording.frames_done().to_string());
+        let outcome = match step {
+            Step::Done => recording.save(),
+            Step::Failed(e) => {
+                recording.cancel();
+                Err(e)
+            }
+            Step::Working => unreachable!("handled above"),
+        };
+        match outcome {
+            Ok(name) => {
+                signal("record", "saved");
+                set_text(
+                    "record-status",
+                    &format!("Saved {name}: {frames} frames, {seconds:.2} s."),
+                );
+            }
+            Err(e) => {
+                signal("record", "failed");
+                set_text(
+                    "record-status",
+                    &format!("The recording failed: {e}. Nothing was saved."),
+                );
+            }
+        }
     }
 
     /// Starts a download of the shell shown (written over the next frames).
@@ -320,6 +545,10 @@ impl App {
             return Err(failure.clone());
         }
         self.downloads.work();
+        if self.recording.is_some() {
+            self.record_frame();
+            return Ok(());
+        }
         if self.in_gallery {
             if !self.pictures.finished() {
                 self.pictures.work(PICTURE_BUDGET_MS);
@@ -386,6 +615,7 @@ impl App {
 
     /// Shows the parameter map of the shell shown.
     pub fn open_map(&mut self) {
+        self.stop_recording("the map covered the shell");
         if let Some((preset, spec)) = &self.current {
             self.map.open(preset, spec);
         }

@@ -232,7 +232,7 @@ fn show_progress(progress: Option<(&str, f64)>) {
 }
 
 /// Starts the download of the resource at `url` (an object or data URL) as `name`.
-fn offer_url(name: &str, url: &str) -> Result<(), String> {
+pub fn offer_url(name: &str, url: &str) -> Result<(), String> {
     let anchor: HtmlAnchorElement = page::document()
         .create_element("a")
         .map_err(|_| "cannot create a link".to_string())?
@@ -245,7 +245,7 @@ fn offer_url(name: &str, url: &str) -> Result<(), String> {
 }
 
 /// Starts the download of `bytes` as `name`.
-fn offer(name: &str, mime: &str, bytes: &[u8]) -> Result<(), String> {
+pub fn offer(name: &str, mime: &str, bytes: &[u8]) -> Result<(), String> {
     let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
     let options = BlobPropertyBag::new();
     options.set_type(mime);

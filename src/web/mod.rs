@@ -9,7 +9,10 @@ mod map;
 mod page;
 mod panel;
 mod planar;
+mod record;
+mod share;
 mod viewer;
+mod webcodecs;
 
 use crate::export::Download;
 use app::App;
@@ -95,8 +98,23 @@ pub async fn start() -> Result<(), JsValue> {
         }));
     app.borrow_mut().route();
     listen(&app)?;
+    probe_encoders(&app);
     run(app);
     Ok(())
+}
+
+/// Asks the browser what it can record video with, and shows the answer.
+fn probe_encoders(app: &Shared) {
+    let support = app.borrow().support();
+    app.borrow().show_support();
+    let app = Rc::downgrade(app);
+    wasm_bindgen_futures::spawn_local(async move {
+        let found = record::probe().await;
+        *support.borrow_mut() = found;
+        if let Some(app) = app.upgrade() {
+            app.borrow().show_support();
+        }
+    });
 }
 
 fn signal_loading() {
@@ -197,6 +215,11 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
         })?;
     }
     on(&canvas, "wheel", app, |a, e: WheelEvent| {
+        // An embedded shell leaves the wheel to the page around it; a pinch (or the wheel with
+        // Ctrl) still zooms.
+        if a.embedded() && !e.ctrl_key() {
+            return;
+        }
         e.prevent_default();
         a.viewer().wheel(e.delta_y());
     })?;
@@ -209,8 +232,14 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("step", app, App::step)?;
     on_click("finish", app, App::finish)?;
     on_click("reset-camera", app, App::reset_camera)?;
+    on_click("views", app, App::toggle_views)?;
     on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
     on_click("copy-link", app, App::copy_link)?;
+    on_click("copy-embed", app, App::copy_embed)?;
+    on_click("record", app, App::record)?;
+    on_click("record-cancel", app, |a| {
+        a.stop_recording("you cancelled it")
+    })?;
     for what in Download::ALL {
         on_click(&format!("download-{}", what.name()), app, move |a| {
             a.download(what)
@@ -249,6 +278,11 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
         })?;
     }
     let document: EventTarget = page::document().into();
+    on(&document, "visibilitychange", app, |a, _: Event| {
+        if page::document().hidden() {
+            a.stop_recording("the tab was hidden");
+        }
+    })?;
     on(&document, "keydown", app, |a, e: KeyboardEvent| {
         if typing(&e)
             || e.ctrl_key()
@@ -265,6 +299,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             "s" | "ArrowRight" => a.step(),
             "e" | "End" => a.finish(),
             "c" => a.reset_camera(),
+            "v" => a.toggle_views(),
             "f" => a.toggle_fullscreen(),
             "+" | "=" => a.set_speed(a.speed() * 1.5),
             "-" => a.set_speed(a.speed() / 1.5),

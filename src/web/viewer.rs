@@ -12,9 +12,11 @@ use crate::pattern::run::PatternRun;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
 use crate::render::{Renderer, ShellLook};
+use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::camera::OrbitCamera;
 use crate::view::gestures::{Pointers, wheel_zoom};
+use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::Preview;
 use web_sys::HtmlCanvasElement;
@@ -40,6 +42,11 @@ impl Growing {
     pub fn view_at_rest(&self) -> bool {
         self.camera.settled(&self.grown)
     }
+
+    /// The panes of `layout` on a canvas of aspect `aspect`.
+    fn panes(&self, layout: Layout, aspect: f32) -> Vec<Pane> {
+        panes(layout, &self.camera, &self.grown, aspect)
+    }
 }
 
 pub struct Viewer {
@@ -53,8 +60,12 @@ pub struct Viewer {
     dirty: bool,
     /// Whether the camera follows the growing shell (else it frames the whole).
     follows: bool,
+    /// One view, or Kawaguchi's four.
+    layout: Layout,
     /// When the last frame was drawn, milliseconds.
     last_frame: f64,
+    /// The drawing size a recording asks for, instead of the canvas's own.
+    fixed_size: Option<(u32, u32)>,
 }
 
 /// Milliseconds since the page started.
@@ -82,7 +93,9 @@ impl Viewer {
             playback: Playback::new(1.0),
             dirty: true,
             follows,
+            layout: Layout::Single,
             last_frame: now(),
+            fixed_size: None,
         })
     }
 
@@ -122,6 +135,7 @@ impl Viewer {
                 &spec.colours,
                 &spec.material,
                 crate::forms::rows_per_whorl(spec),
+                generator.line_grid(),
             ),
         );
         let (bounds, front) = generator.framing();
@@ -256,8 +270,10 @@ impl Viewer {
     /// Keeps the drawing buffer at the canvas's size in device pixels.
     fn fit_canvas(&mut self) {
         let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
-        let width = (f64::from(self.canvas.client_width()) * dpr).round() as u32;
-        let height = (f64::from(self.canvas.client_height()) * dpr).round() as u32;
+        let (width, height) = self.fixed_size.unwrap_or((
+            (f64::from(self.canvas.client_width()) * dpr).round() as u32,
+            (f64::from(self.canvas.client_height()) * dpr).round() as u32,
+        ));
         if width > 0 && height > 0 && (width, height) != (self.canvas.width(), self.canvas.height())
         {
             self.canvas.set_width(width);
@@ -312,9 +328,16 @@ impl Viewer {
         let Some(g) = &self.growing else {
             return Ok(false);
         };
-        self.renderer.draw(&g.camera)?;
+        self.renderer
+            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.dirty = false;
         Ok(true)
+    }
+
+    /// Shows one view or Kawaguchi's four.
+    pub fn set_layout(&mut self, layout: Layout) {
+        self.layout = layout;
+        self.dirty = true;
     }
 
     /// Back to the first view: following the growth again on the main view.
@@ -353,7 +376,8 @@ impl Viewer {
         let Some(g) = &self.growing else {
             return Err("nothing is drawn yet".into());
         };
-        self.renderer.draw(&g.camera)?;
+        self.renderer
+            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.canvas
             .to_data_url_with_type("image/png")
             .map_err(|_| "the browser refused to read the canvas".to_string())
@@ -361,5 +385,55 @@ impl Viewer {
 
     pub fn canvas(&self) -> &HtmlCanvasElement {
         &self.canvas
+    }
+
+    /// Draws at `size` pixels whatever the canvas's size on the page (a recording's frames;
+    /// the page shows them scaled to fit), or, with `None`, at the canvas's size again.
+    pub fn fix_size(&mut self, size: Option<(u32, u32)>) {
+        self.fixed_size = size;
+        let _ = self
+            .canvas
+            .class_list()
+            .toggle_with_force("fixed", size.is_some());
+        self.dirty = true;
+    }
+
+    /// Grows towards row `row` within `budget_ms`; says whether the shell now stands exactly
+    /// there (its shape caught up with the rows), or has ended.
+    pub fn grow_to(&mut self, row: usize, budget_ms: f64) -> bool {
+        self.end_preview();
+        let Some(g) = &mut self.growing else {
+            return true;
+        };
+        let behind = row.saturating_sub(g.generator.rows_done());
+        if behind > 0 || !g.generator.caught_up() {
+            let advance = g
+                .generator
+                .advance_while(behind, within(now, budget_ms, &mut g.longest_step));
+            self.upload(&advance);
+            self.dirty = true;
+        }
+        self.growing.as_ref().is_none_or(|g| {
+            g.generator.is_done() || (g.generator.rows_done() >= row && g.generator.caught_up())
+        })
+    }
+
+    /// Draws a recording's frame: the camera eased by `dt` seconds of video (not of the
+    /// clock) and turned by `turn` radians about the vertical.
+    pub fn draw_recorded(&mut self, dt: f32, turn: f32) -> Result<(), String> {
+        if let Some(failure) = self.renderer.failure() {
+            return Err(failure);
+        }
+        self.fit_canvas();
+        let Some(g) = &mut self.growing else {
+            return Err("no shell is loaded".into());
+        };
+        g.camera.follow(&g.grown, dt);
+        g.camera.yaw += turn;
+        self.renderer
+            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
+        self.last_frame = now();
+        self.dirty = false;
+        Ok(())
     }
 }

@@ -81,6 +81,39 @@ pub fn assert_mirrored(a: &Mesh, b: &Mesh) {
     }
 }
 
+/// Triangles in each connected piece of a mesh (welded by position), largest first.
+pub fn pieces(mesh: &Mesh) -> Vec<usize> {
+    let key = |i: u32| mesh.vertices[i as usize].position.map(f32::to_bits);
+    let mut id: HashMap<[u32; 3], usize> = HashMap::new();
+    for &i in &mesh.indices {
+        let n = id.len();
+        id.entry(key(i)).or_insert(n);
+    }
+    let mut parent: Vec<usize> = (0..id.len()).collect();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for t in mesh.indices.chunks_exact(3) {
+        let [a, b, c] = [t[0], t[1], t[2]].map(|i| id[&key(i)]);
+        for (x, y) in [(a, b), (b, c)] {
+            let (rx, ry) = (root(&mut parent, x), root(&mut parent, y));
+            parent[rx] = ry;
+        }
+    }
+    let mut count: HashMap<usize, usize> = HashMap::new();
+    for t in mesh.indices.chunks_exact(3) {
+        let r = root(&mut parent, id[&key(t[0])]);
+        *count.entry(r).or_insert(0) += 1;
+    }
+    let mut sizes: Vec<usize> = count.into_values().collect();
+    sizes.sort_unstable_by(|a, b| b.cmp(a));
+    sizes
+}
+
 /// The triangle count of a binary STL whose every edge (by exact corner coordinates) is shared
 /// by exactly two triangles: a watertight file.
 pub fn watertight_stl_triangles(bytes: &[u8]) -> usize {

@@ -62,13 +62,13 @@ test("the panel shows the chamber's fields, and a slider reshapes the shell", as
     for (const g of ['Mouth polygon', 'Chamber to chamber']) assert.ok(groups.includes(g), `${g} in ${groups}`);
     assert.equal(await page.locator('[data-key="form.spiral.whorls"]').count(), 0, 'no sweep fields');
     const before = await measureCanvas(page, `${SHOTS}horn-before.png`);
-    const slider = page.locator('[data-key="form.chamber.translation.y"] input.slider');
+    const slider = page.locator('[data-key="form.chamber.shift.y"] input.slider');
     await slider.fill('600');
-    await page.waitForFunction(() => location.hash.includes('form.chamber.translation.y='));
-    assert.match(await page.evaluate(() => location.hash), /form\.chamber\.translation\.y=2(&|$)/);
+    await page.waitForFunction(() => location.hash.includes('form.chamber.shift.y='));
+    assert.match(await page.evaluate(() => location.hash), /form\.chamber\.shift\.y=2(&|$)/);
     await waitForState(page, ['grown']);
     const after = await measureCanvas(page, `${SHOTS}horn-after.png`);
-    assert.notEqual(after.share, before.share, 'a wider shift opens the horn further');
+    assert.notEqual(after.share, before.share, 'a position further off the vertical opens the horn further');
     assert.deepEqual(errors, []);
   } finally {
     await close();

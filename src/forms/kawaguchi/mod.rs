@@ -4,3 +4,4 @@
 
 pub mod branching;
 pub mod chambers;
+pub(crate) mod facet;

@@ -11,7 +11,7 @@ use crate::blobtree::polygonize::{
     ChunkCache, ChunkIndex, Grid, Memory, Scratch, Seams, mesh_chunk, surface_box,
 };
 use crate::mesh::{Bounds, Capacity, Mesh};
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::form::implicit::ImplicitSpec;
 use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
@@ -43,6 +43,7 @@ pub struct ImplicitMesh {
     /// The last instance shown.
     shown: Option<u32>,
     scratch: Scratch,
+    line_grid: LineGrid,
 }
 
 impl ImplicitMesh {
@@ -92,6 +93,7 @@ impl ImplicitMesh {
             done: 0,
             shown: None,
             scratch: Scratch::default(),
+            line_grid: LineGrid::sparse(rows as f64 / spec.turns().max(1e-3), None),
         })
     }
 
@@ -141,6 +143,10 @@ impl GrowingShape for ImplicitMesh {
 
     fn bounds(&self) -> Bounds {
         self.bounds
+    }
+
+    fn line_grid(&self) -> LineGrid {
+        self.line_grid
     }
 
     fn front(&self) -> DVec3 {

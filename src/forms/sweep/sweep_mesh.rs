@@ -10,7 +10,7 @@
 use super::helico_spiral::SpiralWalk;
 use super::surface::{Rim, Sweep};
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::form::sweep::SweepSpec;
 use glam::DVec3;
 use std::f64::consts::TAU;
@@ -215,6 +215,11 @@ impl GrowingShape for SweepMesh {
             }
         }
         bounds
+    }
+
+    fn line_grid(&self) -> LineGrid {
+        let rows_per_whorl = TAU / self.sweep.step() * self.rows_per_rim;
+        LineGrid::sparse(rows_per_whorl, Some(self.rows_per_rim))
     }
 
     fn front(&self) -> DVec3 {

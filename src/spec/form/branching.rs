@@ -3,6 +3,7 @@
 //! modification" and "Extension of generating model", steps 1–6): trunks joined by knots,
 //! branches that start at knots, tendrils that correct their own rolling.
 
+use super::chambers::Look;
 use serde::{Deserialize, Serialize};
 
 /// A plant, coral or cluster of tentacles grown from one trunk.
@@ -22,6 +23,9 @@ pub struct BranchingSpec {
     /// Random turn of every knot's roll and every branch's angle, up to ± this many degrees,
     /// drawn from the spec's seed (0: none).
     pub jitter: f64,
+    /// Flat facets, a crease at every knot, as Kawaguchi drew his polyhedral trunks; or round
+    /// tubes bending smoothly through their knots.
+    pub look: Look,
 }
 
 /// Rule 1: trunks of diameter D and height H with H/D = S.

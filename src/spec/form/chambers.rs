@@ -58,13 +58,23 @@ pub struct MouthSpec {
 pub struct ChamberSpec {
     /// r = D₀′ / D₀: the growth ratio from a chamber's bottom base to its top base.
     pub ratio: f64,
-    /// H: the width (distance) between the bottom and top bases.
+    /// H: the width (distance) between the bottom and top bases, along the bottom base's
+    /// normal; the height component T_z of the position T.
     pub width: f64,
     /// Q: the inclination of the top base against the bottom base, degrees about x, y, z.
     pub inclination: Triple,
-    /// T: the shift of the next chamber's bottom base from this chamber's top base, in the top
-    /// base's own (scaled) frame. Zero: chambers adjoin.
-    pub translation: Triple,
+    /// (T_x, T_y): the position of the top base, moved sideways from straight above the
+    /// bottom base along its x and y axes (an oblique chamber). With T_z = H it is the whole
+    /// position T. Zero: the top base's centre lies straight above the bottom base's.
+    pub shift: Pair,
+}
+
+/// Two components along x and y.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Pair {
+    pub x: f64,
+    pub y: f64,
 }
 
 /// Three components along x, y and z.

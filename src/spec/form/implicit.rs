@@ -39,6 +39,13 @@ pub struct ImplicitSpec {
     pub opening: OpeningSpec,
 }
 
+impl ImplicitSpec {
+    /// Turns about the axis from the apex to the opening.
+    pub fn turns(&self) -> f64 {
+        f64::from(self.whorls) * self.whorl_angle / 360.0
+    }
+}
+
 /// Where a varix's spines stand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -85,6 +85,9 @@ pub struct Segment {
     /// For a branch's first trunk: the segment whose knot it grows from, and how many
     /// branching knots came before that one on its branch (the series index).
     pub parent: Option<(usize, u32)>,
+    /// The segment before this one along the same branch (whose knot leads to this trunk);
+    /// none for a branch's first trunk and the first trunk of the form.
+    pub previous: Option<usize>,
     /// The index of this trunk along its branch.
     pub index: u32,
     /// The knot's height: across the knot on the side opposite K, where it is widest (rule 7);
@@ -102,6 +105,7 @@ struct Tip {
     generation: usize,
     depth: usize,
     parent: Option<(usize, u32)>,
+    previous: Option<usize>,
 }
 
 /// Every segment of a branching form, in growth order.
@@ -137,6 +141,7 @@ impl BranchingTree {
             generation: 0,
             depth: 0,
             parent: None,
+            previous: None,
         }]);
         let mut tree = Self {
             segments: Vec::new(),
@@ -179,6 +184,7 @@ impl BranchingTree {
                 generation: tip.generation,
                 depth: tip.depth,
                 parent: tip.parent,
+                previous: tip.previous,
                 index: tip.index,
                 knot_height: if grows_on {
                     (across - far).length()
@@ -199,6 +205,7 @@ impl BranchingTree {
                 generation: tip.generation + 1,
                 depth: tip.depth,
                 parent: None,
+                previous: Some(k),
             });
             let b = &spec.branches;
             let branching = if b.every > 0 {
@@ -241,6 +248,7 @@ impl BranchingTree {
                     generation: tip.generation + 1,
                     depth: tip.depth + 1,
                     parent: Some((k, tip.branchings)),
+                    previous: None,
                 });
             }
         }

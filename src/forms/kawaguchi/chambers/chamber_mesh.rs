@@ -1,7 +1,7 @@
 //! Kawaguchi's chamber stack as a growing mesh: the first step lays the apex base (nothing to
 //! show yet), and every later step adds one chamber, its sides joined to the ring below band by
 //! band, and moves the cap that closes the mouth (the transient edge mesh). The result is one closed
-//! solid, outward-facing, whatever the look, handedness or shift between chambers.
+//! solid, outward-facing, whatever the look, handedness or position of the top base.
 //!
 //! The pigmentation paints it as it paints a sweep: a chamber stack is a sweep of N-gon rims,
 //! so apex j sits at position j/N along the growing edge and chamber c spans the rows from
@@ -9,8 +9,9 @@
 //! row more than chambers gives each facet a cell of its own.
 
 use super::chamber_stack::{ChamberStack, RingKind};
+use crate::forms::kawaguchi::facet::Facet;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
-use crate::shape::{GrowingShape, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, ShapeError};
 use crate::spec::form::chambers::{ChambersSpec, Look};
 use glam::{DAffine3, DVec3};
 
@@ -44,9 +45,7 @@ pub struct ChamberMesh {
 pub fn mesh_capacity(spec: &ChambersSpec) -> (Capacity, Capacity) {
     let n = spec.mouth.apexes as usize;
     let chambers = spec.chambers as usize;
-    let shift = spec.chamber.translation.to_array() != [0.0; 3];
-    let per_chamber = 1 + usize::from(spec.septa) + usize::from(shift);
-    let rings = chambers * per_chamber + usize::from(!shift);
+    let rings = chambers * (1 + usize::from(spec.septa)) + 1;
     let bands = rings.saturating_sub(1);
     let band_vertices = match spec.look {
         Look::Faceted => 4 * n,
@@ -131,18 +130,11 @@ impl ChamberMesh {
         match self.look {
             Look::Faceted => {
                 for j in 0..n {
-                    let k = (j + 1) % n;
-                    let corners = [a.points[j], a.points[k], b.points[k], b.points[j]];
-                    let face = (corners[2] - corners[0]).cross(corners[3] - corners[1]);
+                    let facet = Facet::new([&a.points, &b.points], [a.row, b.row], j);
+                    let face = facet.face;
                     let normal = if self.inward { -face } else { face }.normalize_or_zero();
-                    let at = [
-                        (x(j), a.row),
-                        (x(j + 1), a.row),
-                        (x(j + 1), b.row),
-                        (x(j), b.row),
-                    ];
                     let base = mesh.next_index();
-                    for (p, (u, row)) in corners.into_iter().zip(at) {
+                    for (p, [u, row]) in facet.corners.into_iter().zip(facet.pattern) {
                         mesh.vertices.push(self.vertex(p, normal, u, row, surface));
                     }
                     mesh.quad([base, base + 1, base + 2, base + 3], flip);
@@ -196,8 +188,7 @@ impl ChamberMesh {
         let next_frame = self.stack.next_frame(&frame);
         let rings: Vec<Ring> = self
             .stack
-            .rings_of(c)
-            .filter(|&k| !(c == 0 && k == RingKind::Bottom))
+            .rings_above_bottom()
             .map(|k| self.ring(&frame, c, k))
             .collect();
         // Smooth normals at the last ring look at the next chamber's first ring.
@@ -205,7 +196,7 @@ impl ChamberMesh {
         let following = (smooth && c + 1 < self.stack.chambers()).then(|| {
             let kind = self
                 .stack
-                .rings_of(c + 1)
+                .rings_above_bottom()
                 .next()
                 .expect("a chamber has rings");
             self.ring(&next_frame, c + 1, kind)
@@ -248,6 +239,14 @@ impl GrowingShape for ChamberMesh {
 
     fn bounds(&self) -> Bounds {
         self.stack.bounds()
+    }
+
+    /// The chambers' edges: apex j of N at x = j / N, a base every chamber.
+    fn line_grid(&self) -> LineGrid {
+        LineGrid {
+            across: self.stack.apexes() as f64,
+            rows: self.rows_per_chamber,
+        }
     }
 
     fn front(&self) -> DVec3 {

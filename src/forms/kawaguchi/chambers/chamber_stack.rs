@@ -5,24 +5,29 @@
 //!
 //! In a chamber's own frame the bottom base is the mouth polygon in the plane z = 0, centred
 //! on the origin. Its top base is the bottom base scaled by the growth ratio r, inclined by
-//! Q = (Qx, Qy, Qz) (rotations about x, then y, then z, about the base's centre) and lifted by
-//! the width H along z:
+//! Q = (Qx, Qy, Qz) (rotations about x, then y, then z, about the base's centre) and moved to
+//! the position T = (Tx, Ty, Tz):
 //!
-//! > C(x) = (0, 0, H) + r R(Q) x
+//! > C(x) = T + r R(Q) x,   T = (Tx, Ty, H)
 //!
-//! The next chamber's bottom base is that top base shifted by T = (Tx, Ty, Tz) in the top
-//! base's own scaled frame, so one period of growth is P = C ∘ (x ↦ x + T), a similarity of
-//! ratio r. With T = 0 chambers adjoin; with T ≠ 0 they separate, a short sheared joint closes
-//! the gap, and the spiral opens into a ram's or goat's horn (fig. 5).
+//! The paper: "the width, H, is the distance between the top and bottom bases, and the
+//! position is nothing but the transferring of axis x and y, which reaches the top and bottom
+//! bases", and "the width relationship, T_z, is fixed": T_z is the width H, and (Tx, Ty) move
+//! the top base sideways from straight above the bottom base, making the chamber oblique.
+//! Chambers accumulate base on base, so the next chamber's bottom base is this one's top base
+//! and one period of growth is C itself, a similarity of ratio r. A position that leaves the
+//! vertical moves the centre of similitude along the axis of R(Q): each whorl advances past
+//! the last instead of resting on it, and the spiral "starts to form in the shape of horns of
+//! sheep or goats" (fig. 5).
 //!
 //! Shell space is the one every form shares (the spiral's axis along z, growing towards +z):
-//! the centre of similitude of P — the apex the chambers shrink towards — is put at the origin
+//! the centre of similitude of C — the apex the chambers shrink towards — is put at the origin
 //! and the axis of R(Q) along z.
 
 use super::mouth::mouth_polygon;
 use crate::mesh::Bounds;
 use crate::shape::ShapeError;
-use crate::spec::form::chambers::{ChamberSpec, ChambersSpec};
+use crate::spec::form::chambers::{ChamberSpec, ChambersSpec, Pair};
 use crate::spec::handedness::Handedness;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 
@@ -51,20 +56,33 @@ pub fn turn_per_chamber(spec: &ChamberSpec) -> f64 {
     inclination(spec).to_axis_angle().1
 }
 
+/// The chamber that grows as the chambers of links made before T was read as the top base's
+/// position: those placed the next chamber's bottom base at T beyond the top base, in the top
+/// base's own scaled frame, so that one period of growth was x ↦ (0, 0, H) + r R(Q)(x + T).
+/// The chamber reaching the next bottom base in one step has the position
+/// (0, 0, H) + r R(Q) T instead: the same similarity, so the same spiral, without the joints.
+/// Returns that chamber (its width H and sideways position (Tx, Ty)); the caller checks it.
+pub fn chamber_of_shift_beyond_top(spec: &ChamberSpec, beyond: DVec3) -> ChamberSpec {
+    let position = DVec3::new(0.0, 0.0, spec.width) + spec.ratio * (inclination(spec) * beyond);
+    ChamberSpec {
+        width: position.z,
+        shift: Pair {
+            x: position.x,
+            y: position.y,
+        },
+        ..spec.clone()
+    }
+}
+
 /// The chambers of one [`ChambersSpec`], placed in shell space.
 pub struct ChamberStack {
     /// The mouth polygon in the base plane (z = 0).
     bottom: Vec<DVec3>,
-    /// The same polygon as the top base, in the bottom base's frame.
-    top: Vec<DVec3>,
-    /// C: a chamber's bottom frame to its top frame.
+    /// C: a chamber's bottom frame to its top frame, which is the next chamber's bottom frame.
     chamber: DAffine3,
-    /// P: one chamber's bottom frame to the next one's.
-    period: DAffine3,
     /// The first chamber's frame in shell space.
     placement: DAffine3,
     chambers: usize,
-    adjoining: bool,
     septa: bool,
     handedness: Handedness,
 }
@@ -87,12 +105,12 @@ impl ChamberStack {
                 ),
             ));
         }
-        if c.translation.z < 0.0 {
+        if !(c.shift.x.is_finite() && c.shift.y.is_finite()) {
             return Err(ShapeError::new(
-                "form.chamber.translation.z",
+                "form.chamber.shift",
                 format!(
-                    "Tz must not be negative (the next chamber would grow back into this one), not {}",
-                    c.translation.z
+                    "the position (Tx, Ty) must be numbers, not ({}, {})",
+                    c.shift.x, c.shift.y
                 ),
             ));
         }
@@ -110,7 +128,7 @@ impl ChamberStack {
         let chamber = DAffine3::from_scale_rotation_translation(
             DVec3::splat(c.ratio),
             rotation,
-            DVec3::new(0.0, 0.0, c.width),
+            DVec3::new(c.shift.x, c.shift.y, c.width),
         );
         let top: Vec<DVec3> = bottom
             .iter()
@@ -124,17 +142,26 @@ impl ChamberStack {
                 ),
             ));
         }
-        let shift = DVec3::from(c.translation.to_array());
-        let period = chamber * DAffine3::from_translation(shift);
-        let placement = placement(&period, &top, rotation);
+        // The bottom base must stay below the top base's plane too, or the next chamber's
+        // side would fold back over this one's.
+        let from_top = chamber.inverse();
+        if let Some(j) = bottom
+            .iter()
+            .position(|&p| from_top.transform_point3(p).z >= 0.0)
+        {
+            return Err(ShapeError::new(
+                "form.chamber.shift",
+                format!(
+                    "the chamber leans over so far that its bottom base crosses the top base's plane at apex {j}; raise the width H or lower the position (Tx, Ty) or the inclination Q"
+                ),
+            ));
+        }
+        let placement = placement(&chamber, &top, rotation);
         Ok(Self {
             bottom,
-            top,
             chamber,
-            period,
             placement,
             chambers: spec.chambers as usize,
-            adjoining: shift == DVec3::ZERO,
             septa: spec.septa,
             handedness: spec.handedness,
         })
@@ -150,17 +177,12 @@ impl ChamberStack {
         self.bottom.len()
     }
 
-    /// Whether each chamber's bottom base is the previous one's top base (T = 0).
-    pub fn adjoining(&self) -> bool {
-        self.adjoining
-    }
-
-    /// The rings chamber `c` adds, in growth order: its bottom base unless it shares the
-    /// previous chamber's top, the end of its suture band when septa are marked, its top base.
-    pub fn rings_of(&self, c: usize) -> impl Iterator<Item = RingKind> {
-        let bottom = (c == 0 || !self.adjoining).then_some(RingKind::Bottom);
+    /// The rings a chamber adds above its bottom base (the previous chamber's top base, or
+    /// for the first chamber the apex base), in growth order: the end of its suture band when
+    /// septa are marked, and its top base.
+    pub fn rings_above_bottom(&self) -> impl Iterator<Item = RingKind> {
         let suture = self.septa.then_some(RingKind::Suture);
-        bottom.into_iter().chain(suture).chain([RingKind::Top])
+        suture.into_iter().chain([RingKind::Top])
     }
 
     /// The first chamber's frame: its bottom base's local coordinates to shell space.
@@ -170,7 +192,7 @@ impl ChamberStack {
 
     /// The frame of the chamber after the one whose frame is `frame`.
     pub fn next_frame(&self, frame: &DAffine3) -> DAffine3 {
-        *frame * self.period
+        *frame * self.chamber
     }
 
     /// The frame of chamber `c`, reached by the same steps as growth takes.
@@ -179,16 +201,22 @@ impl ChamberStack {
     }
 
     /// The apexes of one ring of the chamber whose frame is `frame`, in shell space before
-    /// mirroring.
+    /// mirroring. A top base is computed as the next chamber's bottom base, by the same
+    /// operations, so the two are equal bit for bit.
     pub fn ring(&self, frame: &DAffine3, kind: RingKind) -> Vec<DVec3> {
-        let local = |j: usize| match kind {
-            RingKind::Bottom => self.bottom[j],
-            RingKind::Top => self.top[j],
-            RingKind::Suture => self.bottom[j].lerp(self.top[j], SUTURE),
+        let placed = |frame: DAffine3, local: &dyn Fn(DVec3) -> DVec3| -> Vec<DVec3> {
+            self.bottom
+                .iter()
+                .map(|&p| frame.transform_point3(local(p)))
+                .collect()
         };
-        (0..self.apexes())
-            .map(|j| frame.transform_point3(local(j)))
-            .collect()
+        match kind {
+            RingKind::Bottom => placed(*frame, &|p| p),
+            RingKind::Top => placed(self.next_frame(frame), &|p| p),
+            RingKind::Suture => placed(*frame, &|p| {
+                p.lerp(self.chamber.transform_point3(p), SUTURE)
+            }),
+        }
     }
 
     /// The direction of growth through a ring: the normal of its base plane (a suture ring
@@ -219,7 +247,7 @@ impl ChamberStack {
     /// next.
     pub fn similarity(&self) -> DAffine3 {
         let mirror = DAffine3::from_scale(self.handedness.mirror(DVec3::ONE));
-        mirror * self.placement * self.period * self.placement.inverse() * mirror
+        mirror * self.placement * self.chamber * self.placement.inverse() * mirror
     }
 
     /// Bounding box of the fully grown stack.

@@ -1,0 +1,537 @@
+//! Recording a video of the growth, frame-exact: each video frame grows the shell to the row
+//! the plan gives it (`view::recording`), draws it at the video's size and hands the canvas to
+//! the encoder, however long that takes — "grow k rows, draw, capture", spread over as many
+//! animation frames as the growth budget needs, so the tab stays responsive. WebCodecs'
+//! `VideoEncoder` encodes (VP9, VP8 or AV1, the first the browser takes) and the core's WebM
+//! muxer writes the file, which downloads only when whole. Where WebCodecs is missing,
+//! `MediaRecorder` records the canvas in real time instead, and the page says so: its video
+//! follows the clock, so a slow machine gives an uneven one. A cancelled or interrupted
+//! recording drops everything it collected.
+
+use super::download;
+use super::page::{element, set_text, signal};
+use super::viewer::{Viewer, now};
+use super::webcodecs::{self, CanvasCaptureTrack, EncodedVideoChunk, VideoEncoder, VideoFrame};
+use crate::export::webm::{VideoCodec, WebmWriter};
+use crate::generator::GROWTH_BUDGET_MS;
+use crate::view::recording::{RecordingOptions, RecordingPlan, VideoSize};
+use std::cell::RefCell;
+use std::rc::Rc;
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+use wasm_bindgen_futures::JsFuture;
+use web_sys::{HtmlCanvasElement, HtmlProgressElement, HtmlSelectElement};
+
+/// Frames waiting in the encoder before the recording waits for it.
+const MAX_QUEUE: u32 = 4;
+/// Milliseconds of video in each piece `MediaRecorder` hands over.
+const RECORDER_SLICE_MS: i32 = 1000;
+/// What `MediaRecorder` may write, in order of preference.
+const RECORDER_TYPES: [&str; 4] = [
+    "video/webm;codecs=vp9",
+    "video/webm;codecs=vp8",
+    "video/webm",
+    "video/mp4",
+];
+
+/// What this browser can record with.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Support {
+    /// Not known yet (the encoders are being asked).
+    Checking,
+    /// WebCodecs with this codec, frame-exact.
+    WebCodecs(VideoCodec),
+    /// `MediaRecorder` writing this type, in real time.
+    MediaRecorder(String),
+    /// Nothing: why.
+    Nothing(String),
+}
+
+impl Support {
+    /// The page's signal (`data-encoder`).
+    pub fn signal(&self) -> &str {
+        match self {
+            Support::Checking => "checking",
+            Support::WebCodecs(codec) => codec.name(),
+            Support::MediaRecorder(_) => "MediaRecorder",
+            Support::Nothing(_) => "none",
+        }
+    }
+
+    /// What the page says about recording here, before anything is recorded.
+    pub fn note(&self) -> String {
+        match self {
+            Support::Checking => "Asking the browser for a video encoder…".into(),
+            Support::WebCodecs(codec) => format!(
+                "Records every frame of the growth, however slow this machine: {} in WebM.",
+                codec.name()
+            ),
+            Support::MediaRecorder(mime) => format!(
+                "This browser has no WebCodecs video encoder, so the video is recorded in real \
+                 time with MediaRecorder ({mime}): on a slow machine it is uneven."
+            ),
+            Support::Nothing(why) => format!("This browser cannot record video: {why}."),
+        }
+    }
+}
+
+/// Asks the browser what it can record with: the first codec of [`VideoCodec::PREFERENCE`]
+/// its `VideoEncoder` takes at the largest size and rate offered, else `MediaRecorder`.
+pub async fn probe() -> Support {
+    let has_encoder = webcodecs::has("VideoEncoder");
+    if has_encoder {
+        for codec in VideoCodec::PREFERENCE {
+            let (width, height) = VideoSize::P1080.pixels();
+            let config = webcodecs::object(&[
+                ("codec", codec.codec_string().into()),
+                ("width", width.into()),
+                ("height", height.into()),
+                ("bitrate", 10_000_000.into()),
+                ("framerate", 60.into()),
+            ]);
+            let answer = JsFuture::from(VideoEncoder::is_config_supported(&config)).await;
+            let supported = answer
+                .ok()
+                .and_then(|a| js_sys::Reflect::get(&a, &"supported".into()).ok())
+                .is_some_and(|s| s.is_truthy());
+            if supported {
+                return Support::WebCodecs(codec);
+            }
+        }
+    }
+    if webcodecs::has("MediaRecorder")
+        && let Some(mime) = RECORDER_TYPES
+            .iter()
+            .find(|t| web_sys::MediaRecorder::is_type_supported(t))
+    {
+        return Support::MediaRecorder(mime.to_string());
+    }
+    Support::Nothing(if has_encoder {
+        "its VideoEncoder takes none of VP9, VP8 and AV1, and it has no MediaRecorder".into()
+    } else {
+        "it has neither WebCodecs' VideoEncoder nor MediaRecorder".into()
+    })
+}
+
+/// The options chosen on the page.
+pub fn options() -> RecordingOptions {
+    let choice = |id: &str| {
+        element(id)
+            .and_then(|e| e.dyn_into::<HtmlSelectElement>().ok())
+            .map(|s| s.value())
+            .unwrap_or_default()
+    };
+    RecordingOptions {
+        size: VideoSize::parse(&choice("record-size")).unwrap_or(VideoSize::P720),
+        fps: if choice("record-fps") == "60" { 60 } else { 30 },
+        turntable_s: choice("record-turntable").parse().unwrap_or(0).min(6),
+    }
+}
+
+/// What the browser's callbacks hand back while the recording runs.
+#[derive(Default)]
+struct Collected {
+    muxer: Option<WebmWriter>,
+    pieces: Vec<web_sys::Blob>,
+    error: Option<String>,
+    /// The encoder has flushed, or the recorder stopped: the file can be made.
+    finished: bool,
+}
+
+/// Where the frames go.
+enum Sink {
+    Codec {
+        encoder: VideoEncoder,
+        _output: Closure<dyn FnMut(EncodedVideoChunk, JsValue)>,
+        _error: Closure<dyn FnMut(JsValue)>,
+    },
+    Stream {
+        recorder: web_sys::MediaRecorder,
+        track: CanvasCaptureTrack,
+        mime: String,
+        _data: Closure<dyn FnMut(web_sys::BlobEvent)>,
+        _stop: Closure<dyn FnMut()>,
+    },
+}
+
+/// How a step of the recording went.
+pub enum Step {
+    Working,
+    /// Every frame is in: [`Recording::save`] makes the file.
+    Done,
+    Failed(String),
+}
+
+/// A recording under way.
+pub struct Recording {
+    plan: RecordingPlan,
+    preset: &'static str,
+    sink: Sink,
+    collected: Rc<RefCell<Collected>>,
+    /// The next frame to capture.
+    next: usize,
+    /// The turntable's turn so far, radians.
+    turned: f32,
+    /// When it started, for `MediaRecorder`'s real-time pace.
+    started: f64,
+    /// Every frame is captured; waiting for the encoder to finish.
+    flushing: bool,
+}
+
+fn describe(e: &JsValue) -> String {
+    e.as_string()
+        .or_else(|| {
+            e.dyn_ref::<js_sys::Error>()
+                .map(|e| String::from(e.message()))
+        })
+        .unwrap_or_else(|| format!("{e:?}"))
+}
+
+fn codec_sink(
+    plan: &RecordingPlan,
+    codec: VideoCodec,
+    collected: &Rc<RefCell<Collected>>,
+) -> Result<Sink, String> {
+    collected.borrow_mut().muxer = Some(WebmWriter::new(codec, plan.width, plan.height, plan.fps));
+    let into = Rc::clone(collected);
+    let output = Closure::new(move |chunk: EncodedVideoChunk, metadata: JsValue| {
+        let bytes = js_sys::Uint8Array::new_with_length(chunk.byte_length());
+        chunk.copy_to(&bytes);
+        let mut collected = into.borrow_mut();
+        let collected = &mut *collected;
+        let Some(muxer) = &mut collected.muxer else {
+            return;
+        };
+        let description = js_sys::Reflect::get(&metadata, &"decoderConfig".into())
+            .and_then(|c| js_sys::Reflect::get(&c, &"description".into()));
+        if let Some(d) = description.ok().filter(|d| !d.is_undefined()) {
+            muxer.set_codec_private(&js_sys::Uint8Array::new(&d).to_vec());
+        }
+        let pushed = muxer.push(
+            &bytes.to_vec(),
+            chunk.timestamp().max(0.0) as u64,
+            chunk.kind() == "key",
+        );
+        if let Err(e) = pushed {
+            collected
+                .error
+                .get_or_insert(format!("the muxer refused a frame ({e})"));
+        }
+    });
+    let errors = Rc::clone(collected);
+    let error = Closure::new(move |e: JsValue| {
+        errors
+            .borrow_mut()
+            .error
+            .get_or_insert(format!("the video encoder failed ({})", describe(&e)));
+    });
+    let init = webcodecs::object(&[
+        ("output", output.as_ref().clone()),
+        ("error", error.as_ref().clone()),
+    ]);
+    let encoder = VideoEncoder::new(&init)
+        .map_err(|e| format!("the video encoder could not be made ({})", describe(&e)))?;
+    let config = webcodecs::object(&[
+        ("codec", codec.codec_string().into()),
+        ("width", plan.width.into()),
+        ("height", plan.height.into()),
+        ("bitrate", plan.bitrate().into()),
+        ("framerate", plan.fps.into()),
+    ]);
+    encoder
+        .configure(&config)
+        .map_err(|e| format!("the video encoder refused its settings ({})", describe(&e)))?;
+    Ok(Sink::Codec {
+        encoder,
+        _output: output,
+        _error: error,
+    })
+}
+
+fn stream_sink(
+    plan: &RecordingPlan,
+    mime: &str,
+    canvas: &HtmlCanvasElement,
+    collected: &Rc<RefCell<Collected>>,
+) -> Result<Sink, String> {
+    let stream = canvas
+        .capture_stream_with_frame_request_rate(0.0)
+        .map_err(|e| format!("the canvas cannot be captured ({})", describe(&e)))?;
+    let track: CanvasCaptureTrack = stream
+        .get_video_tracks()
+        .get(0)
+        .dyn_into::<web_sys::MediaStreamTrack>()
+        .map_err(|_| "the canvas's stream has no video".to_string())?
+        .unchecked_into();
+    let options = web_sys::MediaRecorderOptions::new();
+    options.set_mime_type(mime);
+    options.set_video_bits_per_second(plan.bitrate());
+    let recorder =
+        web_sys::MediaRecorder::new_with_media_stream_and_media_recorder_options(&stream, &options)
+            .map_err(|e| format!("MediaRecorder could not start ({})", describe(&e)))?;
+    let into = Rc::clone(collected);
+    let data = Closure::new(move |e: web_sys::BlobEvent| {
+        if let Some(blob) = e.data().filter(|b| b.size() > 0.0) {
+            into.borrow_mut().pieces.push(blob);
+        }
+    });
+    let done = Rc::clone(collected);
+    let stop = Closure::new(move || done.borrow_mut().finished = true);
+    recorder.set_ondataavailable(Some(data.as_ref().unchecked_ref()));
+    recorder.set_onstop(Some(stop.as_ref().unchecked_ref()));
+    recorder
+        .start_with_time_slice(RECORDER_SLICE_MS)
+        .map_err(|e| format!("MediaRecorder could not start ({})", describe(&e)))?;
+    Ok(Sink::Stream {
+        recorder,
+        track,
+        mime: mime.to_string(),
+        _data: data,
+        _stop: stop,
+    })
+}
+
+impl Recording {
+    /// Starts recording the shell `viewer` has just started growing, with what `support`
+    /// offers, as `plan` says.
+    pub fn start(
+        plan: RecordingPlan,
+        preset: &'static str,
+        support: &Support,
+        canvas: &HtmlCanvasElement,
+    ) -> Result<Self, String> {
+        let collected = Rc::new(RefCell::new(Collected::default()));
+        let sink = match support {
+            Support::WebCodecs(codec) => codec_sink(&plan, *codec, &collected)?,
+            Support::MediaRecorder(mime) => stream_sink(&plan, mime, canvas, &collected)?,
+            other => return Err(other.note()),
+        };
+        Ok(Self {
+            plan,
+            preset,
+            sink,
+            collected,
+            next: 0,
+            turned: 0.0,
+            started: now(),
+            flushing: false,
+        })
+    }
+
+    /// The plan being recorded.
+    pub fn plan(&self) -> &RecordingPlan {
+        &self.plan
+    }
+
+    /// Frames captured so far.
+    pub fn frames_done(&self) -> usize {
+        self.next
+    }
+
+    /// Works on the recording for one animation frame: grows towards the next video frame's
+    /// row within the growth budget and, once there, draws and captures it.
+    pub fn step(&mut self, viewer: &mut Viewer) -> Step {
+        if let Some(e) = self.collected.borrow_mut().error.take() {
+            return Step::Failed(e);
+        }
+        if self.flushing {
+            return if self.collected.borrow().finished {
+                Step::Done
+            } else {
+                Step::Working
+            };
+        }
+        let waiting = match &self.sink {
+            Sink::Codec { encoder, .. } => encoder.encode_queue_size() > MAX_QUEUE,
+            Sink::Stream { .. } => {
+                now() < self.started + self.plan.timestamp_us(self.next) as f64 / 1000.0
+            }
+        };
+        if waiting || !viewer.grow_to(self.plan.rows_at(self.next), GROWTH_BUDGET_MS) {
+            return Step::Working;
+        }
+        let turn = self.plan.turn_at(self.next);
+        if let Err(e) = viewer.draw_recorded(self.plan.frame_s(), turn - self.turned) {
+            return Step::Failed(e);
+        }
+        self.turned = turn;
+        if let Err(e) = self.capture(viewer.canvas()) {
+            return Step::Failed(e);
+        }
+        self.next += 1;
+        if self.next == self.plan.frames() {
+            self.end();
+        }
+        Step::Working
+    }
+
+    /// Hands the canvas, just drawn, to the encoder as frame `next`.
+    fn capture(&self, canvas: &HtmlCanvasElement) -> Result<(), String> {
+        match &self.sink {
+            Sink::Codec { encoder, .. } => {
+                let (at, next_at) = (
+                    self.plan.timestamp_us(self.next),
+                    self.plan.timestamp_us(self.next + 1),
+                );
+                let init = webcodecs::object(&[
+                    ("timestamp", (at as f64).into()),
+                    ("duration", ((next_at - at) as f64).into()),
+                ]);
+                let frame = VideoFrame::new(canvas, &init)
+                    .map_err(|e| format!("the canvas could not be read ({})", describe(&e)))?;
+                let options =
+                    webcodecs::object(&[("keyFrame", self.plan.is_keyframe(self.next).into())]);
+                let encoded = encoder.encode(&frame, &options);
+                frame.close();
+                encoded.map_err(|e| format!("the frame could not be encoded ({})", describe(&e)))
+            }
+            Sink::Stream { track, .. } => {
+                track.request_frame();
+                Ok(())
+            }
+        }
+    }
+
+    /// Every frame is captured: lets the encoder finish.
+    fn end(&mut self) {
+        self.flushing = true;
+        match &self.sink {
+            Sink::Codec { encoder, .. } => {
+                let flushed = JsFuture::from(encoder.flush());
+                let collected = Rc::clone(&self.collected);
+                wasm_bindgen_futures::spawn_local(async move {
+                    let result = flushed.await;
+                    let mut c = collected.borrow_mut();
+                    match result {
+                        Ok(_) => c.finished = true,
+                        Err(e) => {
+                            c.error.get_or_insert(format!(
+                                "the video encoder could not finish ({})",
+                                describe(&e)
+                            ));
+                        }
+                    }
+                });
+            }
+            Sink::Stream { recorder, .. } => {
+                // Stopping hands over the last piece, then says it stopped.
+                let _ = recorder.stop();
+            }
+        }
+    }
+
+    /// Stops the encoder and lets go of the canvas, keeping nothing.
+    fn close(&self) {
+        match &self.sink {
+            Sink::Codec { encoder, .. } => {
+                // Closing an encoder that failed or closed already changes nothing.
+                let _ = encoder.close();
+            }
+            Sink::Stream {
+                recorder, track, ..
+            } => {
+                recorder.set_ondataavailable(None);
+                recorder.set_onstop(None);
+                if recorder.state() != web_sys::RecordingState::Inactive {
+                    let _ = recorder.stop();
+                }
+                track.stop();
+            }
+        }
+        let mut c = self.collected.borrow_mut();
+        c.muxer = None;
+        c.pieces.clear();
+    }
+
+    /// Drops the recording: nothing collected is kept, no file is made.
+    pub fn cancel(self) {
+        self.close();
+    }
+
+    /// Makes the file of a finished recording and offers it; returns its name.
+    pub fn save(self) -> Result<String, String> {
+        let made = match &self.sink {
+            Sink::Codec { .. } => {
+                let muxer = self.collected.borrow_mut().muxer.take();
+                let muxer = muxer.ok_or("the recording has no frames")?;
+                if muxer.frames() != self.plan.frames() {
+                    Err(format!(
+                        "the encoder returned {} frames of {}",
+                        muxer.frames(),
+                        self.plan.frames()
+                    ))
+                } else {
+                    let name = self.plan.file_name(self.preset);
+                    download::offer(&name, "video/webm", &muxer.finish()).map(|()| name)
+                }
+            }
+            Sink::Stream { mime, .. } => self.save_pieces(mime),
+        };
+        self.close();
+        made
+    }
+
+    /// `MediaRecorder`'s pieces as one file.
+    fn save_pieces(&self, mime: &str) -> Result<String, String> {
+        let pieces: js_sys::Array = self.collected.borrow().pieces.iter().collect();
+        let options = web_sys::BlobPropertyBag::new();
+        let kind = mime.split(';').next().unwrap_or(mime);
+        options.set_type(kind);
+        let blob = web_sys::Blob::new_with_blob_sequence_and_options(&pieces, &options)
+            .map_err(|_| "the browser refused to make the file".to_string())?;
+        let extension = if kind == "video/mp4" { "mp4" } else { "webm" };
+        let name = self
+            .plan
+            .file_name(self.preset)
+            .replace(".webm", &format!(".{extension}"));
+        let url = web_sys::Url::create_object_url_with_blob(&blob)
+            .map_err(|_| "the browser refused the file's address".to_string())?;
+        let offered = download::offer_url(&name, &url);
+        // The object URL is no longer needed once the click has started the download.
+        let _ = web_sys::Url::revoke_object_url(&url);
+        offered.map(|()| name)
+    }
+}
+
+/// The share panel's recording controls: while recording, the progress bar and Cancel; else
+/// the options and Record.
+pub fn show_recording(recording: Option<&Recording>) {
+    let active = recording.is_some();
+    for (id, hidden) in [
+        ("record", active),
+        ("record-cancel", !active),
+        ("record-progress", !active),
+    ] {
+        if let Some(e) = element(id) {
+            e.set_hidden(hidden);
+        }
+    }
+    for id in ["record-size", "record-fps", "record-turntable"] {
+        if let Some(select) = element(id).and_then(|e| e.dyn_into::<HtmlSelectElement>().ok()) {
+            select.set_disabled(active);
+        }
+    }
+    let Some(r) = recording else { return };
+    let frames = r.plan.frames();
+    if let Some(bar) =
+        element("record-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
+    {
+        bar.set_max(frames as f64);
+        bar.set_value(r.next as f64);
+    }
+    signal("recordFrames", &r.next.to_string());
+    set_text(
+        "record-status",
+        &if r.flushing {
+            format!("Finishing the file ({frames} frames)…")
+        } else {
+            format!(
+                "Recording frame {} of {frames} ({}×{}, {} a second)…",
+                r.next + 1,
+                r.plan.width,
+                r.plan.height,
+                r.plan.fps
+            )
+        },
+    );
+}
