@@ -67,7 +67,7 @@ test('an implicit shell grows in wasm into the very mesh the command line writes
       const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
       const grown = await waitForState(page, ['grown']);
       const out = execFileSync(CLI, ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
-      assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}$`, 'm'),
+      assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}, \\d+ bytes$`, 'm'),
         `${link}: wasm ${grown.mesh} ${grown.meshHash}, native ${out}`);
       assert.deepEqual(errors, []);
       await page.close();
