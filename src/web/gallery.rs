@@ -4,7 +4,7 @@
 //! pictures are drawn one by one by a second viewer on a small off-screen canvas.
 
 use super::dom::{append, attr, create, typed};
-use super::viewer::Viewer;
+use super::viewer::{Device, Viewer};
 use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::form::Form;
@@ -68,6 +68,10 @@ impl Pictures {
 
     /// Works on the pictures for at most `budget_ms`.
     pub fn work(&mut self, budget_ms: f64) {
+        if self.viewer.survive() != Device::Ready {
+            // The device was lost: the picture under way is drawn once another is open.
+            return;
+        }
         let preset = match self.current {
             Some(p) => p,
             None => {
