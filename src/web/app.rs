@@ -12,6 +12,7 @@
 //! (video frames captured), `data-recoveries` (how many times the graphics device was lost
 //! and opened again; the state is `recovering` meanwhile).
 
+use super::activity;
 use super::dom;
 use super::download::Downloads;
 use super::gallery::Pictures;
@@ -20,7 +21,6 @@ use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
 use super::record::{self, Recording, Step, Support};
 use super::share;
-use super::activity;
 use super::viewer::{Device, Viewer, now};
 use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;
@@ -538,6 +538,13 @@ impl App {
             .start(what, &mut self.viewer, self.current.as_ref());
     }
 
+    /// Test-only (see `debug.rs`): destroys both graphics devices, the main viewer's and the
+    /// gallery pictures', as a driver reset would.
+    pub fn destroy_devices(&self) {
+        self.viewer.destroy_device();
+        self.pictures.destroy_device();
+    }
+
     /// Keeps the main viewer's graphics device, saying in words when it was lost and when it
     /// is back; returns whether the frame may draw.
     fn survive(&mut self) -> Result<bool, String> {
@@ -547,7 +554,9 @@ impl App {
                 show_message(&format!(
                     "The graphics device was lost ({reason}); opening it again…"
                 ));
-                signal("state", "recovering");
+                if !self.in_gallery {
+                    signal("state", "recovering");
+                }
                 Ok(false)
             }
             Device::Reopened(backend) => {
@@ -555,16 +564,14 @@ impl App {
                 signal("recoveries", &self.recoveries.to_string());
                 signal("backend", backend);
                 set_text("backend", &format!("Drawn with {backend}"));
-                let rows = self
-                    .viewer
-                    .growing()
-                    .map_or(0, |g| g.generator.rows_done());
-                show_message(&format!(
-                    "The graphics device was lost and has been opened again, with {backend}: \
-                     the shell goes on from row {rows}."
-                ));
                 if self.in_gallery {
-                    signal("state", "gallery");
+                    page::hide_message();
+                } else {
+                    let rows = self.viewer.growing().map_or(0, |g| g.generator.rows_done());
+                    show_message(&format!(
+                        "The graphics device was lost and has been opened again, with \
+                         {backend}: the shell goes on from row {rows}."
+                    ));
                 }
                 Ok(true)
             }

@@ -3,32 +3,31 @@
 //! graphics device and a panic. They are not part of the page's interface; calling one does to
 //! the page what the event itself would, and the page must survive it.
 
-use super::app::App;
 use std::cell::{Cell, RefCell};
-use std::rc::Weak;
 use wasm_bindgen::prelude::*;
 
+/// Destroys the page's graphics devices; says why it could not.
+pub type Destroy = Box<dyn Fn() -> Result<(), String>>;
+
 thread_local! {
-    static APP: RefCell<Weak<RefCell<App>>> = RefCell::new(Weak::new());
+    static DESTROY: RefCell<Option<Destroy>> = const { RefCell::new(None) };
     static PANIC_WHILE_GROWING: Cell<bool> = const { Cell::new(false) };
 }
 
-/// Remembers the app, for the hooks to reach it.
-pub fn register(app: Weak<RefCell<App>>) {
-    APP.with(|a| *a.borrow_mut() = app);
+/// Remembers how to reach the page's devices, for [`debug_destroy_device`].
+pub fn register(destroy: Destroy) {
+    DESTROY.with(|d| *d.borrow_mut() = Some(destroy));
 }
 
-/// Test-only: destroys the main viewer's graphics device (`GPUDevice.destroy()`, as a driver
-/// reset would lose it). On WebGL2 this does nothing: tests lose the context with
+/// Test-only: destroys the page's graphics devices, the main viewer's and the gallery
+/// pictures' (`GPUDevice.destroy()`, as a driver reset would lose them). On WebGL2 this does nothing: tests lose the context with
 /// `WEBGL_lose_context` instead.
 #[wasm_bindgen]
 pub fn debug_destroy_device() -> Result<(), JsValue> {
-    let app = APP
-        .with(|a| a.borrow().upgrade())
-        .ok_or("the page has not started")?;
-    let mut app = app.try_borrow_mut().map_err(|_| "the page is busy")?;
-    app.viewer().destroy_device();
-    Ok(())
+    DESTROY.with(|d| match d.borrow().as_ref() {
+        Some(destroy) => destroy().map_err(JsValue::from),
+        None => Err("the page has not started".into()),
+    })
 }
 
 /// Test-only: makes the next growth step panic, inside the frame loop, as a bug would.

@@ -94,8 +94,13 @@ impl Pictures {
             self.viewer.grow(usize::MAX, budget_ms);
             return;
         }
+        let picture = self.viewer.picture();
+        if self.viewer.survive() != Device::Ready {
+            // Lost while drawing: the picture may be blank; it is drawn again on the next device.
+            return;
+        }
         self.current = None;
-        let Ok(url) = self.viewer.picture() else {
+        let Ok(url) = picture else {
             return;
         };
         let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
@@ -112,6 +117,11 @@ impl Pictures {
     /// Follows a change of the page's theme (pictures already drawn keep theirs).
     pub fn set_background(&mut self, srgb: [u8; 3]) {
         self.viewer.set_background(srgb);
+    }
+
+    /// Test-only (see `debug.rs`): destroys the pictures' graphics device.
+    pub fn destroy_device(&self) {
+        self.viewer.destroy_device();
     }
 
     /// Whether every picture is drawn.

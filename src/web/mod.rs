@@ -95,7 +95,13 @@ pub async fn start() -> Result<(), JsValue> {
         main,
         gallery::Pictures::new(pictures),
     )));
-    debug::register(Rc::downgrade(&app));
+    let weak = Rc::downgrade(&app);
+    debug::register(Box::new(move || {
+        let app = weak.upgrade().ok_or("the page has ended")?;
+        let app = app.try_borrow().map_err(|_| "the page is busy")?;
+        app.destroy_devices();
+        Ok(())
+    }));
     let weak = Rc::downgrade(&app);
     app.borrow_mut()
         .set_on_change(Rc::new(move |key: &str, value: String, change| {

@@ -6,11 +6,10 @@
 // The device is destroyed and the panic forced through test-only hooks exported by the wasm
 // module (src/web/debug.rs); the context is lost with WEBGL_lose_context. Screenshots after each
 // recovery are kept in tests/page/screenshots/ for people to look at.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { serve } from './serve.mjs';
-import { launch, open, waitForState, measureCanvas, differing } from './browser.mjs';
+import { session, open, waitForState, measureCanvas, measurePng, differing } from './browser.mjs';
 
 const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
@@ -18,14 +17,6 @@ mkdirSync(SHOTS, { recursive: true });
 // on the way.
 const LINK = '#v=1&preset=stripes&growth.speed=8';
 const PAUSE_AT = 150;
-let server;
-let base;
-
-before(async () => {
-  server = await serve(new URL('../../www/', import.meta.url).pathname);
-  base = `http://127.0.0.1:${server.address().port}/`;
-});
-after(() => server.close());
 
 /** Calls one of the wasm module's test-only hooks (src/web/debug.rs) in the page. */
 function hook(page, name) {
@@ -44,7 +35,7 @@ async function finished(page) {
 }
 
 /** The hashes of a fresh load of the link, finished at once. */
-async function fresh(browser) {
+async function fresh({ browser, base }) {
   const { page } = await open(browser, `${base}${LINK}`);
   try {
     await waitForState(page, ['growing']);
@@ -84,7 +75,7 @@ function markCanvas(page) {
  * it stopped (same row, still paused), that the shell is drawn again, that the canvas still
  * answers a drag, and that the finished shell has the hashes of a fresh load.
  */
-async function checkRecovered(page, browser, { row, backend, sameCanvas, shot }) {
+async function checkRecovered(page, run, { row, backend, sameCanvas, shot }) {
   await page.waitForFunction(() => document.body.dataset.recoveries === '1', null, { timeout: 60_000 });
   const state = await waitForState(page, ['growing']);
   const said = await page.evaluate(() => window.messages);
@@ -113,75 +104,68 @@ async function checkRecovered(page, browser, { row, backend, sameCanvas, shot })
   const moved = await differing(page, before, turned);
   assert.ok(moved > 0.01, `a drag after recovery changed only ${moved} of the canvas`);
   const after = await finished(page);
-  assert.deepEqual(after, await fresh(browser), 'the finished shell equals a fresh load of the link');
+  assert.deepEqual(after, await fresh(run), 'the finished shell equals a fresh load of the link');
 }
 
-test('a destroyed WebGPU device is opened again and the shell goes on where it was', async () => {
-  const browser = await launch('WebGPU');
-  try {
-    const { page } = await open(browser, `${base}${LINK}`);
-    const row = await grownAndPaused(page);
-    assert.equal(await page.evaluate(() => document.body.dataset.backend), 'WebGPU');
-    await markCanvas(page);
-    await hook(page, 'debug_destroy_device');
-    await checkRecovered(page, browser, { row, backend: 'WebGPU', sameCanvas: true, shot: 'webgpu-destroyed' });
-  } finally {
-    await browser.close();
-  }
-});
-
-test('when WebGPU cannot be had again, the shell goes on with WebGL2 on a fresh canvas', async () => {
-  const browser = await launch('WebGPU');
-  try {
-    const { page } = await open(browser, `${base}${LINK}`);
-    const row = await grownAndPaused(page);
-    await markCanvas(page);
-    // From now on the browser has no WebGPU adapter to give.
-    await page.evaluate(() => { navigator.gpu.requestAdapter = async () => null; });
-    await hook(page, 'debug_destroy_device');
-    await checkRecovered(page, browser, { row, backend: 'WebGL2', sameCanvas: false, shot: 'webgpu-to-webgl2' });
-  } finally {
-    await browser.close();
-  }
-});
-
-test('a lost WebGL context that the browser gives back is drawn on again', async () => {
-  const browser = await launch('WebGL2');
-  try {
-    const { page } = await open(browser, `${base}${LINK}`);
-    const row = await grownAndPaused(page);
-    await markCanvas(page);
-    await page.evaluate(() => {
+/** How each test takes the device away, and how the page must come back. */
+const LOSSES = [
+  {
+    name: 'a destroyed WebGPU device is opened again and the shell goes on where it was',
+    backend: 'WebGPU',
+    lose: (page) => hook(page, 'debug_destroy_device'),
+    back: { backend: 'WebGPU', sameCanvas: true, shot: 'webgpu-destroyed' },
+  },
+  {
+    name: 'when WebGPU cannot be had again, the shell goes on with WebGL2 on a fresh canvas',
+    backend: 'WebGPU',
+    lose: async (page) => {
+      // From now on the browser has no WebGPU adapter to give.
+      await page.evaluate(() => { navigator.gpu.requestAdapter = async () => null; });
+      await hook(page, 'debug_destroy_device');
+    },
+    back: { backend: 'WebGL2', sameCanvas: false, shot: 'webgpu-to-webgl2' },
+  },
+  {
+    name: 'a lost WebGL context that the browser gives back is drawn on again',
+    backend: 'WebGL2',
+    lose: (page) => page.evaluate(() => {
       const lose = document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context');
       lose.loseContext();
       setTimeout(() => lose.restoreContext(), 300);
-    });
-    await checkRecovered(page, browser, { row, backend: 'WebGL2', sameCanvas: true, shot: 'webgl-restored' });
-  } finally {
-    await browser.close();
-  }
-});
-
-test('a lost WebGL context that never comes back is replaced by a fresh canvas', async () => {
-  const browser = await launch('WebGL2');
-  try {
-    const { page } = await open(browser, `${base}${LINK}`);
-    const row = await grownAndPaused(page);
-    await markCanvas(page);
-    await page.evaluate(() => {
+    }),
+    back: { backend: 'WebGL2', sameCanvas: true, shot: 'webgl-restored' },
+  },
+  {
+    name: 'a lost WebGL context that never comes back is replaced by a fresh canvas',
+    backend: 'WebGL2',
+    lose: (page) => page.evaluate(() => {
       document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
-    });
-    await checkRecovered(page, browser, { row, backend: 'WebGL2', sameCanvas: false, shot: 'webgl-not-restored' });
-  } finally {
-    await browser.close();
-  }
-});
+    }),
+    back: { backend: 'WebGL2', sameCanvas: false, shot: 'webgl-not-restored' },
+  },
+];
+
+for (const { name, backend, lose, back } of LOSSES) {
+  test(name, async () => {
+    const run = await session(backend);
+    try {
+      const { page } = await open(run.browser, `${run.base}${LINK}`);
+      const row = await grownAndPaused(page);
+      assert.equal(await page.evaluate(() => document.body.dataset.backend), backend);
+      await markCanvas(page);
+      await lose(page);
+      await checkRecovered(page, run, { row, ...back });
+    } finally {
+      await run.close();
+    }
+  });
+}
 
 for (const backend of ['WebGL2', 'WebGPU']) {
   test(`a panic on ${backend} says what was being done and reloading the link grows the shell again`, async () => {
-    const browser = await launch(backend);
+    const run = await session(backend);
     try {
-      const { page, errors } = await open(browser, `${base}${LINK}`);
+      const { page, errors } = await open(run.browser, `${run.base}${LINK}`);
       await waitForState(page, ['growing']);
       await page.waitForFunction((n) => Number(document.body.dataset.rows) >= n, 100, { timeout: 120_000 });
       await hook(page, 'debug_panic_while_growing');
@@ -193,6 +177,7 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       assert.ok(errors.some((e) => /debug_panic_while_growing/.test(e)), 'the console has the full report');
       // The page does not freeze or go blank: the last picture stays, keys and clicks are
       // ignored without a second panic covering the first's message.
+      await page.screenshot({ path: `${SHOTS}survive-panic-page-${backend}.png` });
       const still = await measureCanvas(page, `${SHOTS}survive-panic-${backend}.png`);
       assert.ok(still.share > 0.03, `after the panic the canvas shows only ${still.share} of a shell`);
       await page.keyboard.press('Space');
@@ -202,10 +187,61 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       await page.waitForFunction(() => document.body.dataset.crashed === undefined && document.body.dataset.state === 'growing');
       assert.equal(await page.isVisible('#crash'), false);
       assert.equal(new URL(page.url()).hash, LINK, 'the reload keeps the link');
-      assert.deepEqual(await finished(page), await fresh(browser), 'the reloaded shell equals a fresh load');
+      assert.deepEqual(await finished(page), await fresh(run), 'the reloaded shell equals a fresh load');
       await measureCanvas(page, `${SHOTS}survive-panic-reloaded-${backend}.png`);
     } finally {
-      await browser.close();
+      await run.close();
+    }
+  });
+}
+
+/** Every card's picture, measured as the canvas is (`measurePng`: blank shows no share). */
+async function pictures(page) {
+  const cards = await page.$$eval('a.card', (as) => as.map((a) => [a.dataset.preset, a.querySelector('img').src]));
+  return Promise.all(cards.map(async ([preset, src]) => {
+    const png = src.startsWith('data:image/png;base64,') ? Buffer.from(src.split(',')[1], 'base64') : null;
+    return { preset, src, cover: png ? (await measurePng(page, png)).share : 0 };
+  }));
+}
+
+for (const backend of ['WebGL2', 'WebGPU']) {
+  test(`the gallery's pictures and the viewer survive losing every device on ${backend}`, async () => {
+    const run = await session(backend);
+    try {
+      const { page } = await open(run.browser, run.base);
+      await waitForState(page, ['gallery']);
+      await page.waitForFunction(
+        () => [...document.querySelectorAll('a.card img')].filter((i) => i.src.startsWith('data:')).length >= 4,
+        null, { timeout: 120_000 },
+      );
+      if (backend === 'WebGPU') {
+        await hook(page, 'debug_destroy_device');
+      } else {
+        // Both canvases lose their contexts, which never come back: fresh canvases take over.
+        await page.evaluate(() => {
+          for (const id of ['shell', 'picture-canvas']) {
+            document.getElementById(id).getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
+          }
+        });
+      }
+      await page.waitForFunction(() => document.body.dataset.recoveries === '1', null, { timeout: 60_000 });
+      await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 300_000 });
+      assert.equal(await page.evaluate(() => document.body.dataset.state), 'gallery');
+      assert.equal(await page.isVisible('#message'), false, 'the gallery shows no message once drawn again');
+      const drawn = await pictures(page);
+      assert.ok(drawn.every((p) => p.src.startsWith('data:image/png')), 'every card has its picture');
+      assert.equal(new Set(drawn.map((p) => p.src)).size, drawn.length, 'every picture is a different shell');
+      const blank = drawn.filter((p) => p.cover < 0.02).map((p) => `${p.preset} ${p.cover}`);
+      assert.deepEqual(blank, [], 'no picture is blank');
+      await page.screenshot({ path: `${SHOTS}survive-gallery-${backend}.png`, fullPage: true });
+      // The viewer's own device was opened again too: a shell grows and is drawn.
+      await page.evaluate(() => { window.location.hash = 'v=1&preset=stripes&growth.speed=200'; });
+      const state = await waitForState(page, ['grown', 'error']);
+      assert.equal(state.state, 'grown');
+      const shell = await measureCanvas(page, `${SHOTS}survive-gallery-then-viewer-${backend}.png`);
+      assert.ok(shell.share > 0.03, `the shell covers only ${shell.share} of the canvas`);
+    } finally {
+      await run.close();
     }
   });
 }
