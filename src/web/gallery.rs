@@ -4,7 +4,7 @@
 //! pictures are drawn one by one by a second viewer on a small off-screen canvas.
 
 use super::dom::{append, attr, create, typed};
-use super::viewer::Viewer;
+use super::viewer::{Device, Viewer, now};
 use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::form::Form;
@@ -51,7 +51,13 @@ pub struct Pictures {
     viewer: Viewer,
     queue: VecDeque<&'static Preset>,
     current: Option<&'static Preset>,
+    /// Pictures finished within [`LOSS_NOTICE_MS`], and when: the browser tells of a lost
+    /// device a little after the fact, so these may be blank and are drawn again after a loss.
+    lately: VecDeque<(&'static Preset, f64)>,
 }
+
+/// Milliseconds within which the browser is taken to report a lost device.
+const LOSS_NOTICE_MS: f64 = 2000.0;
 
 /// Voxels along the longest side of an implicit shell in a gallery picture: enough for its
 /// size, and quick to grow.
@@ -63,11 +69,24 @@ impl Pictures {
             viewer,
             queue: presets().iter().collect(),
             current: None,
+            lately: VecDeque::new(),
         }
     }
 
     /// Works on the pictures for at most `budget_ms`.
     pub fn work(&mut self, budget_ms: f64) {
+        if self.viewer.survive() != Device::Ready {
+            // The device was lost: the picture under way, and those finished just before, are
+            // drawn once another is open.
+            for (preset, _) in self.lately.drain(..).rev() {
+                self.queue.push_front(preset);
+            }
+            return;
+        }
+        let noticed = now() - LOSS_NOTICE_MS;
+        while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
+            self.lately.pop_front();
+        }
         let preset = match self.current {
             Some(p) => p,
             None => {
@@ -90,8 +109,13 @@ impl Pictures {
             self.viewer.grow(usize::MAX, budget_ms);
             return;
         }
+        let picture = self.viewer.picture();
+        if self.viewer.survive() != Device::Ready {
+            // Lost while drawing: the picture may be blank; it is drawn again on the next device.
+            return;
+        }
         self.current = None;
-        let Ok(url) = self.viewer.picture() else {
+        let Ok(url) = picture else {
             return;
         };
         let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
@@ -103,6 +127,7 @@ impl Pictures {
         if let Some(img) = image {
             img.set_src(&url);
         }
+        self.lately.push_back((preset, now()));
     }
 
     /// Follows a change of the page's theme (pictures already drawn keep theirs).
@@ -110,8 +135,14 @@ impl Pictures {
         self.viewer.set_background(srgb);
     }
 
-    /// Whether every picture is drawn.
+    /// Test-only (see `debug.rs`): destroys the pictures' graphics device.
+    pub fn destroy_device(&self) {
+        self.viewer.destroy_device();
+    }
+
+    /// Whether every picture is drawn, and the last of them long enough ago that a lost
+    /// device would have been reported.
     pub fn finished(&self) -> bool {
-        self.queue.is_empty() && self.current.is_none()
+        self.queue.is_empty() && self.current.is_none() && self.lately.is_empty()
     }
 }

@@ -2,10 +2,15 @@
 //! and the camera the pointer turns. Loading another spec restarts growth without reloading the
 //! page. The page's main view is one viewer, whose camera follows the growing shell; the
 //! gallery's pictures are drawn by another, framed on the whole shell. While a pattern slider
-//! is dragged, the planar view previews the whole pattern of its values instead.
+//! is dragged, the planar view previews the whole pattern of its values instead. When the
+//! browser takes the graphics device away, the viewer opens another (`recovery.rs`) and uploads
+//! the shell grown so far to it: growth goes on from where it was.
 
+use super::activity;
+use super::debug;
 use super::page::show_message;
 use super::planar::Planar;
+use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use crate::generator::{Advance, Generator, within};
 use crate::mesh::Bounds;
 use crate::pattern::run::PatternRun;
@@ -35,9 +40,23 @@ pub struct Growing {
     grown: Bounds,
     /// The longest growth step lately, in milliseconds (see [`within`]).
     longest_step: f64,
+    /// The pattern texture's layout and the shader's look: what a new renderer needs to take
+    /// the shell again.
+    texture_layout: Option<TextureLayout>,
+    look: ShellLook,
 }
 
 impl Growing {
+    /// Records what is being grown, for a panic's message; a test may ask for a panic here.
+    fn note_activity(&self) {
+        activity::set(format!(
+            "growing {}, row {}",
+            self.preset.id,
+            self.generator.rows_done() + 1
+        ));
+        debug::panic_if_asked();
+    }
+
     /// Whether the view rests on what has grown (or where the user left it).
     pub fn view_at_rest(&self) -> bool {
         self.camera.settled(&self.grown)
@@ -66,6 +85,28 @@ pub struct Viewer {
     last_frame: f64,
     /// The drawing size a recording asks for, instead of the canvas's own.
     fixed_size: Option<(u32, u32)>,
+    /// The clear colour, as sRGB bytes (for a renderer opened again).
+    background: [u8; 3],
+    /// A renderer being opened after the device was lost, and when the loss was seen.
+    reopening: Option<Reopening>,
+    lost_at: Option<f64>,
+    /// Why no renderer could be opened again: the viewer draws no more.
+    gone: Option<String>,
+    /// A fresh canvas that took the old one's place, until the page moves its listeners.
+    replaced_canvas: Option<HtmlCanvasElement>,
+}
+
+/// The state of the viewer's graphics device.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Device {
+    /// Drawing.
+    Ready,
+    /// Lost (why, in words), and being opened again.
+    Reopening(String),
+    /// Opened again just now, with this backend.
+    Reopened(&'static str),
+    /// Lost for good: no device could be opened again (why, in words).
+    Gone(String),
 }
 
 /// Milliseconds since the page started.
@@ -96,6 +137,11 @@ impl Viewer {
             layout: Layout::Single,
             last_frame: now(),
             fixed_size: None,
+            background,
+            reopening: None,
+            lost_at: None,
+            gone: None,
+            replaced_canvas: None,
         })
     }
 
@@ -111,6 +157,7 @@ impl Viewer {
 
     /// Follows a change of the page's theme.
     pub fn set_background(&mut self, srgb: [u8; 3]) {
+        self.background = srgb;
         self.renderer.set_background(srgb);
         self.dirty = true;
     }
@@ -122,22 +169,21 @@ impl Viewer {
 
     /// Starts growing `spec` from its apex.
     pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) -> Result<(), String> {
+        activity::set(format!("loading {}", preset.id));
         let generator =
             Generator::new(spec).map_err(|e| format!("This shell cannot be built: {e}"))?;
         let pattern = generator
             .pattern()
             .map(|p| (p.cells() as u32, spec.growth.rows));
-        let layout = pattern.and_then(|(cells, rows)| TextureLayout::new(cells, rows));
-        self.renderer.load_shell(
-            generator.capacity(),
-            layout,
-            ShellLook::new(
-                &spec.colours,
-                &spec.material,
-                crate::forms::rows_per_whorl(spec),
-                generator.line_grid(),
-            ),
+        let texture_layout = pattern.and_then(|(cells, rows)| TextureLayout::new(cells, rows));
+        let look = ShellLook::new(
+            &spec.colours,
+            &spec.material,
+            crate::forms::rows_per_whorl(spec),
+            generator.line_grid(),
         );
+        self.renderer
+            .load_shell(generator.capacity(), texture_layout, look);
         let (bounds, front) = generator.framing();
         let mut grown = Bounds::EMPTY;
         grown.include_vertices(&generator.mesh().vertices);
@@ -165,6 +211,8 @@ impl Viewer {
             preview: None,
             grown,
             longest_step: 0.0,
+            texture_layout,
+            look,
         });
         let grown = self
             .growing
@@ -243,10 +291,95 @@ impl Viewer {
             .map_or("", |p| p.state().signal())
     }
 
+    /// Keeps a graphics device: when the browser took the renderer's away, opens another in
+    /// the background (on the same canvas, or a fresh one; see `recovery.rs`) and, once it is
+    /// open, uploads the shell grown so far to it. Called once a frame before anything is drawn.
+    pub fn survive(&mut self) -> Device {
+        if let Some(gone) = &self.gone {
+            return Device::Gone(gone.clone());
+        }
+        if let Some(reopening) = &self.reopening {
+            return match reopening.take() {
+                None => Device::Reopening(self.loss_reason()),
+                Some(Ok(reopened)) => {
+                    self.reopening = None;
+                    self.lost_at = None;
+                    self.install(reopened);
+                    Device::Reopened(self.renderer.backend())
+                }
+                Some(Err(e)) => {
+                    self.reopening = None;
+                    let gone = format!(
+                        "The graphics device was lost ({}) and none could be opened again: {e}",
+                        self.loss_reason()
+                    );
+                    self.gone = Some(gone.clone());
+                    Device::Gone(gone)
+                }
+            };
+        }
+        let Some(loss) = self.renderer.lost() else {
+            return Device::Ready;
+        };
+        let since = *self.lost_at.get_or_insert_with(now);
+        let webgl = self.renderer.backend() == "WebGL2";
+        if webgl && !loss.restored && now() - since < RESTORE_WAIT_MS {
+            // The browser may give the context back (webglcontextrestored): wait a little.
+            return Device::Reopening(loss.reason);
+        }
+        self.reopening = Some(Reopening::start(
+            self.canvas.clone(),
+            webgl && !loss.restored,
+        ));
+        Device::Reopening(loss.reason)
+    }
+
+    fn loss_reason(&self) -> String {
+        self.renderer
+            .lost()
+            .map_or_else(|| "no reason given".to_string(), |l| l.reason)
+    }
+
+    /// Draws with a renderer opened again: the shell's buffers and texture are made anew and
+    /// take everything grown so far (mesh, edge and pattern rows), which the generator kept.
+    fn install(&mut self, reopened: Reopened) {
+        let Reopened {
+            mut renderer,
+            canvas,
+        } = reopened;
+        renderer.set_background(self.background);
+        if canvas != self.canvas {
+            self.replaced_canvas = Some(canvas.clone());
+        }
+        self.canvas = canvas;
+        self.renderer = renderer;
+        let grown = self.growing.as_ref().map(|g| {
+            self.renderer
+                .load_shell(g.generator.capacity(), g.texture_layout, g.look);
+            g.generator.grown()
+        });
+        if let Some(grown) = grown {
+            self.upload(&grown);
+        }
+        self.dirty = true;
+    }
+
+    /// A fresh canvas that took the old one's place since the last call: the page listens to
+    /// it instead.
+    pub fn take_replaced_canvas(&mut self) -> Option<HtmlCanvasElement> {
+        self.replaced_canvas.take()
+    }
+
+    /// Test-only (see `debug.rs`): destroys the graphics device as a driver reset would.
+    pub fn destroy_device(&self) {
+        self.renderer.destroy_device();
+    }
+
     /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
+        g.note_activity();
         let advance = g
             .generator
             .advance_while(rows, within(now, budget_ms, &mut g.longest_step));
@@ -261,6 +394,7 @@ impl Viewer {
         if g.generator.is_done() {
             return;
         }
+        g.note_activity();
         g.generator.finish();
         let advance = g.generator.grown();
         self.upload(&advance);
@@ -289,6 +423,9 @@ impl Viewer {
     pub fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
+        }
+        if self.reopening.is_some() || self.renderer.lost().is_some() {
+            return Ok(false);
         }
         self.fit_canvas();
         if let Some(g) = &mut self.growing
@@ -373,6 +510,9 @@ impl Viewer {
 
     /// Draws now and returns the canvas as a PNG data URL (read before the browser clears it).
     pub fn picture(&mut self) -> Result<String, String> {
+        if let Some(loss) = self.renderer.lost() {
+            return Err(format!("the graphics device was lost ({})", loss.reason));
+        }
         let Some(g) = &self.growing else {
             return Err("nothing is drawn yet".into());
         };
@@ -407,6 +547,7 @@ impl Viewer {
         };
         let behind = row.saturating_sub(g.generator.rows_done());
         if behind > 0 || !g.generator.caught_up() {
+            g.note_activity();
             let advance = g
                 .generator
                 .advance_while(behind, within(now, budget_ms, &mut g.longest_step));
@@ -423,6 +564,9 @@ impl Viewer {
     pub fn draw_recorded(&mut self, dt: f32, turn: f32) -> Result<(), String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
+        }
+        if let Some(loss) = self.renderer.lost() {
+            return Err(format!("the graphics device was lost ({})", loss.reason));
         }
         self.fit_canvas();
         let Some(g) = &mut self.growing else {
