@@ -480,6 +480,23 @@ fn bad_values_get_messages_that_name_the_key() {
         "{problems:?}"
     );
     assert!(Generator::new(&spec).is_ok());
+    // The new keys through a link: out of range, or levels the wrong way round.
+    for (link, key) in [
+        ("form.varices.spine_level=7", "form.varices.spine_level"),
+        (
+            "form.varices.spine_level=0.5&form.varices.bump_level=0.7",
+            "form.varices.bump_level",
+        ),
+        ("form.varices.peak_sigma=x", "form.varices.peak_sigma"),
+    ] {
+        let decoded = decode(&format!("v=1&preset=murex-rd-spines&{link}"));
+        assert!(
+            decoded.problems.iter().any(|p| p.key == key),
+            "{link}: {:?}",
+            decoded.problems
+        );
+        assert!(Generator::new(&decoded.spec).is_ok(), "{link}");
+    }
     // … and with no table to fall back on: no varices, so no canal spines either.
     let mut spec = spec_of("murex-rd-spines");
     spec.pattern.model = seashells_core::spec::pattern::Model::None;

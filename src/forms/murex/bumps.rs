@@ -5,7 +5,8 @@
 //! that σ_d keeps the unit of s while the +0.8 stretches every bump along the growth
 //! direction into a bead of a riblet. They join the whorl by superelliptic blending with
 //! n = 400 ([`BUMP_EXPONENT`]), which makes them stand out abruptly instead of melting into
-//! the whorl's much stronger field.
+//! the whorl's much stronger field. When the pattern places them (`rd_placement.rs`) they
+//! stand at the lower peaks of the activator instead, each scaled by its peak's level.
 
 use super::varix::{Standing, outward};
 use crate::blobtree::blob_tree::Node;
