@@ -235,22 +235,124 @@ fn the_seed_decides_the_bumps_and_bends_and_a_link_reproduces_them() {
     assert_eq!(grown(&decoded.spec).mesh_hash(), grown(&other).mesh_hash());
 }
 
+/// What the reaction-diffusion process placed, varix by varix: (whorl from 1, its spines'
+/// angles and σ, its section's bumps' angles).
+type Arrangement = Vec<(u32, Vec<(f64, f64)>, Vec<f64>)>;
+
+fn arrangement(spec: &mut ShellSpec) -> Arrangement {
+    let per_whorl = {
+        let i = implicit(spec);
+        i.sections * i.surfaces
+    };
+    built(spec)
+        .varices
+        .iter()
+        .map(|v| {
+            (
+                v.instance / per_whorl + 1,
+                v.spines
+                    .iter()
+                    .map(|s| (s.spine.angle, s.spine.sigma))
+                    .collect(),
+                v.bumps.iter().map(|b| b.spine.angle).collect(),
+            )
+        })
+        .collect()
+}
+
 #[test]
-fn spines_placed_by_the_pattern_follow_its_peaks_and_move_with_its_parameters() {
+fn reaction_diffusion_places_spines_and_bumps_on_every_whorl_from_the_second() {
     let mut spec = spec_of("murex-rd-spines");
     assert_eq!(implicit(&mut spec).varices.placement, Placement::Pattern);
-    let angles = |spec: &mut ShellSpec| -> Vec<Vec<f64>> {
-        built(spec)
-            .varices
+    let whorls = implicit(&mut spec).whorls;
+    let arranged = arrangement(&mut spec);
+    for whorl in 2..=whorls {
+        let (spines, bumps): (usize, usize) = arranged
             .iter()
-            .map(|v| v.spines.iter().map(|s| s.spine.angle).collect())
+            .filter(|a| a.0 == whorl)
+            .fold((0, 0), |(s, b), a| (s + a.1.len(), b + a.2.len()));
+        assert!(spines > 0, "whorl {whorl} is bare: {arranged:?}");
+        assert!(bumps > 0, "whorl {whorl} has no bumps: {arranged:?}");
+    }
+    // Over the whole outer lip, not table 1's windows: the spire's whorls carry spines off
+    // their table angle of 50°, and the last whorl below the horizontal.
+    let angles = |whorl: u32| -> Vec<f64> {
+        arranged
+            .iter()
+            .filter(|a| a.0 == whorl)
+            .flat_map(|a| a.1.iter().map(|s| s.0))
             .collect()
     };
-    let first = angles(&mut spec);
-    let count: usize = first.iter().map(Vec::len).sum();
-    assert!(count >= 20, "{count} spines in all: {first:?}");
-    let mut table = spec_of("murex-cabritii");
-    assert_ne!(first, angles(&mut table), "not the table's spines");
+    assert!(
+        angles(2)
+            .iter()
+            .chain(&angles(3))
+            .any(|a| (a - 50.0).abs() > 15.0)
+    );
+    assert!(angles(whorls).iter().any(|&a| a < -30.0));
+    let v = &implicit(&mut spec).varices;
+    let (lowest, highest) = (
+        v.peak_sigma * (v.spine_level - v.bump_level) / (1.0 - v.bump_level),
+        v.peak_sigma,
+    );
+    for (_, spines, _) in &arranged {
+        for &(angle, sigma) in spines {
+            assert!(angle.abs() <= 90.0, "a spine off the outer lip at {angle}°");
+            assert!(
+                (lowest - 1e-9..=highest + 1e-9).contains(&sigma),
+                "σ {sigma}"
+            );
+        }
+    }
+}
+
+#[test]
+fn spine_lengths_follow_the_shells_growth_from_whorl_to_whorl() {
+    // The longest spine of each whorl, in the shell's units (σ times the length times D),
+    // grows with the shell: never shorter than the whorl before's, never more than twice it
+    // (the table's last whorl jumps from σ 0.9 at the shoulder to 1.92).
+    let mut spec = spec_of("murex-rd-spines");
+    let arranged = arrangement(&mut spec);
+    let i = implicit(&mut spec).clone();
+    let instances = Instances::new(&i, spec.growth.rows as usize);
+    let per_whorl = i.sections * i.surfaces;
+    let longest: Vec<f64> = (2..=i.whorls)
+        .map(|whorl| {
+            arranged
+                .iter()
+                .zip(built(&mut spec).varices)
+                .filter(|(a, _)| a.0 == whorl)
+                .flat_map(|(a, v)| {
+                    let d = instances.size(f64::from(v.instance));
+                    a.1.iter().map(move |s| s.1 * i.varices.length * d)
+                })
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    assert_eq!(per_whorl, 18);
+    for pair in longest.windows(2) {
+        let ratio = pair[1] / pair[0];
+        assert!((1.0..=2.0).contains(&ratio), "{longest:?}");
+    }
+}
+
+#[test]
+fn other_pattern_parameters_give_another_arrangement_and_the_same_spec_the_same() {
+    let mut spec = spec_of("murex-rd-spines");
+    let first = arrangement(&mut spec);
+    assert_eq!(
+        first,
+        arrangement(&mut spec.clone()),
+        "same spec, same arrangement"
+    );
+    let preset = presets::preset("murex-rd-spines").unwrap();
+    let decoded = decode(&encode(preset, &spec));
+    assert_eq!(
+        first,
+        arrangement(&mut decoded.spec.clone()),
+        "through a link"
+    );
+    // Another pattern: the substrate diffuses half as far, so the peaks stand closer.
     let mut changed = spec.clone();
     if let seashells_core::spec::pattern::Model::ActivatorSubstrate(p) = &mut changed.pattern.model
     {
@@ -258,7 +360,34 @@ fn spines_placed_by_the_pattern_follow_its_peaks_and_move_with_its_parameters() 
     } else {
         panic!("the preset's pattern is eq 8");
     }
-    assert_ne!(first, angles(&mut changed), "other pattern, other spines");
+    let decoded = decode(&encode(preset, &changed));
+    assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+    let second = arrangement(&mut decoded.spec.clone());
+    let last = |a: &Arrangement| -> Vec<i64> {
+        a.last()
+            .unwrap()
+            .1
+            .iter()
+            .map(|s| s.0.round() as i64)
+            .collect()
+    };
+    let (a, b) = (last(&first), last(&second));
+    let moved =
+        a.iter().filter(|x| !b.contains(x)).count() + b.iter().filter(|x| !a.contains(x)).count();
+    assert!(
+        moved >= 2,
+        "the last varix's spines hardly moved: {a:?} against {b:?}"
+    );
+    let count = |a: &Arrangement| a.iter().map(|v| v.1.len()).sum::<usize>();
+    assert_ne!(first, second);
+    // The levels decide what grows: a lower spine level turns bumps into spines.
+    let mut lower = spec.clone();
+    implicit(&mut lower).varices.spine_level = 0.6;
+    assert!(count(&arrangement(&mut lower)) > count(&first));
+    // And the table is not read.
+    let mut no_table = spec.clone();
+    implicit(&mut no_table).varices.spines.clear();
+    assert_eq!(first, arrangement(&mut no_table));
 }
 
 #[test]
@@ -300,6 +429,18 @@ fn bad_values_get_messages_that_name_the_key() {
             Box::new(|s| implicit(s).varices.bump_sets = 1000),
         ),
         (
+            "form.varices.spine_level",
+            Box::new(|s| implicit(s).varices.spine_level = 1.5),
+        ),
+        (
+            "form.varices.bump_level",
+            Box::new(|s| implicit(s).varices.bump_level = 0.9),
+        ),
+        (
+            "form.varices.peak_sigma",
+            Box::new(|s| implicit(s).varices.peak_sigma = f64::NAN),
+        ),
+        (
             "form.canal_spines.spines",
             Box::new(|s| implicit(s).canal_spines.spines[0][0] = 4.0),
         ),
@@ -333,6 +474,33 @@ fn bad_values_get_messages_that_name_the_key() {
     // Spines placed by a pattern that is not there.
     let mut spec = spec_of("murex-rd-spines");
     spec.pattern.model = seashells_core::spec::pattern::Model::None;
+    let problems = repair(&mut spec, &spec_of("murex-rd-spines"));
+    assert!(
+        problems.iter().any(|p| p.key == "form.varices.placement"),
+        "{problems:?}"
+    );
+    assert!(Generator::new(&spec).is_ok());
+    // The new keys through a link: out of range, or levels the wrong way round.
+    for (link, key) in [
+        ("form.varices.spine_level=7", "form.varices.spine_level"),
+        (
+            "form.varices.spine_level=0.5&form.varices.bump_level=0.7",
+            "form.varices.bump_level",
+        ),
+        ("form.varices.peak_sigma=x", "form.varices.peak_sigma"),
+    ] {
+        let decoded = decode(&format!("v=1&preset=murex-rd-spines&{link}"));
+        assert!(
+            decoded.problems.iter().any(|p| p.key == key),
+            "{link}: {:?}",
+            decoded.problems
+        );
+        assert!(Generator::new(&decoded.spec).is_ok(), "{link}");
+    }
+    // … and with no table to fall back on: no varices, so no canal spines either.
+    let mut spec = spec_of("murex-rd-spines");
+    spec.pattern.model = seashells_core::spec::pattern::Model::None;
+    implicit(&mut spec).varices.spines.clear();
     let problems = repair(&mut spec, &spec_of("murex-rd-spines"));
     assert!(
         problems.iter().any(|p| p.key == "form.varices.placement"),

@@ -5,7 +5,8 @@
 //! that σ_d keeps the unit of s while the +0.8 stretches every bump along the growth
 //! direction into a bead of a riblet. They join the whorl by superelliptic blending with
 //! n = 400 ([`BUMP_EXPONENT`]), which makes them stand out abruptly instead of melting into
-//! the whorl's much stronger field.
+//! the whorl's much stronger field. When the pattern places them (`rd_placement.rs`) they
+//! stand at the lower peaks of the activator instead, each scaled by its peak's level.
 
 use super::varix::{Standing, outward};
 use crate::blobtree::blob_tree::Node;
@@ -21,11 +22,12 @@ pub const BUMP_EXPONENT: f64 = 400.0;
 /// The random stream of the bumps' sizes, among those of the spec's seed.
 pub const BUMP_STREAM: u64 = 11;
 
-/// One set of bumps, in the generating surface's coordinates and units of D: one for every
-/// second spine of `standing` (the first, the third, …), where its angle meets the surface.
-/// Bumps thinner than `thinnest` are left out: the polygonizer could not show them.
+/// One set of bumps, in the generating surface's coordinates and units of D: one at each of
+/// `sites` (the table's every second spine, or the pattern's lower peaks), where its angle
+/// meets the surface, its size scaled by the site's σ. Bumps thinner than `thinnest` are left
+/// out: the polygonizer could not show them.
 pub fn bump_set(
-    standing: &[Standing],
+    sites: &[Standing],
     size: f64,
     spread: f64,
     thinnest: f64,
@@ -33,7 +35,8 @@ pub fn bump_set(
     noise: &mut Noise,
 ) -> Vec<Node> {
     let mut bumps = Vec::new();
-    for s in standing.iter().step_by(2) {
+    for s in sites {
+        let size = size * s.spine.sigma;
         let factors = [0.0, 0.0, 0.8].map(|extra| noise.normal(1.0, spread).max(0.1) + extra);
         if size * factors[0].min(factors[1]) < thinnest {
             continue;

@@ -4,7 +4,7 @@
 use crate::blobtree::bend::MAX_BEND_DEGREES;
 use crate::blobtree::falloff::support_of;
 use crate::shape::ShapeError;
-use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec};
+use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec, Placement};
 use glam::DVec3;
 
 /// Most generating surfaces (growth steps) in one shell.
@@ -227,6 +227,33 @@ fn check_varices(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             ),
         ));
     }
+    if !(0.05..=1.0).contains(&v.spine_level) {
+        return Err(ShapeError::new(
+            "form.varices.spine_level",
+            format!(
+                "the activator level that grows a spine must lie from 0.05 to 1 (of the edge's highest peak), not {}",
+                v.spine_level
+            ),
+        ));
+    }
+    if !(0.0..=v.spine_level).contains(&v.bump_level) {
+        return Err(ShapeError::new(
+            "form.varices.bump_level",
+            format!(
+                "the activator level that bears bumps must lie from 0 to the spines' level {}, not {}",
+                v.spine_level, v.bump_level
+            ),
+        ));
+    }
+    if !(0.1..=5.0).contains(&v.peak_sigma) {
+        return Err(ShapeError::new(
+            "form.varices.peak_sigma",
+            format!(
+                "the relative size σ of a spine on the highest peak must lie from 0.1 to 5, not {}",
+                v.peak_sigma
+            ),
+        ));
+    }
     Ok(())
 }
 
@@ -263,10 +290,13 @@ fn check_canal_spines(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             "canal spines stand on the canal: the generating surface needs a cone for it",
         ));
     }
-    if !c.spines.is_empty() && spec.varices.spines.is_empty() {
+    if !c.spines.is_empty()
+        && spec.varices.spines.is_empty()
+        && spec.varices.placement != Placement::Pattern
+    {
         return Err(ShapeError::new(
             "form.canal_spines.spines",
-            "canal spines stand below varices: give the varices spines",
+            "canal spines stand below varices: give the varices spines, or place them by the pattern",
         ));
     }
     positive(

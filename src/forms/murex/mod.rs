@@ -11,6 +11,7 @@ pub(crate) mod generating_surface;
 pub mod helix;
 pub mod implicit_mesh;
 pub(crate) mod opening;
+pub mod rd_placement;
 pub(crate) mod repair;
 pub(crate) mod sections;
 pub mod varix;

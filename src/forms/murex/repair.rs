@@ -42,14 +42,15 @@ pub(crate) fn repair(
         }
     }
     let varices = &mut i.varices;
-    if varices.placement == Placement::Pattern
-        && !varices.spines.is_empty()
-        && matches!(pattern.model, Model::None)
-    {
+    if varices.placement == Placement::Pattern && matches!(pattern.model, Model::None) {
         varices.placement = Placement::Table;
-        problems.push(Problem::new(
-            "form.varices.placement",
-            "spines placed by the pattern need a pattern model; used the table",
-        ));
+        let message = if varices.spines.is_empty() && !i.canal_spines.spines.is_empty() {
+            // No varices then, and canal spines stand below varices.
+            i.canal_spines.spines.clear();
+            "spines placed by the pattern need a pattern model; used the table, which is empty, so the shell has no varices and no canal spines"
+        } else {
+            "spines placed by the pattern need a pattern model; used the table"
+        };
+        problems.push(Problem::new("form.varices.placement", message));
     }
 }

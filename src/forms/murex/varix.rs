@@ -18,10 +18,7 @@ use crate::blobtree::falloff::{ISO, support_of};
 use crate::blobtree::primitive::Primitive;
 use crate::blobtree::texture_blend::Texture;
 use crate::mesh::Bounds;
-use crate::pattern::build;
-use crate::shape::ShapeError;
 use crate::spec::form::implicit::VaricesSpec;
-use crate::spec::pattern::PatternSpec;
 use glam::{DAffine3, DMat3, DVec3};
 
 /// One spine of a varix.
@@ -30,7 +27,7 @@ pub struct Spine {
     /// α in degrees: from the horizontal pointing away from the axis, towards the apex
     /// (positive) or the canal (negative), in the plane of the generating curve.
     pub angle: f64,
-    /// Relative size σ (table 1).
+    /// Relative size σ (table 1, or the pattern's peak; a bump's scale for bumps).
     pub sigma: f64,
 }
 
@@ -49,41 +46,6 @@ pub fn table_spines(table: &[[f64; 3]], whorl: u32) -> Vec<Spine> {
             angle: row[1],
             sigma: row[2],
         })
-        .collect();
-    spines.sort_by(|a, b| a.angle.total_cmp(&b.angle));
-    spines
-}
-
-/// The angle of pattern cell `cell` of `cells` on the generating curve: the pattern runs
-/// about w from +u (towards the axis) through +v, and α from −u through +v.
-pub fn cell_angle(cell: usize, cells: usize) -> f64 {
-    let a = 180.0 - 360.0 * (cell as f64 + 0.5) / cells as f64;
-    if a <= -180.0 { a + 360.0 } else { a }
-}
-
-/// Spines where the pigment `pigment` (one value in [0, 1] per cell along the growing edge,
-/// when the varix forms) has a peak of at least one half, within the range of angles the
-/// table gives whorl `whorl`; a peak of full pigment grows the table's largest spine of that
-/// whorl, weaker ones proportionally smaller. The paper's closing proposal: a
-/// reaction-diffusion process on the edge decides where spines stand and how long they grow.
-pub fn pattern_spines(table: &[[f64; 3]], whorl: u32, pigment: &[f64]) -> Vec<Spine> {
-    let row = table_spines(table, whorl);
-    let (Some(first), Some(last)) = (row.first(), row.last()) else {
-        return Vec::new();
-    };
-    let largest = row.iter().map(|s| s.sigma).fold(0.0, f64::max);
-    let n = pigment.len();
-    let mut spines: Vec<Spine> = (0..n)
-        .filter(|&c| {
-            let left = pigment[(c + n - 1) % n];
-            let right = pigment[(c + 1) % n];
-            pigment[c] >= 0.5 && pigment[c] >= left && pigment[c] > right
-        })
-        .map(|c| Spine {
-            angle: cell_angle(c, n),
-            sigma: largest * pigment[c].min(1.0),
-        })
-        .filter(|s| (first.angle..=last.angle).contains(&s.angle))
         .collect();
     spines.sort_by(|a, b| a.angle.total_cmp(&b.angle));
     spines
@@ -142,35 +104,6 @@ pub fn standing(body: &Node, at: &DAffine3, spines: &[Spine]) -> Vec<Standing> {
             edge_distance(&body, at, outward(spine.angle)).map(|edge| Standing { spine, edge })
         })
         .collect()
-}
-
-/// The pigment in [0, 1] along the growing edge on each of `rows` (ascending), as the
-/// pattern of `pattern` seeded by `seed` computes it; empty rows without a pattern model.
-pub fn pigment_at(
-    pattern: &PatternSpec,
-    seed: u64,
-    rows: &[usize],
-) -> Result<Vec<Vec<f64>>, ShapeError> {
-    let fail = |e: String| ShapeError::new("form.varices.placement", e);
-    let mut model = build(pattern, seed)
-        .map_err(|e| fail(format!("the pattern cannot place spines: {e}")))?
-        .ok_or_else(|| {
-            fail("spines placed by the pattern need a pattern model; choose one, or place them by the table".into())
-        })?;
-    let mut row = 0;
-    let mut out = Vec::with_capacity(rows.len());
-    let mut shade = vec![0.0f32; model.recorded().len()];
-    for &wanted in rows {
-        while row < wanted {
-            model
-                .advance_row()
-                .map_err(|e| fail(format!("the pattern failed at row {row}: {e}")))?;
-            row += 1;
-        }
-        model.pigment(pattern.low, pattern.high, &mut shade);
-        out.push(shade.iter().map(|&p| f64::from(p)).collect());
-    }
-    Ok(out)
 }
 
 /// A spine of a varix and the distance of its angle's surface from the centre.
@@ -250,35 +183,4 @@ fn spine(spec: &VaricesSpec, s: &Standing, sigma_max: f64, thinnest: f64, time: 
 pub fn curl(degrees: f64, length: f64, radius: f64) -> f64 {
     let most = 0.9 * length / support_of(radius);
     degrees.to_radians().clamp(-most, most)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn cells_map_to_angles_from_the_outside_round_the_curve() {
-        assert!((cell_angle(0, 4) - 135.0).abs() < 1e-12);
-        assert!((cell_angle(2, 4) + 45.0).abs() < 1e-12);
-        assert!((cell_angle(3, 4) + 135.0).abs() < 1e-12);
-        let up = outward(90.0);
-        assert!(up.distance(DVec3::Y) < 1e-12);
-        assert!(outward(0.0).distance(DVec3::NEG_X) < 1e-12);
-    }
-
-    #[test]
-    fn spines_stand_at_pigment_peaks_within_the_tables_angles() {
-        let table = [[2.0, -40.0, 0.5], [2.0, 40.0, 1.5], [3.0, 0.0, 1.0]];
-        // 36 cells: cell c lies at 175 − 10c degrees.
-        let mut pigment = vec![0.0; 36];
-        pigment[14] = 0.9; // 35°
-        pigment[17] = 0.4; // 5°: too weak
-        pigment[20] = 1.4; // −25°
-        pigment[2] = 1.0; // 155°: outside the range
-        let spines = pattern_spines(&table, 2, &pigment);
-        assert_eq!(spines.len(), 2, "{spines:?}");
-        assert!((spines[0].angle + 25.0).abs() < 1e-9 && (spines[0].sigma - 1.5).abs() < 1e-12);
-        assert!((spines[1].angle - 35.0).abs() < 1e-9 && (spines[1].sigma - 1.35).abs() < 1e-9);
-        assert!(pattern_spines(&table, 5, &pigment).is_empty());
-    }
 }

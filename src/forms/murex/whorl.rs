@@ -12,15 +12,17 @@ use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
 use super::check::check;
 use super::helix::Instances;
 use super::opening::inside;
+use super::rd_placement::{activator_at, bumps_of, free, peaks, spines_of};
 use super::sections::{Gathered, joined, sections};
-use super::varix::{Standing, pattern_spines, pigment_at, standing, table_spines, varix};
+use super::varix::{Spine, Standing, standing, table_spines, varix};
 use crate::blobtree::blob_tree::Node;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
 use crate::spec::form::implicit::{ImplicitSpec, Placement};
 use crate::spec::pattern::PatternSpec;
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
+use std::collections::BTreeMap;
 
 /// The BlobTree of a whole shell, with what growing it needs.
 pub struct Whorl {
@@ -44,6 +46,9 @@ pub struct Varix {
     pub spines: Vec<Standing>,
     /// Spines in the canal row below it.
     pub canal_spines: usize,
+    /// Where the bumps of the section it closes stand, set after set (bumps thinner than the
+    /// grid shows are then left out of the tree).
+    pub bumps: Vec<Standing>,
 }
 
 /// Voxels a spine, a ridge or a canal spine is at least thick (as a radius), so that the
@@ -51,9 +56,9 @@ pub struct Varix {
 pub const THINNEST_VOXELS: f64 = 1.0;
 
 /// The shell of `spec` as one BlobTree (eqs 9–15), instance k carrying growth time
-/// k·(rows − 1)/(K − 1). Spines placed by the pattern read the pigment of `pattern` (seeded
-/// by `seed`) on the row each varix forms on; bumps and canal spines take their random
-/// sizes and bends from `seed`.
+/// k·(rows − 1)/(K − 1). Spines and bumps placed by the pattern read the activator of
+/// `pattern` (seeded by `seed`) on the row each varix or set of bumps forms on
+/// (`rd_placement.rs`); bumps and canal spines take their random sizes and bends from `seed`.
 pub fn whorl(
     spec: &ImplicitSpec,
     pattern: &PatternSpec,
@@ -80,7 +85,13 @@ pub fn whorl(
         Vec::new(),
     );
     let v = &spec.varices;
-    let sigma_max = v.spines.iter().map(|s| s[2]).fold(0.0, f64::max);
+    let by_pattern = v.placement == Placement::Pattern;
+    // The largest σ of eq 12: the table's, or that of a spine on the pattern's highest peak.
+    let sigma_max = if by_pattern {
+        v.peak_sigma
+    } else {
+        v.spines.iter().map(|s| s[2]).fold(0.0, f64::max)
+    };
     // The voxel the grown shell will be polygonized with: its extent, with the longest spine.
     let last = f64::from(count - 1);
     let reach = (v.length * sigma_max).max(spec.canal_spines.length) * instances.size(last);
@@ -88,24 +99,58 @@ pub fn whorl(
         / f64::from(spec.resolution);
     let thinnest = |k: f64| THINNEST_VOXELS * voxel / instances.size(k);
     // A varix closes every section (at its last instance), when the spec has spines.
-    let varix_rows: Vec<u32> = if v.spines.is_empty() {
+    let varix_rows: Vec<u32> = if v.spines.is_empty() && !by_pattern {
         Vec::new()
     } else {
         (1..=spec.whorls * spec.sections)
             .map(|i| i * spec.surfaces - 1)
             .collect()
     };
-    let pigment = match v.placement {
-        Placement::Pattern if !v.spines.is_empty() => pigment_at(
-            pattern,
-            seed,
-            &varix_rows
-                .iter()
-                .map(|&k| instances.time(f64::from(k)).round() as usize)
-                .collect::<Vec<_>>(),
-        )?,
-        _ => Vec::new(),
+    // The sets of bumps between a varix (at instance k) and the one before.
+    let bump_instances = |k: f64| -> Vec<f64> {
+        (1..=v.bump_sets)
+            .map(|j| {
+                k - f64::from(spec.surfaces) * (1.0 - f64::from(j) / f64::from(v.bump_sets + 1))
+            })
+            .filter(|&kb| kb >= 0.0)
+            .collect()
     };
+    let row_of = |k: f64| instances.time(k).round() as usize;
+    // The activator on every row a varix or a set of bumps forms on, for the pattern to read.
+    let activator: BTreeMap<usize, Vec<f64>> = if by_pattern {
+        let mut rows: Vec<usize> = varix_rows
+            .iter()
+            .flat_map(|&k| {
+                let kf = f64::from(k);
+                std::iter::once(kf).chain(bump_instances(kf))
+            })
+            .map(row_of)
+            .collect();
+        rows.sort_unstable();
+        rows.dedup();
+        rows.iter()
+            .copied()
+            .zip(activator_at(pattern, seed, &rows)?)
+            .collect()
+    } else {
+        BTreeMap::new()
+    };
+    let peaks_at = |k: f64| peaks(activator.get(&row_of(k)).map_or(&[], Vec::as_slice));
+    // Spines and bumps placed by the pattern where they stand free (`rd_placement.rs`).
+    let length = v.length;
+    let bump_reach = 2.0 * v.bump_size;
+    // Their own part of the whorl: the section of instance k and its neighbours along the
+    // spiral (not the whorls before and after, a turn away).
+    let free_on =
+        |k: f64, at: &DAffine3, standing: Vec<Standing>, reach: &dyn Fn(&Spine) -> f64| {
+            let section = k.round() as u32 / spec.surfaces;
+            let own: Vec<Node> = sections
+                .iter()
+                .filter(|s| s.0 + 1 >= section && s.0 <= section + 1)
+                .map(|s| s.1.clone())
+                .collect();
+            free(&body, &Node::blend(own), at, standing, reach)
+        };
     let mut parts = Vec::new();
     let mut varices = Vec::new();
     let mut bump_noise = Noise::new(seed, BUMP_STREAM);
@@ -115,12 +160,15 @@ pub fn whorl(
     for (i, &k) in varix_rows.iter().enumerate() {
         let kf = f64::from(k);
         let whorl_number = k / (spec.sections * spec.surfaces) + 1;
-        let spines = match v.placement {
-            Placement::Table => table_spines(&v.spines, whorl_number),
-            Placement::Pattern => pattern_spines(&v.spines, whorl_number, &pigment[i]),
-        };
         let at = instances.placement(kf);
-        let on_surface = standing(&body, &at, &spines);
+        let on_surface = if by_pattern {
+            let spines = spines_of(&peaks_at(kf), v);
+            free_on(kf, &at, standing(&body, &at, &spines), &|s| {
+                length * s.sigma
+            })
+        } else {
+            standing(&body, &at, &table_spines(&v.spines, whorl_number))
+        };
         let time = instances.time(kf);
         let mut members: Vec<Node> = varix(v, &on_surface, sigma_max, thinnest(kf), time)
             .into_iter()
@@ -158,6 +206,7 @@ pub fn whorl(
             instance: k,
             canal_spines,
             spines: on_surface,
+            bumps: Vec::new(),
         });
         if !members.is_empty() {
             let part = gathered.placed(at, Node::blend(members), k);
@@ -171,15 +220,24 @@ pub fn whorl(
         let Some(section) = section_of(k) else {
             continue;
         };
-        for j in 1..=v.bump_sets {
-            let kb =
-                kf - f64::from(spec.surfaces) * (1.0 - f64::from(j) / f64::from(v.bump_sets + 1));
-            if kb < 0.0 {
-                continue;
-            }
+        for kb in bump_instances(kf) {
             let at = instances.placement(kb);
+            let sites = if by_pattern {
+                let bumps = bumps_of(&peaks_at(kb), v);
+                free_on(kb, &at, standing(&body, &at, &bumps), &|s| {
+                    bump_reach * s.sigma
+                })
+            } else {
+                // The table's bumps: one at every second spine, of the default size.
+                let every_second: Vec<Spine> = table_spines(&v.spines, whorl_number)
+                    .into_iter()
+                    .step_by(2)
+                    .map(|s| Spine { sigma: 1.0, ..s })
+                    .collect();
+                standing(&body, &at, &every_second)
+            };
             let bumps = bump_set(
-                &standing(&body, &at, &spines),
+                &sites,
                 v.bump_size,
                 v.bump_spread,
                 thinnest(kb),
@@ -188,6 +246,9 @@ pub fn whorl(
             );
             for bump in bumps {
                 extra[section].push(gathered.placed(at, bump, kb.round() as u32));
+            }
+            if let Some(built) = varices.last_mut() {
+                built.bumps.extend(sites);
             }
         }
     }

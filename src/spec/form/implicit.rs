@@ -52,8 +52,9 @@ impl ImplicitSpec {
 pub enum Placement {
     /// As the table of spines says (table 1 of the paper).
     Table,
-    /// At the peaks of the pigment pattern on the growing edge when the varix forms, within
-    /// the table's range of angles for that whorl: the paper's proposed extension.
+    /// By the reaction-diffusion pattern on the growing edge, over the whole edge: its high
+    /// activator peaks grow spines when a varix forms, its lower peaks bumps between the
+    /// varices (the paper's proposed extension; the table is not read).
     Pattern,
 }
 
@@ -84,6 +85,15 @@ pub struct VaricesSpec {
     pub bump_size: f64,
     /// Standard deviation of the normal random factors that scale each bump.
     pub bump_spread: f64,
+    /// Spines placed by the pattern: a peak of the activator at least this fraction of the
+    /// edge's highest concentration grows a spine when a varix forms.
+    pub spine_level: f64,
+    /// Spines placed by the pattern: lower peaks, down to this fraction, bear bumps between
+    /// the varices.
+    pub bump_level: f64,
+    /// Spines placed by the pattern: the relative size σ of a spine on the edge's highest
+    /// peak; a spine on a peak just at `spine_level` is the smallest.
+    pub peak_sigma: f64,
 }
 
 impl Default for VaricesSpec {
@@ -100,6 +110,9 @@ impl Default for VaricesSpec {
             bump_sets: 0,
             bump_size: 0.1,
             bump_spread: 0.2,
+            spine_level: 0.8,
+            bump_level: 0.55,
+            peak_sigma: 1.9,
         }
     }
 }
