@@ -13,5 +13,6 @@ pub mod implicit_mesh;
 pub(crate) mod opening;
 pub(crate) mod repair;
 pub(crate) mod sections;
+pub mod textures;
 pub mod varix;
 pub mod whorl;

@@ -13,8 +13,10 @@ use super::check::check;
 use super::helix::Instances;
 use super::opening::inside;
 use super::sections::{Gathered, joined, sections};
+use super::textures::{check_textures, look};
 use super::varix::{Standing, pattern_spines, pigment_at, standing, table_spines, varix};
 use crate::blobtree::blob_tree::Node;
+use crate::blobtree::texture_blend::Look;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
@@ -61,6 +63,7 @@ pub fn whorl(
     rows: usize,
 ) -> Result<Whorl, ShapeError> {
     check(spec)?;
+    check_textures(&spec.textures)?;
     let instances = Instances::new(spec, rows);
     let count = instances.count;
     let mut gathered = Gathered {
@@ -122,7 +125,14 @@ pub fn whorl(
         let at = instances.placement(kf);
         let on_surface = standing(&body, &at, &spines);
         let time = instances.time(kf);
-        let mut members: Vec<Node> = varix(v, &on_surface, sigma_max, thinnest(kf), time)
+        let mut members: Vec<Node> = varix(
+            v,
+            &on_surface,
+            sigma_max,
+            thinnest(kf),
+            time,
+            &spec.textures,
+        )
             .into_iter()
             .collect();
         let from_opening = varix_rows.len() - i;
@@ -148,6 +158,7 @@ pub fn whorl(
                     [spec.canal_spines.length, spec.canal_spines.radius],
                     thinnest(kf),
                     time,
+                    &spec.textures.canal_spines,
                     &mut canal_noise,
                 );
             }
@@ -186,12 +197,18 @@ pub fn whorl(
                 instances.time(kb),
                 &mut bump_noise,
             );
+            let bump_look = look(&spec.textures.bumps, 0.0);
             for bump in bumps {
+                let bump = bump.looking(bump_look);
                 extra[section].push(gathered.placed(at, bump, kb.round() as u32));
             }
         }
     }
+    let body_look = look(&spec.textures.body, 0.0);
     for ((_, node), bumps) in sections.iter_mut().zip(extra) {
+        if body_look != Look::Pattern {
+            *node = std::mem::replace(node, Node::blend(Vec::new())).looking(body_look);
+        }
         if !bumps.is_empty() {
             let whorl = std::mem::replace(node, Node::blend(Vec::new()));
             *node =
