@@ -13,7 +13,7 @@ use super::check::check;
 use super::helix::Instances;
 use super::opening::inside;
 use super::sections::{Gathered, joined, sections};
-use super::textures::{check_textures, look};
+use super::textures::look;
 use super::varix::{Standing, pattern_spines, pigment_at, standing, table_spines, varix};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::texture_blend::Look;
@@ -63,7 +63,6 @@ pub fn whorl(
     rows: usize,
 ) -> Result<Whorl, ShapeError> {
     check(spec)?;
-    check_textures(&spec.textures)?;
     let instances = Instances::new(spec, rows);
     let count = instances.count;
     let mut gathered = Gathered {
