@@ -248,8 +248,8 @@ mod tests {
         assert_eq!(share, 0.0);
         // Blended 3 : 1 with the body: three quarters of the ramp's colour, a quarter of the
         // pattern, whose coordinates are the body's alone.
-        let blend = Paint::of(&spine, &cone, DVec3::X * 0.5, 0.6)
-            + Paint::of(&body, &POINT, DVec3::X, 0.2);
+        let blend =
+            Paint::of(&spine, &cone, DVec3::X * 0.5, 0.6) + Paint::of(&body, &POINT, DVec3::X, 0.2);
         let [r, _, b, share] = blend.tint();
         assert!((r - 0.5625).abs() < 1e-12 && (b - 0.1875).abs() < 1e-12);
         assert!((share - 0.25).abs() < 1e-12);

@@ -230,7 +230,11 @@ impl Glb {
             }
             if let Some(colours) = layout.colours {
                 let paint = &self.shell.paint;
-                put(&mut self.bin, colours + 12 * i, &paint.linear(paint.colour(v)));
+                put(
+                    &mut self.bin,
+                    colours + 12 * i,
+                    &paint.linear(paint.colour(v)),
+                );
             }
         }
         if self.cursor.done() {

@@ -8,7 +8,7 @@ use crate::spec::form::textures::{PartTexture, SHADE_RANGE, TextureKind, Texture
 /// The look of a part textured by `texture`, its ramp starting `start` of the way along its
 /// primitives (where the part leaves the surface it stands on).
 pub fn look(texture: &PartTexture, start: f64) -> Look {
-    match texture.kind {
+    match texture.look {
         TextureKind::Pattern => Look::Pattern,
         TextureKind::Ramp => Look::Ramp {
             base: texture.base.linear().map(f64::from),

@@ -132,8 +132,8 @@ pub fn whorl(
             time,
             &spec.textures,
         )
-            .into_iter()
-            .collect();
+        .into_iter()
+        .collect();
         let from_opening = varix_rows.len() - i;
         let mut canal = Vec::new();
         if from_opening <= CANAL_VARICES {

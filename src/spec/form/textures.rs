@@ -28,7 +28,7 @@ impl Default for TexturesSpec {
     /// toward the tips, the bumps a little darker on their tops.
     fn default() -> Self {
         let spine = PartTexture {
-            kind: TextureKind::Ramp,
+            look: TextureKind::Ramp,
             base: Rgb([236, 222, 208]),
             tip: Rgb([92, 54, 38]),
             shade: 1.6,
@@ -38,7 +38,7 @@ impl Default for TexturesSpec {
             spines: spine,
             canal_spines: spine,
             bumps: PartTexture {
-                kind: TextureKind::Ramp,
+                look: TextureKind::Ramp,
                 base: Rgb([236, 222, 208]),
                 tip: Rgb([176, 128, 100]),
                 shade: 1.0,
@@ -61,7 +61,7 @@ pub enum TextureKind {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct PartTexture {
-    pub kind: TextureKind,
+    pub look: TextureKind,
     /// The ramp's colour where the part leaves the surface it stands on.
     pub base: Rgb,
     /// The ramp's colour at the part's tip.
@@ -75,7 +75,7 @@ impl Default for PartTexture {
     /// The pattern.
     fn default() -> Self {
         Self {
-            kind: TextureKind::Pattern,
+            look: TextureKind::Pattern,
             base: Rgb([236, 222, 208]),
             tip: Rgb([92, 54, 38]),
             shade: 1.0,
