@@ -127,7 +127,7 @@ fn the_default_spines_darken_from_base_to_tip() {
     let mut varices = i.varices.clone();
     varices.bend = 0.0;
     varices.ridge = 0.0;
-    let textures = i.textures;
+    let textures = *i.textures;
     assert_eq!(textures, TexturesSpec::default());
     let standing = Standing {
         spine: Spine {

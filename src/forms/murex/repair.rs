@@ -34,7 +34,7 @@ pub(crate) fn repair(
             i.opening = f.opening.clone();
             "the preset's opening".into()
         } else if key.starts_with("form.textures") {
-            i.textures = f.textures;
+            i.textures = f.textures.clone();
             "the preset's textures".into()
         } else {
             "the preset's form".into()

@@ -38,9 +38,10 @@ pub struct ImplicitSpec {
     /// surface is empty.
     #[serde(default)]
     pub opening: OpeningSpec,
-    /// How the four parts are coloured and blended (§3.4, fig 12).
+    /// How the four parts are coloured and blended (§3.4, fig 12); boxed, as the form's
+    /// variants should stay near one size.
     #[serde(default)]
-    pub textures: TexturesSpec,
+    pub textures: Box<TexturesSpec>,
 }
 
 impl ImplicitSpec {
