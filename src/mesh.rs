@@ -129,7 +129,7 @@ impl Mesh {
     }
 }
 
-/// Most vertices a shell's mesh may have (72 MB of vertex data): a spec whose form would
+/// Most vertices a shell's mesh may have (104 MB of vertex data): a spec whose form would
 /// make more is repaired.
 pub const MAX_VERTICES: u64 = 2_000_000;
 
