@@ -45,6 +45,9 @@ struct VertexIn {
     @location(1) normal: vec3<f32>,
     @location(2) pattern: vec2<f32>,
     @location(3) surface: f32,
+    // Colours blended by field on an implicit shell's parts: rgb already weighted, a the
+    // pattern's share (Galbraith et al. §3.4).
+    @location(4) tint: vec4<f32>,
 }
 
 struct VertexOut {
@@ -53,6 +56,7 @@ struct VertexOut {
     @location(1) normal: vec3<f32>,
     @location(2) pattern: vec2<f32>,
     @location(3) @interpolate(flat) surface: f32,
+    @location(4) tint: vec4<f32>,
 }
 
 // A vertex in display and clip space.
@@ -64,6 +68,7 @@ fn place(v: VertexIn) -> VertexOut {
     out.normal = (g.model * vec4<f32>(v.normal, 0.0)).xyz;
     out.pattern = v.pattern;
     out.surface = v.surface;
+    out.tint = v.tint;
     return out;
 }
 
@@ -220,6 +225,7 @@ fn fs_main(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) ve
         } else {
             albedo = g.ground.rgb;
         }
+        albedo = in.tint.a * albedo + in.tint.rgb;
         // The side facing into the shell (seen through a single-surface opening) is paler,
         // and darkens with depth like the inside of a wall.
         if (!front) {

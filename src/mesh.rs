@@ -18,7 +18,7 @@ pub enum Surface {
     Ground = 3,
 }
 
-/// One mesh vertex, 36 bytes.
+/// One mesh vertex, 52 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct Vertex {
@@ -29,6 +29,10 @@ pub struct Vertex {
     pub pattern: [f32; 2],
     /// The [`Surface`] as a number.
     pub surface: f32,
+    /// Colours blended by field on an implicit surface (Galbraith et al. §3.4): (r, g, b)
+    /// in linear light, already weighted, and the pattern's share a; the outer surface's
+    /// colour is a · pattern + (r, g, b). (0, 0, 0, 1) everywhere else: the pattern alone.
+    pub tint: [f32; 4],
 }
 
 impl Vertex {
@@ -38,6 +42,15 @@ impl Vertex {
             normal: normal.as_vec3().to_array(),
             pattern: [pattern[0] as f32, pattern[1] as f32],
             surface: surface as u8 as f32,
+            tint: [0.0, 0.0, 0.0, 1.0],
+        }
+    }
+
+    /// The same vertex with the colours blended there ([`Vertex::tint`]).
+    pub fn tinted(self, tint: [f64; 4]) -> Self {
+        Self {
+            tint: tint.map(|c| c as f32),
+            ..self
         }
     }
 
@@ -116,7 +129,7 @@ impl Mesh {
     }
 }
 
-/// Most vertices a shell's mesh may have (72 MB of vertex data): a spec whose form would
+/// Most vertices a shell's mesh may have (104 MB of vertex data): a spec whose form would
 /// make more is repaired.
 pub const MAX_VERTICES: u64 = 2_000_000;
 

@@ -10,7 +10,7 @@
 use super::bend::Bend;
 use super::falloff::ISO;
 use super::primitive::Primitive;
-use super::texture_blend::{Paint, Texture};
+use super::texture_blend::{Look, Paint, Texture};
 use crate::mesh::Bounds;
 use glam::{DAffine3, DMat3, DVec3};
 use std::rc::Rc;
@@ -121,6 +121,25 @@ impl Node {
 
     pub fn leaf(primitive: Primitive, texture: Texture) -> Self {
         Self::new(Op::Leaf(primitive, Rc::new(texture)))
+    }
+
+    /// The same tree with every primitive showing `look` (a part textured as a whole, §3.4).
+    pub fn looking(self, look: Look) -> Self {
+        let all = |c: Vec<Node>| c.into_iter().map(|n| n.looking(look)).collect();
+        let op = match self.op {
+            Op::Leaf(p, t) => Op::Leaf(p, Rc::new(t.looking(look))),
+            Op::Blend(c) => Op::Blend(all(c)),
+            Op::Union(c) => Op::Union(all(c)),
+            Op::Intersection(c) => Op::Intersection(all(c)),
+            Op::Superelliptic(n, c) => Op::Superelliptic(n, all(c)),
+            Op::Controlled(c, pairs) => Op::Controlled(all(c), pairs),
+            Op::Difference(a, b) => {
+                Op::Difference(Box::new(a.looking(look)), Box::new(b.looking(look)))
+            }
+            Op::Warp(bend, c) => Op::Warp(bend, Box::new(c.looking(look))),
+            Op::Transform(affine, c) => Op::Transform(affine, Box::new(c.looking(look))),
+        };
+        Self { op, ..self }
     }
 
     /// Blends nested in the children are spliced in: the sum is associative.
@@ -508,7 +527,7 @@ fn leaf_probe(primitive: &Primitive, texture: &Texture, p: DVec3) -> Probe {
     let (f, gradient) = primitive.field_gradient(p);
     // A primitive adds no weight to the pattern coordinates where its field is zero.
     let paint = if f > 0.0 {
-        Paint::of(texture, p, f)
+        Paint::of(texture, primitive, p, f)
     } else {
         Paint::default()
     };
@@ -648,7 +667,7 @@ fn controlled(
     best
 }
 
-/// The field, its gradient and the blended pattern coordinates at a point.
+/// The field, its gradient and the blended textures at a point.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Probe {
     pub field: f64,

@@ -6,7 +6,7 @@
 //!
 //! [`support_of`]: super::falloff::support_of
 
-use super::falloff::{falloff, falloff_slope};
+use super::falloff::{falloff, falloff_slope, surface_ratio};
 use crate::mesh::Bounds;
 use glam::{DAffine3, DVec3};
 
@@ -112,6 +112,22 @@ impl Primitive {
             }
         };
         (falloff(d2), grad_d2 * falloff_slope(d2))
+    }
+
+    /// Where `p` lies along the primitive's own parameterisation, from 0 to 1, for a colour
+    /// ramp painted on it (Galbraith et al. §3.4: each part textured in its own coordinates):
+    /// along a cone's segment from `from` (0) to `to` (1); on a point, from the edge of its
+    /// field (0) to a lone point's surface and inside it (1), so that a bump is darkest on its
+    /// top and fades where it melts into the whorl; 0 on a torus.
+    pub fn along(&self, p: DVec3) -> f64 {
+        match *self {
+            Primitive::Point { centre, radius } => {
+                let d = p.distance(centre) / radius;
+                ((1.0 - d) / (1.0 - surface_ratio())).clamp(0.0, 1.0)
+            }
+            Primitive::Cone { from, to, .. } => projection(p, from, to).2.clamp(0.0, 1.0),
+            Primitive::Torus { .. } => 0.0,
+        }
     }
 
     /// The primitive moved by a similarity `m` (a map that scales all lengths by `scale`).

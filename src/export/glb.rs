@@ -3,7 +3,9 @@
 //! Two primitives: the outer surface, whose `TEXCOORD_0` places the vertex's pattern
 //! coordinates on the coloured planar pattern (embedded as a PNG `baseColorTexture`, filtered
 //! by the viewer to the colours the page shows; the ground colour as a factor when there is no
-//! pattern), and the parts without a pattern (the inside of the wall, the lip and caps) in the
+//! pattern; where an implicit shell's parts blend their own colours into the pattern
+//! (Galbraith et al. §3.4), which a texture cannot carry, the page's colour of every vertex as
+//! `COLOR_0` instead), and the parts without a pattern (the inside of the wall, the lip and caps) in the
 //! interior colour. Vertices are welded where every attribute agrees, so the surface is smooth
 //! where the form made it smooth and split where the form split it (creases, the faceted look,
 //! the seam where the pattern's x wraps). A triangle belongs to the part of its first corner,
@@ -15,6 +17,7 @@
 //! dozen fixed fields, and a typed glTF crate would add more code than it saves.
 
 use super::error::ExportError;
+use super::paint::Paint;
 use super::placement::{fit, turn};
 use super::png::{PngRows, rows_per_step};
 use super::shell::Shell;
@@ -50,6 +53,7 @@ struct Layout {
     positions: usize,
     normals: usize,
     uvs: Option<usize>,
+    colours: Option<usize>,
     indices: usize,
 }
 
@@ -57,7 +61,7 @@ struct Layout {
 #[derive(Default)]
 struct Part {
     /// Welded vertex of each distinct vertex (every bit of its data).
-    keys: HashMap<[u32; 9], u32>,
+    keys: HashMap<[u32; 13], u32>,
     /// The mesh's vertex each welded vertex copies.
     sources: Vec<u32>,
     /// Area-weighted normals of the triangles around each welded vertex, for a vertex whose
@@ -78,7 +82,7 @@ impl Part {
     }
 
     fn weld(&mut self, vertex: &Vertex, source: u32) -> u32 {
-        let key: [u32; 9] = bytemuck::cast(*vertex);
+        let key: [u32; 13] = bytemuck::cast(*vertex);
         *self.keys.entry(key).or_insert_with(|| {
             self.sources.push(source);
             self.around.push(Vec3::ZERO);
@@ -115,6 +119,8 @@ pub(crate) struct Glb {
     bin: Vec<u8>,
     png: Option<PngRows>,
     image: Vec<u8>,
+    /// Whether the outer surface carries colours per vertex rather than the texture.
+    tinted: bool,
     /// The file.
     out: Vec<u8>,
 }
@@ -123,6 +129,7 @@ impl Glb {
     pub fn new(shell: Shell) -> Self {
         let (triangles, vertices) = (shell.mesh.triangle_count(), shell.mesh.vertices.len());
         let outer = shell.mesh.vertices.iter().filter(|v| v.is_outer()).count();
+        let tinted = Paint::tinted(&shell.mesh.vertices);
         Self {
             turn: turn(shell.facing, false),
             shell,
@@ -136,12 +143,13 @@ impl Glb {
             bin: Vec::new(),
             png: None,
             image: Vec::new(),
+            tinted,
             out: Vec::new(),
         }
     }
 
     fn textured(&self) -> bool {
-        self.shell.paint.texture().is_some()
+        self.shell.paint.texture().is_some() && !self.tinted
     }
 
     fn weld(&mut self) -> Result<(), ExportError> {
@@ -175,7 +183,7 @@ impl Glb {
 
     /// Places every part's arrays in the binary buffer, each at a multiple of four bytes.
     fn lay_out(&mut self) {
-        let textured = self.textured();
+        let (textured, tinted) = (self.textured(), self.tinted);
         let mut at = 0;
         let mut take = |bytes: usize| {
             let start = at;
@@ -189,6 +197,7 @@ impl Glb {
                 positions: take(12 * n),
                 normals: take(12 * n),
                 uvs: (p == 0 && textured).then(|| take(8 * n)),
+                colours: (p == 0 && tinted).then(|| take(12 * n)),
                 indices: take(4 * part.indices.len()),
             };
         }
@@ -219,6 +228,14 @@ impl Glb {
             if let Some(uvs) = layout.uvs {
                 put(&mut self.bin, uvs + 8 * i, &self.shell.paint.uv(v.pattern));
             }
+            if let Some(colours) = layout.colours {
+                let paint = &self.shell.paint;
+                put(
+                    &mut self.bin,
+                    colours + 12 * i,
+                    &paint.linear(paint.colour(v)),
+                );
+            }
         }
         if self.cursor.done() {
             self.stage = Stage::Indices;
@@ -242,7 +259,7 @@ impl Glb {
                 .shell
                 .paint
                 .texture()
-                .filter(|_| self.parts[0].len() > 0)
+                .filter(|_| self.parts[0].len() > 0 && !self.tinted)
             {
                 Some(t) => {
                     self.png = Some(PngRows::new(t.width, t.height, png::ColorType::Rgb));
@@ -284,12 +301,16 @@ impl Glb {
             views.accessors[position]["max"] = json!(part.max.map(f64::from));
             let normal = views.floats(layout.normals, n, "VEC3");
             let mut attributes = json!({ "POSITION": position, "NORMAL": normal });
-            let mut pbr = match layout.uvs.filter(|_| image.is_some()) {
-                Some(uvs) => {
+            let mut pbr = match (layout.uvs.filter(|_| image.is_some()), layout.colours) {
+                (Some(uvs), _) => {
                     attributes["TEXCOORD_0"] = views.floats(uvs, n, "VEC2").into();
                     json!({ "baseColorTexture": { "index": 0 } })
                 }
-                None => {
+                (None, Some(colours)) => {
+                    attributes["COLOR_0"] = views.floats(colours, n, "VEC3").into();
+                    json!({ "baseColorFactor": [1.0, 1.0, 1.0, 1.0] })
+                }
+                (None, None) => {
                     let colour = if p == 0 {
                         paint.ground()
                     } else {

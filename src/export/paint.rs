@@ -7,9 +7,11 @@
 //! records it; it samples that texture bilinearly, in linear light, at the vertex's pattern
 //! coordinates (x along the growing edge in [0, 1], onto the centres of the first and last
 //! cells; y in rows, on row centres), clamped at the edges. The outer surface of a shell
-//! without a pattern is the ground colour; the inner surface and the edges (lip, caps) are the
-//! interior colour. [`Paint::colour`] is that mapping, and [`Paint::uv`] places the same
-//! pattern coordinates on [`Texture`], the image a glTF viewer filters to the same colours.
+//! without a pattern is the ground colour. Where an implicit shell's parts blend (Galbraith et
+//! al. §3.4), the vertex's tint adds the parts' ramp colours to the pattern's share of it, in
+//! linear light. The inner surface and the edges (lip, caps) are the interior colour.
+//! [`Paint::colour`] is that mapping, and [`Paint::uv`] places the same pattern coordinates on
+//! [`Texture`], the image a glTF viewer filters to the same colours.
 
 use crate::mesh::Vertex;
 use crate::pattern::run::PatternRun;
@@ -108,21 +110,34 @@ impl Paint {
     }
 
     /// The colour of a vertex of the shell (sRGB), as the page paints it: the pattern on the
-    /// outer surface, sampled at the vertex's pattern coordinates; the ground colour there when
-    /// there is no pattern; the interior colour on the inner surface and the edges.
+    /// outer surface, sampled at the vertex's pattern coordinates (the ground colour there
+    /// when there is no pattern), times the pattern's share of the vertex's tint, plus the
+    /// tint's blended colours; the interior colour on the inner surface and the edges.
     pub fn colour(&self, vertex: &Vertex) -> [u8; 3] {
         if !vertex.is_outer() {
             return self.interior.0;
         }
-        match &self.texture {
+        let pattern = match &self.texture {
             Some(t) => self.sample(t, self.uv(vertex.pattern)),
-            None => self.ground.0,
-        }
+            None => self.linear(self.ground.0),
+        };
+        let [r, g, b, share] = vertex.tint;
+        let tint = [r, g, b];
+        std::array::from_fn(|k| to_srgb(share * pattern[k] + tint[k]))
+    }
+
+    /// Whether some vertex of `vertices` on the outer surface is not the pattern alone: its
+    /// colour is not the texture's (a viewer multiplies a texture by vertex colours, it
+    /// cannot add them), so the export carries colours per vertex.
+    pub fn tinted(vertices: &[Vertex]) -> bool {
+        vertices
+            .iter()
+            .any(|v| v.is_outer() && v.tint != [0.0, 0.0, 0.0, 1.0])
     }
 
     /// The texture filtered bilinearly in linear light at `uv`, clamped at its edges, as a
     /// viewer's sampler (and the page's shader) filters it.
-    fn sample(&self, t: &Texture, [u, v]: [f32; 2]) -> [u8; 3] {
+    fn sample(&self, t: &Texture, [u, v]: [f32; 2]) -> [f32; 3] {
         let x = (u * t.width as f32 - 0.5).clamp(0.0, (t.width - 1) as f32);
         let y = (v * t.height as f32 - 0.5).clamp(0.0, (t.height - 1) as f32);
         let (x0, y0) = (x as usize, y as usize);
@@ -134,7 +149,7 @@ impl Paint {
         std::array::from_fn(|k| {
             let top = texel(x0, y0, k) * (1.0 - fx) + texel(x1, y0, k) * fx;
             let bottom = texel(x0, y1, k) * (1.0 - fx) + texel(x1, y1, k) * fx;
-            to_srgb(top * (1.0 - fy) + bottom * fy)
+            top * (1.0 - fy) + bottom * fy
         })
     }
 }

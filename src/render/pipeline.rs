@@ -59,8 +59,7 @@ pub(super) fn pipelines(
         bind_group_layouts: &[Some(layout)],
         immediate_size: 0,
     });
-    let attributes =
-        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32];
+    let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32, 4 => Float32x4];
     let pipeline = |label, vertex, fragment, cull_mode| {
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(label),

@@ -10,14 +10,15 @@ use std::str::FromStr;
 pub struct Rgb(pub [u8; 3]);
 
 impl Rgb {
-    /// The colour as linear-light fractions, for shading.
+    /// The colour as linear-light fractions, for shading and for the colours an implicit
+    /// shell's parts blend (with `libm`, so that native and wasm builds agree to the bit).
     pub fn linear(self) -> [f32; 3] {
         self.0.map(|c| {
             let x = f32::from(c) / 255.0;
             if x <= 0.04045 {
                 x / 12.92
             } else {
-                ((x + 0.055) / 1.055).powf(2.4)
+                libm::powf((x + 0.055) / 1.055, 2.4)
             }
         })
     }

@@ -18,6 +18,7 @@ pub enum Section {
     Varices,
     CanalSpines,
     Opening,
+    Textures,
     Polygonization,
     Curve,
     Orientation,
@@ -45,6 +46,7 @@ impl Section {
             Section::Varices => "Varices, spines and bumps",
             Section::CanalSpines => "Canal spines",
             Section::Opening => "Opening",
+            Section::Textures => "Textures of the parts",
             Section::Polygonization => "Polygonization",
             Section::Curve => "Generating curve",
             Section::Orientation => "Orientation",
@@ -186,6 +188,7 @@ const fn f(
     }
 }
 
+use super::form::textures::SHADE_RANGE;
 use Section::*;
 
 /// The largest diffusion per iteration that explicit Euler with Δt = Δx = 1 integrates
@@ -327,6 +330,22 @@ pub const IMPLICIT: &[Field] = &[
     f("form.opening.inside.exponent", Opening, "n", "hollow: blending exponent (eq 4)", log(1.0, 400.0)),
     f("form.opening.inside.pairs", Opening, "", "hollow: only these pairs blend (eq 6)", Kind::List { width: 2, integer: true }),
     f("form.opening.ahead", Opening, "", "generating surfaces the hollow reaches beyond the edge", int(0, 16)),
+    f("form.textures.body.look", Textures, "", "body whorl: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.body.base", Textures, "", "body whorl: ramp colour at the base", Kind::Colour),
+    f("form.textures.body.tip", Textures, "", "body whorl: ramp colour at the tip", Kind::Colour),
+    f("form.textures.body.shade", Textures, "", "body whorl: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
+    f("form.textures.spines.look", Textures, "", "spines in the varices: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.spines.base", Textures, "", "spines in the varices: ramp colour at the base", Kind::Colour),
+    f("form.textures.spines.tip", Textures, "", "spines in the varices: ramp colour at the tip", Kind::Colour),
+    f("form.textures.spines.shade", Textures, "", "spines in the varices: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
+    f("form.textures.canal_spines.look", Textures, "", "spines on the canal: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.canal_spines.base", Textures, "", "spines on the canal: ramp colour at the base", Kind::Colour),
+    f("form.textures.canal_spines.tip", Textures, "", "spines on the canal: ramp colour at the tip", Kind::Colour),
+    f("form.textures.canal_spines.shade", Textures, "", "spines on the canal: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
+    f("form.textures.bumps.look", Textures, "", "bumps: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.bumps.base", Textures, "", "bumps: ramp colour at the base", Kind::Colour),
+    f("form.textures.bumps.tip", Textures, "", "bumps: ramp colour at the tip", Kind::Colour),
+    f("form.textures.bumps.shade", Textures, "", "bumps: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
     f("form.resolution", Polygonization, "", "voxels along the longest side (polygonization)", int(16, 384)),
 ];
 

@@ -177,10 +177,9 @@ pub fn mesh_chunk(
 
 /// The vertex where the field crosses the iso-value on the grid edge between two samples
 /// (position, field): one probe of the tree at the linear interpolation of the samples gives
-/// the field there, its exact gradient (the normal) and the primitives' blended pattern
-/// coordinates, and one Newton step along the edge with that gradient moves the vertex onto
-/// the surface. It is kept off the edge's ends, so that vertices of different edges never
-/// coincide.
+/// the field there, its exact gradient (the normal) and the primitives' blended textures, and
+/// one Newton step along the edge with that gradient moves the vertex onto the surface. It is
+/// kept off the edge's ends, so that vertices of different edges never coincide.
 fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
     let [(pa, fa), (pb, fb)] = ends;
     let edge = pb - pa;
@@ -205,5 +204,5 @@ fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
     } else {
         Surface::Outer
     };
-    Vertex::new(p, normal, paint.coordinates(), surface)
+    Vertex::new(p, normal, paint.coordinates(), surface).tinted(paint.tint())
 }

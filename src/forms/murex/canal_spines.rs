@@ -6,12 +6,14 @@
 //! in units of D.
 
 use super::generating_surface::cone_frame;
+use super::textures::look;
 use crate::blobtree::bend::Bend;
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::support_of;
 use crate::blobtree::primitive::Primitive;
 use crate::blobtree::texture_blend::Texture;
 use crate::pattern::noise::Noise;
+use crate::spec::form::textures::PartTexture;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 
 /// The random stream of the canal spines' bends, among those of the spec's seed.
@@ -26,13 +28,15 @@ const TAPER: f64 = 0.35;
 
 /// The canal spines of one row: `sizes` (σ, from the body down the canal) on the canal
 /// `cone` (a generator cone row: from, to, radii, bend), each `length`·σ long beyond the
-/// canal's surface with base radius `radius`·σ, none thinner than `thinnest`.
+/// canal's surface with base radius `radius`·σ, none thinner than `thinnest`, each textured
+/// by `texture` from the canal's surface to its tip.
 pub fn canal_row(
     cone: &[f64; 10],
     sizes: &[f64],
     [length, radius]: [f64; 2],
     thinnest: f64,
     time: f64,
+    texture: &PartTexture,
     noise: &mut Noise,
 ) -> Vec<Node> {
     let (from, to) = (
@@ -69,7 +73,9 @@ pub fn canal_row(
                 to: DVec3::X * spine_length,
                 radii: radii.map(support_of),
             },
-            Texture::around(time).moved(placed),
+            Texture::around(time)
+                .moved(placed)
+                .looking(look(texture, canal_radius / spine_length)),
         );
         let bends = 1 + noise.below(3);
         let piece = spine_length / (bends + 1) as f64;

@@ -1,6 +1,7 @@
 //! What the numbers of an implicit shell must satisfy for its BlobTree to be built, and the
 //! caps that keep any shell within memory and time; each refusal names its key.
 
+use super::textures::check_textures;
 use crate::blobtree::bend::MAX_BEND_DEGREES;
 use crate::blobtree::falloff::support_of;
 use crate::shape::ShapeError;
@@ -88,7 +89,7 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
     if parts(&o.inside) > 0 {
         check_generator(&o.inside, "form.opening.inside")?;
     }
-    Ok(())
+    check_textures(&spec.textures)
 }
 
 /// The smallest and largest R₀: beyond them the shell's sizes underflow or overflow the

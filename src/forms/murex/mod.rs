@@ -14,5 +14,6 @@ pub(crate) mod opening;
 pub mod rd_placement;
 pub(crate) mod repair;
 pub(crate) mod sections;
+pub mod textures;
 pub mod varix;
 pub mod whorl;

@@ -33,6 +33,9 @@ pub(crate) fn repair(
         } else if key.starts_with("form.opening") {
             i.opening = f.opening.clone();
             "the preset's opening".into()
+        } else if key.starts_with("form.textures") {
+            i.textures = f.textures.clone();
+            "the preset's textures".into()
         } else {
             "the preset's form".into()
         };

@@ -12,6 +12,7 @@
 //! one on the surface and one a little above it: the same concentric ridge, following the
 //! surface wherever the spines stand.
 
+use super::textures::look;
 use crate::blobtree::bend::Bend;
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::{ISO, support_of};
@@ -19,6 +20,7 @@ use crate::blobtree::primitive::Primitive;
 use crate::blobtree::texture_blend::Texture;
 use crate::mesh::Bounds;
 use crate::spec::form::implicit::VaricesSpec;
+use crate::spec::form::textures::{PartTexture, TexturesSpec};
 use glam::{DAffine3, DMat3, DVec3};
 
 /// One spine of a varix.
@@ -114,7 +116,8 @@ pub struct Standing {
 }
 
 /// The varix of eq 12: the spines `standing` on the surface, joined by the ridge, with
-/// pattern time `time`. `sigma_max` is the table's largest σ; `thinnest` is the thinnest
+/// pattern time `time`; the spines wear the spines' texture from base to tip, the ridge the
+/// body's. `sigma_max` is the table's largest σ; `thinnest` is the thinnest
 /// radius (units of D) the polygonizer resolves: thinner spines and ridges are thickened to
 /// it so that they stay joined to the shell.
 pub fn varix(
@@ -123,10 +126,11 @@ pub fn varix(
     sigma_max: f64,
     thinnest: f64,
     time: f64,
+    textures: &TexturesSpec,
 ) -> Option<Node> {
     let mut parts: Vec<Node> = standing
         .iter()
-        .map(|s| spine(spec, s, sigma_max, thinnest, time))
+        .map(|s| spine(spec, s, sigma_max, thinnest, time, &textures.spines))
         .collect();
     if spec.ridge > 0.0 {
         let radius = spec.ridge.max(thinnest);
@@ -139,7 +143,7 @@ pub fn varix(
                         to: at(&pair[1]),
                         radii: [support_of(radius); 2],
                     },
-                    Texture::around(time),
+                    Texture::around(time).looking(look(&textures.body, 0.0)),
                 ));
             }
         }
@@ -153,8 +157,15 @@ pub fn varix(
 
 /// One curving spine (eqs 11–12): a cone along x from its base, bent towards y by the spec's
 /// bend, scaled by (σ, σ, σ_max), turned by α and moved out to the surface, its base sunk by
-/// its own radius so that it grows out of the shell.
-fn spine(spec: &VaricesSpec, s: &Standing, sigma_max: f64, thinnest: f64, time: f64) -> Node {
+/// its own radius so that it grows out of the shell; its texture's ramp starts there.
+fn spine(
+    spec: &VaricesSpec,
+    s: &Standing,
+    sigma_max: f64,
+    thinnest: f64,
+    time: f64,
+    texture: &PartTexture,
+) -> Node {
     let sigma = s.spine.sigma;
     let length = spec.length;
     let base = spec.radius.max(thinnest / sigma);
@@ -173,7 +184,9 @@ fn spine(spec: &VaricesSpec, s: &Standing, sigma_max: f64, thinnest: f64, time: 
             to: DVec3::X * length,
             radii: [support_of(base), support_of(tip)],
         },
-        Texture::around(time).moved(frame),
+        Texture::around(time)
+            .moved(frame)
+            .looking(look(texture, base / length)),
     );
     Node::transform(frame, Node::warp(Bend::new(bend, length), cone))
 }

@@ -14,8 +14,10 @@ use super::helix::Instances;
 use super::opening::inside;
 use super::rd_placement::{activator_at, bumps_of, free, peaks, spines_of};
 use super::sections::{Gathered, joined, sections};
+use super::textures::look;
 use super::varix::{Spine, Standing, standing, table_spines, varix};
 use crate::blobtree::blob_tree::Node;
+use crate::blobtree::texture_blend::Look;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
@@ -170,9 +172,16 @@ pub fn whorl(
             standing(&body, &at, &table_spines(&v.spines, whorl_number))
         };
         let time = instances.time(kf);
-        let mut members: Vec<Node> = varix(v, &on_surface, sigma_max, thinnest(kf), time)
-            .into_iter()
-            .collect();
+        let mut members: Vec<Node> = varix(
+            v,
+            &on_surface,
+            sigma_max,
+            thinnest(kf),
+            time,
+            &spec.textures,
+        )
+        .into_iter()
+        .collect();
         let from_opening = varix_rows.len() - i;
         let mut canal = Vec::new();
         if from_opening <= CANAL_VARICES {
@@ -196,6 +205,7 @@ pub fn whorl(
                     [spec.canal_spines.length, spec.canal_spines.radius],
                     thinnest(kf),
                     time,
+                    &spec.textures.canal_spines,
                     &mut canal_noise,
                 );
             }
@@ -244,7 +254,9 @@ pub fn whorl(
                 instances.time(kb),
                 &mut bump_noise,
             );
+            let bump_look = look(&spec.textures.bumps, 0.0);
             for bump in bumps {
+                let bump = bump.looking(bump_look);
                 extra[section].push(gathered.placed(at, bump, kb.round() as u32));
             }
             if let Some(built) = varices.last_mut() {
@@ -252,7 +264,11 @@ pub fn whorl(
             }
         }
     }
+    let body_look = look(&spec.textures.body, 0.0);
     for ((_, node), bumps) in sections.iter_mut().zip(extra) {
+        if body_look != Look::Pattern {
+            *node = std::mem::replace(node, Node::blend(Vec::new())).looking(body_look);
+        }
         if !bumps.is_empty() {
             let whorl = std::mem::replace(node, Node::blend(Vec::new()));
             *node =

@@ -2,6 +2,7 @@
 //! generating surface of skeletal primitives, placed again and again along a helico-spiral
 //! and blended into whorls, then polygonized at a chosen resolution.
 
+use crate::spec::form::textures::TexturesSpec;
 use crate::spec::handedness::Handedness;
 use serde::{Deserialize, Serialize};
 
@@ -37,6 +38,10 @@ pub struct ImplicitSpec {
     /// surface is empty.
     #[serde(default)]
     pub opening: OpeningSpec,
+    /// How the four parts are coloured and blended (§3.4, fig 12); boxed, as the form's
+    /// variants should stay near one size.
+    #[serde(default)]
+    pub textures: Box<TexturesSpec>,
 }
 
 impl ImplicitSpec {

@@ -8,6 +8,7 @@ pub mod branching;
 pub mod chambers;
 pub mod implicit;
 pub mod sweep;
+pub mod textures;
 
 use branching::BranchingSpec;
 use chambers::ChambersSpec;
