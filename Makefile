@@ -14,7 +14,8 @@ export XDG_RUNTIME_DIR ?= /tmp/seashells-runtime
 APT := DEBIAN_FRONTEND=noninteractive apt-get
 
 # Whether every npm package in package.json is installed at its version (binaryen for wasm-opt,
-# playwright-core to drive Chromium, mediabunny to read recorded videos, jsqr to read QR codes).
+# playwright-core to drive Chromium, mediabunny to read recorded videos, jsqr to read QR codes,
+# gltf-validator and three to check exported GLB files).
 export NPM_INSTALLED := const fs = require('fs'); \
   const wanted = JSON.parse(fs.readFileSync('package.json', 'utf8')).devDependencies; \
   process.exit(Object.entries(wanted).every(([name, version]) => { \
@@ -41,10 +42,11 @@ deps-browser:
 	  { $(APT) update && $(APT) install -y chromium chromium-driver; }
 	@command -v wasm-pack >/dev/null || cargo install wasm-pack --locked
 
-## Checkers nobody here wrote, for what leaves the product (trimesh for meshes).
+## Checkers nobody here wrote, for what leaves the product: trimesh for meshes (networkx and
+## lxml for 3MF, Pillow for textures), the Khronos glTF validator (npm, in deps-build).
 deps-check:
-	@python3 -c 'import trimesh, networkx, lxml' 2>/dev/null || \
-	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml
+	@python3 -c 'import trimesh, networkx, lxml, PIL' 2>/dev/null || \
+	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml pillow
 
 deps: deps-build deps-browser deps-check
 
@@ -78,8 +80,8 @@ test-page: build deps-browser
 	cargo build --release --bin seashells
 	node --test --test-concurrency=1 tests/page/
 
-## Exported files read back by third-party libraries.
-test-files: deps-check
+## Exported files read back by third-party libraries and checkers.
+test-files: deps-build deps-check
 	cargo build --release --bin seashells
 	python3 -m unittest discover --start-directory tests/files --verbose
 

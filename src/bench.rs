@@ -1,6 +1,7 @@
 //! The benchmark (figures, not a test): cell updates per second of each pattern model, the
 //! time of one animation frame's growth for each species at its default speed, and the
-//! implicit-surface modeller (field evaluations, whole polygonizations, frames of growth). The
+//! implicit-surface modeller (field evaluations, whole polygonizations, frames of growth), and
+//! the exports of the Murex written step by step (the whole file, and the longest step). The
 //! same code runs natively and in wasm; only the clock is given from outside. Every rate and
 //! every time of a whole piece of work is the median of five timings of at least a quarter of
 //! a second each, printed with its spread, so that a browser's coarse clock cannot quantise
@@ -8,6 +9,10 @@
 
 use crate::blobtree::falloff::ISO;
 use crate::blobtree::polygonize::{Grid, polygonize};
+use crate::export::MeshFormat;
+use crate::export::job::Export;
+use crate::export::print_size::PrintSize;
+use crate::export::shell::Shell;
 use crate::forms::murex::whorl::whorl;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;
@@ -80,6 +85,7 @@ pub fn run(now: &dyn Fn() -> f64) -> Vec<Figure> {
     }
     figures.extend(implicit(now, "implicit-whorl"));
     figures.extend(implicit(now, "murex-cabritii"));
+    figures.extend(exports(now, "murex-cabritii"));
     figures
 }
 
@@ -240,6 +246,54 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
                 spread: None,
             });
         }
+    }
+    figures
+}
+
+/// Every mesh format of preset `id` grown whole, written a step at a time as the page writes
+/// it: the time of the whole file, and of the longest step (what one frame may have to wait).
+fn exports(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
+    let Some(preset) = presets().iter().find(|p| p.id == id) else {
+        return Vec::new();
+    };
+    let Ok(mut generator) = Generator::new(&preset.spec) else {
+        return Vec::new();
+    };
+    generator.finish();
+    let mut figures = Vec::new();
+    for format in MeshFormat::ALL {
+        let shell = Shell::new(&generator, &preset.spec, preset, PrintSize::default());
+        let Ok(mut export) = shell.and_then(|s| Export::new(format, s)) else {
+            continue;
+        };
+        let (start, mut longest, mut steps) = (now(), 0.0f64, 0);
+        let bytes = loop {
+            let before = now();
+            let done = export.work(|| false);
+            longest = longest.max(now() - before);
+            steps += 1;
+            match done {
+                Ok(Some(bytes)) => break Some(bytes),
+                Ok(None) => {}
+                Err(_) => break None,
+            }
+        };
+        let Some(bytes) = bytes else {
+            continue;
+        };
+        let what = format!("{id} as {}", format.extension().to_uppercase());
+        figures.push(Figure {
+            what: format!("{what}: {} bytes in {steps} steps", bytes.len()),
+            value: now() - start,
+            unit: "ms",
+            spread: None,
+        });
+        figures.push(Figure {
+            what: format!("{what}: longest step"),
+            value: longest,
+            unit: "ms",
+            spread: None,
+        });
     }
     figures
 }

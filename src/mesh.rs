@@ -40,6 +40,11 @@ impl Vertex {
             surface: surface as u8 as f32,
         }
     }
+
+    /// Whether the vertex is on the outer surface, which carries the pattern.
+    pub fn is_outer(&self) -> bool {
+        self.surface == Surface::Outer as u8 as f32
+    }
 }
 
 /// An indexed triangle list.

@@ -22,8 +22,10 @@ fn temp(name: &str) -> String {
 #[test]
 fn mesh_writes_each_format_by_extension() {
     for (ext, magic) in [
-        ("obj", &b"# seashells"[..]),
+        ("glb", &b"glTF"[..]),
         ("ply", b"ply\n"),
+        ("3mf", b"PK\x03\x04"),
+        ("obj", b"# seashells"),
         ("stl", b"seashells"),
     ] {
         let out = temp(&format!("shell.{ext}"));
@@ -210,5 +212,118 @@ fn bad_input_gets_one_line_and_a_non_zero_exit() {
         assert!(!result.status.success(), "{args:?} succeeded");
         assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
         assert!(stderr.starts_with("seashells: "), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn exports_that_cannot_be_made_say_why_and_leave_no_file() {
+    let glb = temp("refused.glb");
+    let printed = temp("refused.3mf");
+    let stl = temp("refused.stl");
+    let diverging = "v=1&preset=oliva-porphyria&pattern.model.kappa=0&pattern.model.rho=5";
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["mesh", "--link", diverging, "--out", &glb],
+            "stopped growing",
+        ),
+        (
+            &[
+                "mesh",
+                "--link",
+                "v=1&preset=turbinate&form.wall.thickness=0",
+                "--out",
+                &printed,
+            ],
+            "form.wall.thickness",
+        ),
+        (
+            &[
+                "mesh",
+                "--preset",
+                "turbinate",
+                "--size",
+                "0",
+                "--out",
+                &printed,
+            ],
+            "--size: 0 mm",
+        ),
+        (
+            &[
+                "mesh",
+                "--preset",
+                "turbinate",
+                "--size",
+                "2000",
+                "--out",
+                &glb,
+            ],
+            "--size: 2000 mm",
+        ),
+        (
+            &[
+                "mesh",
+                "--preset",
+                "turbinate",
+                "--size",
+                "tall",
+                "--out",
+                &glb,
+            ],
+            "--size",
+        ),
+        (
+            &[
+                "mesh",
+                "--preset",
+                "turbinate",
+                "--size",
+                "80",
+                "--out",
+                &stl,
+            ],
+            "--size",
+        ),
+    ];
+    for (args, named) in cases {
+        let result = run(args);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(!result.status.success(), "{args:?} succeeded");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.contains(named), "{args:?}: {stderr}");
+    }
+    for path in [&glb, &printed, &stl] {
+        assert!(!std::path::Path::new(path).exists(), "{path} was written");
+    }
+}
+
+#[test]
+fn a_link_that_would_make_an_implicit_shell_empty_is_refused_naming_its_key() {
+    // Each of these once grew to nothing: exit 0 and a file with no triangles.
+    for (link, key) in [
+        (
+            "v=1&preset=murex-cabritii&form.spiral.r0=1e-300",
+            "form.spiral.r0",
+        ),
+        (
+            "v=1&preset=murex-cabritii&form.generator.points=0,0,0,1e300",
+            "form.generator.points",
+        ),
+        (
+            "v=1&preset=implicit-whorl&form.generator.points=0,0,0,1e-300",
+            "form.generator.points",
+        ),
+        (
+            "v=1&preset=murex-cabritii&form.opening.inside.points=1e300,0,0,0.6",
+            "form.opening.inside.points",
+        ),
+    ] {
+        let out = temp("empty.stl");
+        let _ = std::fs::remove_file(&out);
+        let result = run(&["mesh", "--link", link, "--out", &out]);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert!(!result.status.success(), "{link} succeeded");
+        assert!(stderr.contains(key), "{link}: {stderr}");
+        assert!(!std::path::Path::new(&out).exists(), "{link} wrote a file");
     }
 }

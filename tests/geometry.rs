@@ -225,7 +225,7 @@ fn thick_walls_are_closed_solids_facing_outwards() {
 fn the_exported_stl_of_a_closed_wall_is_watertight() {
     let mut g = Generator::new(&turbinate()).unwrap();
     g.finish();
-    let count = common::watertight_stl_triangles(&stl::write(&g.snapshot()));
+    let count = common::watertight_stl_triangles(&stl::write(&g.snapshot()).unwrap());
     assert_eq!(count, g.snapshot().triangle_count());
 }
 
@@ -285,7 +285,7 @@ fn normals_are_unit_and_agree_with_the_triangles() {
 fn the_exported_obj_is_watertight_by_position_index() {
     let mut g = Generator::new(&turbinate()).unwrap();
     g.finish();
-    let text = String::from_utf8(obj::write(&g.snapshot())).unwrap();
+    let text = String::from_utf8(obj::write(&g.snapshot()).unwrap()).unwrap();
     let mut edges: HashMap<(u32, u32), usize> = HashMap::new();
     let mut faces = 0;
     for line in text.lines().filter(|l| l.starts_with("f ")) {

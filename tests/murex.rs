@@ -311,6 +311,19 @@ fn bad_values_get_messages_that_name_the_key() {
             "form.opening.ahead",
             Box::new(|s| implicit(s).opening.ahead = 100),
         ),
+        // Sizes that once made the shell grow to nothing, without a word.
+        (
+            "form.spiral.r0",
+            Box::new(|s| implicit(s).spiral.r0 = 1e-300),
+        ),
+        (
+            "form.generator.points",
+            Box::new(|s| implicit(s).generator.points[0][3] = 1e300),
+        ),
+        (
+            "form.generator.cones",
+            Box::new(|s| implicit(s).generator.cones[0][0] = -1e300),
+        ),
     ];
     for (key, spoil) in cases {
         let mut spec = base.clone();

@@ -1,6 +1,7 @@
 //! `seashells`: the native exporter on the same core as the page.
 //!
-//!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} [--resolution N]
+//!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl}
+//!                    [--resolution N] [--size MM]
 //!     seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv}
 //!                       [--cells N] [--rows N] [--iterations N]
 //!     seashells presets
@@ -8,10 +9,13 @@
 //!
 //! A wrong preset, link, option or extension gets one line on stderr and a non-zero exit.
 
+use seashells_core::export::job::Export;
+use seashells_core::export::print_size::PrintSize;
+use seashells_core::export::shell::Shell;
 use seashells_core::export::{self, MeshFormat};
 use seashells_core::generator::Generator;
 use seashells_core::pattern::run::PatternRun;
-use seashells_core::presets::{self, presets};
+use seashells_core::presets::{self, Preset, presets};
 use seashells_core::share::link;
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
@@ -20,7 +24,7 @@ use seashells_core::spec::form::Form;
 use std::collections::BTreeMap;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{obj,ply,stl} [--resolution N] | \
+const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl} [--resolution N] [--size MM] | \
 seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N] | \
 seashells presets | seashells bench";
 
@@ -55,15 +59,22 @@ impl Options {
 
     /// The spec named by --preset or --link (exactly one of them).
     fn spec(&self) -> Result<ShellSpec, String> {
+        self.preset_and_spec().map(|(_, spec)| spec)
+    }
+
+    /// The preset and the spec named by --preset or --link (exactly one of them).
+    fn preset_and_spec(&self) -> Result<(&'static Preset, ShellSpec), String> {
         match (self.get("preset"), self.get("link")) {
-            (Some(id), None) => presets::preset(id).map(|p| p.spec.clone()).ok_or_else(|| {
-                let ids: Vec<&str> = presets().iter().map(|p| p.id).collect();
-                format!("there is no preset '{id}' (presets: {})", ids.join(", "))
-            }),
+            (Some(id), None) => presets::preset(id)
+                .map(|p| (p, p.spec.clone()))
+                .ok_or_else(|| {
+                    let ids: Vec<&str> = presets().iter().map(|p| p.id).collect();
+                    format!("there is no preset '{id}' (presets: {})", ids.join(", "))
+                }),
             (None, Some(fragment)) => {
                 let decoded = link::decode(fragment);
                 if decoded.problems.is_empty() {
-                    Ok(decoded.spec)
+                    Ok((decoded.preset, decoded.spec))
                 } else {
                     let problems: Vec<String> =
                         decoded.problems.iter().map(ToString::to_string).collect();
@@ -89,24 +100,42 @@ fn write(path: &str, bytes: &[u8]) -> Result<(), String> {
 }
 
 fn mesh(args: &[String]) -> Result<String, String> {
-    let options = Options::parse(args, &["preset", "link", "out", "resolution"])?;
+    let options = Options::parse(args, &["preset", "link", "out", "resolution", "size"])?;
     let out = options.required("out")?;
     let format = MeshFormat::from_path(out)?;
-    let mut spec = options.spec()?;
+    let (preset, mut spec) = options.preset_and_spec()?;
     if let Some(n) = count(&options, "resolution", &spec, "form.resolution")? {
         let Form::Implicit(implicit) = &mut spec.form else {
             return Err("--resolution applies to implicit shells only".into());
         };
         implicit.resolution = n;
     }
+    let size = match options.get("size") {
+        None => PrintSize::default(),
+        Some(_) if !format.sized() => {
+            return Err("--size applies to .glb and .3mf files only".into());
+        }
+        Some(text) => {
+            let mm = text
+                .parse()
+                .map_err(|_| format!("--size takes a height in millimetres, not '{text}'"))?;
+            PrintSize::new(mm, "--size").map_err(|e| e.to_string())?
+        }
+    };
     let generator = grown(&spec)?;
-    let mesh = generator.snapshot();
-    write(out, &format.write(&mesh))?;
+    let shell = Shell::new(&generator, &spec, preset, size).map_err(|e| e.to_string())?;
+    let (vertices, triangles, hash) = (
+        shell.mesh.vertices.len(),
+        shell.mesh.triangle_count(),
+        shell.mesh.content_hash(),
+    );
+    let bytes = Export::new(format, shell)
+        .and_then(Export::run)
+        .map_err(|e| e.to_string())?;
+    write(out, &bytes)?;
     Ok(format!(
-        "wrote {out}: {} vertices, {} triangles, hash {:016x}",
-        mesh.vertices.len(),
-        mesh.triangle_count(),
-        mesh.content_hash()
+        "wrote {out}: {vertices} vertices, {triangles} triangles, hash {hash:016x}, {} bytes",
+        bytes.len()
     ))
 }
 

@@ -1,75 +1,106 @@
-//! Writing what the core grows to files: meshes as OBJ, binary PLY or binary STL, and patterns
-//! as PNG or CSV, chosen by the file's extension; recorded growth as WebM.
+//! Writing what the core grows to files: meshes as GLB (glTF 2.0 binary, the pattern as a
+//! texture), PLY (vertex colours), 3MF (colour printing), OBJ or STL, and patterns as PNG or
+//! CSV, chosen by the file's extension; recorded growth as WebM. Every mesh and pattern file is
+//! written in resumable steps ([`job::Export`]), so the page spreads a large export over frames.
 
+mod bodies;
 pub mod csv;
+pub mod error;
+pub mod estimate;
+mod glb;
+pub mod job;
 pub mod obj;
-pub mod ply;
+pub mod paint;
+mod placement;
+mod ply;
 pub mod png;
+pub mod print_size;
+pub mod shell;
+pub mod steps;
 pub mod stl;
+mod three_mf;
 pub mod webm;
 pub(crate) mod weld;
-
-use crate::mesh::Mesh;
+mod zip;
 
 /// A mesh file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MeshFormat {
-    Obj,
+    Glb,
     Ply,
+    ThreeMf,
+    Obj,
     Stl,
 }
 
 impl MeshFormat {
+    /// Every format, in the order the page offers them.
+    pub const ALL: [MeshFormat; 5] = [
+        MeshFormat::Glb,
+        MeshFormat::Ply,
+        MeshFormat::ThreeMf,
+        MeshFormat::Obj,
+        MeshFormat::Stl,
+    ];
+
     /// The format a file name's extension asks for.
     pub fn from_path(path: &str) -> Result<Self, String> {
         let ext = path.rsplit_once('.').map(|(_, e)| e.to_ascii_lowercase());
-        match ext.as_deref() {
-            Some("obj") => Ok(Self::Obj),
-            Some("ply") => Ok(Self::Ply),
-            Some("stl") => Ok(Self::Stl),
-            _ => Err(format!("'{path}' should end in .obj, .ply or .stl")),
-        }
+        Self::ALL
+            .into_iter()
+            .find(|f| ext.as_deref() == Some(f.extension()))
+            .ok_or_else(|| format!("'{path}' should end in .glb, .ply, .3mf, .obj or .stl"))
     }
 
-    /// The mesh in this format.
-    pub fn write(self, mesh: &Mesh) -> Vec<u8> {
-        match self {
-            Self::Obj => obj::write(mesh),
-            Self::Ply => ply::write(mesh),
-            Self::Stl => stl::write(mesh),
-        }
-    }
-}
-
-impl MeshFormat {
     /// The file name's extension for this format.
     pub fn extension(self) -> &'static str {
         match self {
-            Self::Obj => "obj",
+            Self::Glb => "glb",
             Self::Ply => "ply",
+            Self::ThreeMf => "3mf",
+            Self::Obj => "obj",
             Self::Stl => "stl",
         }
+    }
+
+    /// The file's media type.
+    pub fn mime(self) -> &'static str {
+        match self {
+            Self::Glb => "model/gltf-binary",
+            Self::Ply => "application/x-ply",
+            Self::ThreeMf => "model/3mf",
+            Self::Obj => "model/obj",
+            Self::Stl => "model/stl",
+        }
+    }
+
+    /// Whether the file carries the shell's size (3MF in millimetres, GLB in metres).
+    pub fn sized(self) -> bool {
+        matches!(self, Self::Glb | Self::ThreeMf)
     }
 }
 
 /// A file the page offers to download for the shell shown.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Download {
+    /// The mesh grown so far.
+    Mesh(MeshFormat),
     /// The view as drawn, as PNG.
     Picture,
     /// The planar pattern, as PNG.
     Pattern,
-    /// The mesh grown so far.
-    Mesh(MeshFormat),
 }
 
 impl Download {
     /// Every download the page offers, in the order of its buttons.
-    pub const ALL: [Download; 4] = [
-        Download::Picture,
-        Download::Pattern,
+    pub const ALL: [Download; 7] = [
+        Download::Mesh(MeshFormat::Glb),
+        Download::Mesh(MeshFormat::Ply),
+        Download::Mesh(MeshFormat::ThreeMf),
         Download::Mesh(MeshFormat::Obj),
         Download::Mesh(MeshFormat::Stl),
+        Download::Picture,
+        Download::Pattern,
     ];
 
     /// Its name, which names its button on the page (`download-NAME`).
@@ -102,9 +133,11 @@ mod tests {
             Download::ALL.iter().map(|d| d.file_name("oliva")).collect();
         assert_eq!(names.len(), Download::ALL.len());
         assert_eq!(files.len(), Download::ALL.len());
-        for format in [MeshFormat::Obj, MeshFormat::Ply, MeshFormat::Stl] {
+        for format in MeshFormat::ALL {
             let file = Download::Mesh(format).file_name("oliva");
             assert_eq!(MeshFormat::from_path(&file), Ok(format), "{file}");
         }
+        assert_eq!(Download::ALL[0], Download::Mesh(MeshFormat::Glb));
+        assert!(MeshFormat::from_path("shell.gltf").is_err());
     }
 }

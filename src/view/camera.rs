@@ -35,6 +35,19 @@ pub fn display_from_shell() -> Mat4 {
     Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2)
 }
 
+/// The yaw (radians, about the display's vertical, from its +z) from which the page first sees
+/// a shell whose opening faces `front` (a direction in shell space); the exporters turn files
+/// to face the same way. `libm`, so that native and wasm agree bit for bit.
+pub fn facing(front: DVec3) -> f64 {
+    // Display space is shell space turned by 90° about x: display x is shell x, display z is
+    // shell y.
+    if front.x == 0.0 && front.y == 0.0 {
+        0.0
+    } else {
+        libm::atan2(front.x, front.y)
+    }
+}
+
 /// An orbit around the fully grown shell's centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OrbitCamera {
@@ -58,14 +71,8 @@ impl OrbitCamera {
     /// Frames `bounds`, seen from `front` (a direction in shell space, e.g. where the opening
     /// faces), turned by `yaw` and raised by `pitch` (radians).
     pub fn framing(bounds: &Bounds, front: DVec3, yaw: f32, pitch: f32) -> Self {
-        let display = display_from_shell();
-        let target = display.transform_point3(bounds.center().as_vec3());
-        let f = display.transform_vector3(front.as_vec3());
-        let facing = if f.x == 0.0 && f.z == 0.0 {
-            0.0
-        } else {
-            f.x.atan2(f.z)
-        };
+        let target = display_from_shell().transform_point3(bounds.center().as_vec3());
+        let facing = facing(front) as f32;
         let default_pitch = (DEFAULT_PITCH + pitch).clamp(-1.48, 1.48);
         let radius = (bounds.radius() as f32).max(1e-6);
         Self {

@@ -12,7 +12,7 @@
 //! (video frames captured).
 
 use super::dom;
-use super::download;
+use super::download::Downloads;
 use super::gallery::Pictures;
 use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
@@ -20,7 +20,7 @@ use super::panel::{Change, OnChange, Panel};
 use super::record::{self, Recording, Step, Support};
 use super::share;
 use super::viewer::{Viewer, now};
-use crate::export::{self, Download};
+use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
@@ -44,6 +44,7 @@ pub struct App {
     viewer: Viewer,
     pictures: Pictures,
     map: MapView,
+    downloads: Downloads,
     current: Option<(&'static Preset, ShellSpec)>,
     /// How the link asks the page to show the shell: one view or four, the interface.
     presentation: Presentation,
@@ -93,6 +94,7 @@ impl App {
             viewer,
             pictures,
             map: MapView::default(),
+            downloads: Downloads::default(),
             current: None,
             presentation: Presentation::default(),
             panel: None,
@@ -526,33 +528,10 @@ impl App {
         }
     }
 
-    /// Offers a download of the shell shown.
+    /// Starts a download of the shell shown (written over the next frames).
     pub fn download(&mut self, what: Download) {
-        let Some(g) = self.viewer.growing() else {
-            return;
-        };
-        let name = what.file_name(g.preset.id);
-        let result = match what {
-            Download::Pattern => match g.generator.pattern() {
-                Some(p) => download::offer(
-                    &name,
-                    "image/png",
-                    &export::png::encode(p.cells(), p.rows(), p.rgba()),
-                ),
-                None => Err("this shell has no pattern".into()),
-            },
-            Download::Mesh(format) => {
-                let bytes = format.write(&g.generator.snapshot());
-                download::offer(&name, "application/octet-stream", &bytes)
-            }
-            Download::Picture => self
-                .viewer
-                .picture()
-                .and_then(|url| download::offer_url(&name, &url)),
-        };
-        if let Err(e) = result {
-            show_message(&format!("The download could not be made: {e}."));
-        }
+        self.downloads
+            .start(what, &mut self.viewer, self.current.as_ref());
     }
 
     /// Stops the page on a failure it cannot recover from; the frame loop says why.
@@ -565,6 +544,7 @@ impl App {
         if let Some(failure) = &self.failure {
             return Err(failure.clone());
         }
+        self.downloads.work();
         if self.recording.is_some() {
             self.record_frame();
             return Ok(());
@@ -608,6 +588,7 @@ impl App {
             bar.set_value(done as f64);
         }
         set_text("progress-text", &format!("{done} of {total} rows"));
+        self.downloads.show_sizes(&self.viewer);
         if let Some(failure) = g.generator.failure() {
             show_message(failure);
             signal("state", "stopped");

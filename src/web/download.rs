@@ -1,11 +1,239 @@
-//! Offering bytes made by the core as a file download.
+//! The download menu: every file the page offers for the shell shown (GLB first, then PLY,
+//! 3MF, OBJ, STL, the picture and the pattern), each with its size, and the height that GLB
+//! and 3MF files are made at. A file is written by the core in steps ([`Export`]), a frame's
+//! budget at a time, so that the page never freezes, with a progress bar while it takes
+//! longer than a frame; then it is offered as a download. What cannot be exported (nothing
+//! grown yet, a shell that stopped, an open surface as 3MF, a height out of bounds) is said
+//! in words. `<body data-download>`: writing, offered, refused (empty before any).
 
+use super::page::{self, element, set_text, show_message, signal};
+use super::viewer::{Viewer, now};
+use crate::export::Download;
+use crate::export::estimate::{Counts, Size};
+use crate::export::job::Export;
+use crate::export::print_size::PrintSize;
+use crate::export::shell::Shell;
+use crate::generator::within;
+use crate::presets::Preset;
+use crate::spec::ShellSpec;
 use wasm_bindgen::JsCast;
-use web_sys::{Blob, BlobPropertyBag, HtmlAnchorElement, Url};
+use web_sys::{
+    Blob, BlobPropertyBag, HtmlAnchorElement, HtmlButtonElement, HtmlInputElement,
+    HtmlProgressElement, Url,
+};
+
+/// Milliseconds of a frame an export may take.
+const EXPORT_BUDGET_MS: f64 = 8.0;
+/// Least time between two updates of the sizes shown while the shell grows.
+const SIZES_EVERY_MS: f64 = 500.0;
+/// What the height field is called in messages.
+const HEIGHT: &str = "Height";
+
+/// A file being written.
+struct Job {
+    export: Export,
+    name: String,
+    mime: &'static str,
+    what: Download,
+    /// The longest step lately (see [`within`]).
+    longest: f64,
+}
+
+/// The download menu and the file under way.
+#[derive(Default)]
+pub struct Downloads {
+    job: Option<Job>,
+    /// The counts the sizes shown were estimated from, and when.
+    shown: Option<(Counts, f64)>,
+}
+
+impl Downloads {
+    /// Starts the download `what` of the shell `viewer` shows (`current`: its preset and
+    /// spec); a message says why when it cannot be made.
+    pub fn start(
+        &mut self,
+        what: Download,
+        viewer: &mut Viewer,
+        current: Option<&(&'static Preset, ShellSpec)>,
+    ) {
+        if self.job.is_some() {
+            return;
+        }
+        if let Err(e) = self.begin(what, viewer, current) {
+            signal("download", "refused");
+            show_message(&format!("The download could not be made: {e}."));
+        }
+    }
+
+    fn begin(
+        &mut self,
+        what: Download,
+        viewer: &mut Viewer,
+        current: Option<&(&'static Preset, ShellSpec)>,
+    ) -> Result<(), String> {
+        let (Some(g), Some((preset, spec))) = (viewer.growing(), current) else {
+            return Err("no shell is shown".into());
+        };
+        let name = what.file_name(g.preset.id);
+        let (export, mime) = match what {
+            Download::Picture => {
+                let url = viewer.picture()?;
+                signal("download", "offered");
+                return offer_url(&name, &url);
+            }
+            Download::Pattern => {
+                let p = g.generator.pattern().ok_or("this shell has no pattern")?;
+                let export = Export::pattern(p.cells(), p.rows(), p.rgba().to_vec());
+                (export, "image/png")
+            }
+            Download::Mesh(format) => {
+                let size = if format.sized() {
+                    height()?
+                } else {
+                    PrintSize::default()
+                };
+                let shell =
+                    Shell::new(&g.generator, spec, preset, size).map_err(|e| e.to_string())?;
+                let export = Export::new(format, shell).map_err(|e| e.to_string())?;
+                (export, format.mime())
+            }
+        };
+        page::hide_message();
+        signal("download", "writing");
+        set_buttons_enabled(false);
+        self.job = Some(Job {
+            export,
+            name,
+            mime,
+            what,
+            longest: 0.0,
+        });
+        Ok(())
+    }
+
+    /// Writes the file under way for this frame's budget; offers it once it is whole.
+    pub fn work(&mut self) {
+        let Some(job) = &mut self.job else {
+            return;
+        };
+        let result = job
+            .export
+            .work(within(now, EXPORT_BUDGET_MS, &mut job.longest));
+        let offered = match result {
+            Ok(None) => {
+                show_progress(Some((&job.name, job.export.progress())));
+                return;
+            }
+            Ok(Some(bytes)) => {
+                set_size(job.what, &format!("{} MB", megabytes(bytes.len() as f64)));
+                offer(&job.name, job.mime, &bytes)
+            }
+            Err(e) => Err(e.to_string()),
+        };
+        show_progress(None);
+        set_buttons_enabled(true);
+        match offered {
+            Ok(()) => signal("download", "offered"),
+            Err(e) => {
+                signal("download", "refused");
+                show_message(&format!("The download could not be made: {e}."));
+            }
+        }
+        self.job = None;
+    }
+
+    /// Shows each file's size for the shell `viewer` shows, when it has changed (at most every
+    /// half second while the shell grows).
+    pub fn show_sizes(&mut self, viewer: &Viewer) {
+        let Some(g) = viewer.growing() else {
+            return;
+        };
+        let (mesh, edge) = (g.generator.mesh(), g.generator.edge());
+        let canvas = viewer.canvas();
+        let counts = Counts {
+            vertices: mesh.vertices.len() + edge.vertices.len(),
+            triangles: mesh.triangle_count() + edge.triangle_count(),
+            pattern: g.generator.pattern().map(|p| (p.cells(), p.rows())),
+            picture: (canvas.width() as usize, canvas.height() as usize),
+        };
+        let t = now();
+        if self.shown.is_some_and(|(c, at)| {
+            c == counts || (!g.generator.is_done() && t - at < SIZES_EVERY_MS)
+        }) || self.job.is_some()
+        {
+            return;
+        }
+        self.shown = Some((counts, t));
+        for what in Download::ALL {
+            let text = match what.estimate(&counts) {
+                Some(Size::Bytes(bytes)) => format!("≈ {} MB", megabytes(bytes as f64)),
+                Some(Size::Pixels(w, h)) => format!("{w} × {h}"),
+                None => "none".to_string(),
+            };
+            set_size(what, &text);
+        }
+    }
+}
+
+/// Bytes in megabytes, to two significant figures (three from 10 MB).
+fn megabytes(bytes: f64) -> String {
+    let mb = bytes / 1e6;
+    if mb >= 10.0 {
+        format!("{mb:.0}")
+    } else if mb >= 0.1 {
+        format!("{mb:.1}")
+    } else {
+        format!("{mb:.2}")
+    }
+}
+
+/// The height the field asks for, refused out of bounds by name.
+fn height() -> Result<PrintSize, String> {
+    let input = element("download-height").and_then(|e| e.dyn_into::<HtmlInputElement>().ok());
+    let mm = input.map_or(PrintSize::DEFAULT_MM, |i| i.value_as_number());
+    PrintSize::new(mm, HEIGHT).map_err(|e| e.to_string())
+}
+
+fn set_size(what: Download, text: &str) {
+    set_text(&format!("size-{}", what.name()), text);
+}
+
+fn set_buttons_enabled(enabled: bool) {
+    for what in Download::ALL {
+        if let Some(b) = element(&format!("download-{}", what.name()))
+            .and_then(|e| e.dyn_into::<HtmlButtonElement>().ok())
+        {
+            b.set_disabled(!enabled);
+        }
+    }
+}
+
+/// Shows the progress of the file `name` (from 0 to 1), or hides it.
+fn show_progress(progress: Option<(&str, f64)>) {
+    let bar = element("download-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok());
+    match progress {
+        Some((name, done)) => {
+            if let Some(bar) = bar {
+                bar.set_value(done);
+                bar.set_hidden(false);
+            }
+            set_text(
+                "download-status",
+                &format!("Writing {name}… {:.0} %", done * 100.0),
+            );
+        }
+        None => {
+            if let Some(bar) = bar {
+                bar.set_hidden(true);
+            }
+            set_text("download-status", "");
+        }
+    }
+}
 
 /// Starts the download of the resource at `url` (an object or data URL) as `name`.
 pub fn offer_url(name: &str, url: &str) -> Result<(), String> {
-    let anchor: HtmlAnchorElement = super::page::document()
+    let anchor: HtmlAnchorElement = page::document()
         .create_element("a")
         .map_err(|_| "cannot create a link".to_string())?
         .dyn_into()

@@ -1,22 +1,29 @@
 """Meshes the command line exports, checked by a mesh library nobody here wrote (trimesh):
 every exported body closed (watertight after merging vertices), consistently wound, facing
 outwards (positive volume), and as many bodies as are meant: one for a shell, one per branch
-(the stem counted as one) for Kawaguchi's branching forms."""
+(the stem counted as one) for Kawaguchi's branching forms. The 3MF files hold one object per
+body, each closed, at the height asked for in millimetres, the same solid as the STL, with the
+PLY's colours at its vertices."""
 
 import glob
 import json
 import os
-import subprocess
-import tempfile
 import unittest
+import zipfile
 
 import trimesh
+from lxml import etree
 
-SEASHELLS = os.environ.get("SEASHELLS", "target/release/seashells")
+from cli import export
+
 SPECIES = os.path.join(os.path.dirname(__file__), "..", "..", "species")
 
 # One preset of each form that is one closed body.
 ONE_BODY = ["turbinate", "oliva-porphyria", "kawaguchi-shell", "kawaguchi-horn", "implicit-whorl"]
+
+# A preset of each form whose 3MF is checked, with the Murex at its own resolution (its spine
+# tips make a few bodies of their own there) and a branching form of 17 tubes.
+PRINTED = ONE_BODY + ["kawaguchi-painted", "kawaguchi-tendril", "murex-cabritii"]
 
 # The bodies of each branching preset: its stem and its branches, each one closed tube, as its
 # tree grows them (tests/branching.rs checks that the mesh has one body per branch of the tree).
@@ -39,16 +46,33 @@ def presets_of_kind(kind):
     return ids
 
 
-def export(preset, extension, *options):
-    """Writes `preset` with `seashells mesh` and returns the file's path."""
-    folder = tempfile.mkdtemp(prefix="seashells-files-")
-    path = os.path.join(folder, f"{preset}.{extension}")
-    subprocess.run(
-        [SEASHELLS, "mesh", "--preset", preset, "--out", path, *options],
-        check=True,
-        capture_output=True,
-    )
-    return path
+CORE = "{http://schemas.microsoft.com/3dmanufacturing/core/2015/02}"
+MATERIAL = "{http://schemas.microsoft.com/3dmanufacturing/material/2015/02}"
+
+
+def model(path):
+    """The 3MF's model part, parsed."""
+    with zipfile.ZipFile(path) as package:
+        return etree.fromstring(package.read("3D/3dmodel.model"))
+
+
+def vertex_colours(root):
+    """The colour (r, g, b) of every vertex of every object, in order, from the triangles'
+    p1, p2 and p3 indices into the colour group."""
+    group = root.find(f"{CORE}resources/{MATERIAL}colorgroup")
+    palette = [tuple(int(c.get("color")[i:i + 2], 16) for i in (1, 3, 5)) for c in group]
+    colours = []
+    for obj in root.iter(f"{CORE}object"):
+        own = [None] * len(obj.find(f"{CORE}mesh/{CORE}vertices"))
+        for t in obj.iter(f"{CORE}triangle"):
+            p1 = t.get("p1")
+            for v, p in (("v1", p1), ("v2", t.get("p2", p1)), ("v3", t.get("p3", p1))):
+                colour = palette[int(p)]
+                i = int(t.get(v))
+                assert own[i] in (None, colour), f"vertex {i} has two colours"
+                own[i] = colour
+        colours.extend(own)
+    return palette, colours
 
 
 class Solids(unittest.TestCase):
@@ -83,6 +107,55 @@ class Solids(unittest.TestCase):
         for preset in presets:
             with self.subTest(preset=preset):
                 self.assert_closed_outward_bodies(preset, BRANCHES[preset])
+
+
+class ThreeMf(unittest.TestCase):
+    def test_one_closed_object_per_body_at_80_mm_the_same_solid_as_the_stl(self):
+        for preset in PRINTED:
+            with self.subTest(preset=preset):
+                path = export(preset, "3mf")
+                scene = trimesh.load(path)
+                objects = list(scene.geometry.values())
+                for body in objects:
+                    self.assertTrue(body.is_watertight, f"{preset}: an object is not watertight")
+                    self.assertTrue(body.is_winding_consistent, f"{preset}: wound inconsistently")
+                    self.assertGreater(body.volume, 0, f"{preset}: an object faces inwards")
+                low, high = scene.bounds
+                self.assertAlmostEqual(low[2], 0.0, places=3)
+                self.assertAlmostEqual(high[2] - low[2], 80.0, places=3)
+                stl = trimesh.load(export(preset, "stl"), force="mesh")
+                bodies = stl.split(only_watertight=False)
+                self.assertEqual(len(objects), len(bodies), f"{preset}: objects and bodies")
+                # The shell's axis is z in the STL too: scaled to 80 mm, the same volume.
+                scale = 80.0 / (stl.bounds[1][2] - stl.bounds[0][2])
+                volume = sum(b.volume for b in objects)
+                self.assertAlmostEqual(volume / (stl.volume * scale**3), 1.0, places=4)
+                print(f"\n{preset}: {os.path.getsize(path)} bytes, {len(objects)} objects, "
+                      f"{sum(len(b.faces) for b in objects)} triangles, {volume:.0f} mm³")
+
+    def test_the_size_chosen_is_the_height(self):
+        scene = trimesh.load(export("kawaguchi-horn", "3mf", "--size", "120"))
+        low, high = scene.bounds
+        self.assertAlmostEqual(high[2] - low[2], 120.0, places=3)
+        root = model(export("kawaguchi-horn", "3mf"))
+        self.assertEqual(root.get("unit"), "millimeter")
+
+    def test_vertices_carry_the_plys_colours(self):
+        for preset in ["oliva-porphyria", "implicit-whorl"]:
+            with self.subTest(preset=preset):
+                palette, colours = vertex_colours(model(export(preset, "3mf")))
+                ply = trimesh.load(export(preset, "ply"), process=False)
+                expected = [tuple(c) for c in ply.visual.vertex_colors[:, :3].astype(int).tolist()]
+                self.assertEqual(len(colours), len(expected))
+                self.assertEqual(colours, expected)
+                self.assertGreater(len(set(palette)), 1000)
+
+    def test_a_shell_without_a_pattern_has_its_ground_and_interior_colours(self):
+        with open(os.path.join(SPECIES, "kawaguchi-shell.json"), encoding="utf-8") as f:
+            colours = json.load(f)["spec"]["colours"]
+        palette, _ = vertex_colours(model(export("kawaguchi-shell", "3mf")))
+        hexes = {"%02x%02x%02x" % c for c in palette}
+        self.assertEqual(hexes, {colours["ground"], colours["interior"]})
 
 
 if __name__ == "__main__":

@@ -67,7 +67,7 @@ test('an implicit shell grows in wasm into the very mesh the command line writes
       const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
       const grown = await waitForState(page, ['grown']);
       const out = execFileSync(CLI, ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
-      assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}$`, 'm'),
+      assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}, \\d+ bytes$`, 'm'),
         `${link}: wasm ${grown.mesh} ${grown.meshHash}, native ${out}`);
       assert.deepEqual(errors, []);
       await page.close();
@@ -88,6 +88,9 @@ test('bad implicit numbers in a link get a message naming the key, and the shell
       [`${canal}&form.resolution=5000`, 'form.resolution'],
       [`${murex}&form.varices.bend=500`, 'form.varices.bend'],
       [`${murex}&form.canal_spines.spines=7,1`, 'form.canal_spines.spines'],
+      // Once grew to nothing without a word.
+      [`${murex}&form.generator.points=0,0,0,1e300`, 'form.generator.points'],
+      [`${murex}&form.spiral.r0=1e-300`, 'form.spiral.r0'],
       ['preset=murex-rd-spines&form.resolution=40&pattern.model.kind=none', 'form.varices.placement'],
     ]) {
       const { page, errors } = await open(browser, `${base}#v=1&${link}&growth.speed=200`);

@@ -29,10 +29,13 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             format!("β must lie strictly between 0° and 90°, not {}°", h.beta),
         ));
     }
-    if h.r0 <= 0.0 || h.r0.is_nan() {
+    if !(MIN_R0..=MAX_R0).contains(&h.r0) {
         return Err(ShapeError::new(
             "form.spiral.r0",
-            format!("R₀ must be positive, not {}", h.r0),
+            format!(
+                "R₀ must lie from {MIN_R0:e} to {MAX_R0:e}, not {:e}: the shell would be too small or too large for its field to be computed, and would grow to nothing",
+                h.r0
+            ),
         ));
     }
     if spec.whorls == 0 || spec.sections == 0 || spec.surfaces == 0 {
@@ -88,6 +91,16 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
     Ok(())
 }
 
+/// The smallest and largest R₀: beyond them the shell's sizes underflow or overflow the
+/// field's arithmetic (a squared radius of 10⁻⁶⁰⁰ is zero), and the shell would be empty.
+pub const MIN_R0: f64 = 1e-6;
+pub const MAX_R0: f64 = 1e6;
+/// The largest radius or distance from its centre a part of a generating surface may have,
+/// and the smallest radius, in units of the generating surface's size D: beyond them a part
+/// is either lost in the arithmetic or swallows the whole shell, which grows to nothing.
+pub const MAX_PART: f64 = 100.0;
+pub const MIN_PART: f64 = 1e-4;
+
 /// Most spines in the table of a varix's spines, and in the canal spines' table.
 pub const MAX_SPINES: usize = 1024;
 /// Most sets of bumps between two varices.
@@ -97,6 +110,36 @@ pub const MAX_AHEAD: u32 = 16;
 
 fn parts(g: &GeneratorSpec) -> usize {
     g.points.len() + g.cones.len() + g.tori.len()
+}
+
+/// A radius of a part of a generating surface: within [`MIN_PART`, `MAX_PART`].
+fn part_radius(key: &str, x: f64, what: &str) -> Result<(), ShapeError> {
+    if (MIN_PART..=MAX_PART).contains(&x) {
+        Ok(())
+    } else {
+        Err(ShapeError::new(
+            key,
+            format!(
+                "{what} must lie from {MIN_PART} to {MAX_PART} (units of the generating surface's size D), not {x:e}: the shell would grow to nothing"
+            ),
+        ))
+    }
+}
+
+/// A position of a part of a generating surface: within [`MAX_PART`] of its centre.
+fn part_position(key: &str, coordinates: &[f64]) -> Result<(), ShapeError> {
+    match coordinates
+        .iter()
+        .find(|c| c.is_nan() || c.abs() > MAX_PART)
+    {
+        None => Ok(()),
+        Some(c) => Err(ShapeError::new(
+            key,
+            format!(
+                "a part must lie within {MAX_PART} (units of D) of the generating surface's centre, not at {c:e}"
+            ),
+        )),
+    }
 }
 
 fn positive(key: &str, x: f64, what: &str) -> Result<(), ShapeError> {
@@ -249,11 +292,13 @@ fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), ShapeError> {
         ));
     }
     for p in &g.points {
-        positive(&key("points"), p[3], "a point's radius")?;
+        part_position(&key("points"), &p[..3])?;
+        part_radius(&key("points"), p[3], "a point's radius")?;
     }
     for c in &g.cones {
-        positive(&key("cones"), c[6], "a cone's radius")?;
-        positive(&key("cones"), c[7], "a cone's radius")?;
+        part_position(&key("cones"), &c[..6])?;
+        part_radius(&key("cones"), c[6], "a cone's radius")?;
+        part_radius(&key("cones"), c[7], "a cone's radius")?;
         let length = DVec3::new(c[3] - c[0], c[4] - c[1], c[5] - c[2]).length();
         positive(&key("cones"), length, "a cone's length")?;
         if c[8].abs() > MAX_BEND_DEGREES {
@@ -276,8 +321,9 @@ fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), ShapeError> {
         }
     }
     for t in &g.tori {
-        positive(&key("tori"), t[3], "a torus's major radius")?;
-        positive(&key("tori"), t[4], "a torus's radius")?;
+        part_position(&key("tori"), &t[..3])?;
+        part_radius(&key("tori"), t[3], "a torus's major radius")?;
+        part_radius(&key("tori"), t[4], "a torus's radius")?;
     }
     if !(g.exponent >= 1.0 && g.exponent <= 400.0) {
         return Err(ShapeError::new(

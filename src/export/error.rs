@@ -1,0 +1,55 @@
+//! Why a file cannot be exported, in words that name what to change.
+
+use std::fmt;
+
+/// Why an export was refused.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExportError {
+    /// Nothing has grown that has a surface: no triangles, or only collapsed ones.
+    Empty,
+    /// Growth stopped early; the message says why.
+    Failed(String),
+    /// A closed solid was needed (3MF, for printing) and the surface is open: a swept shell
+    /// with no wall is a single surface.
+    Open { key: &'static str },
+    /// The print size (mm) is outside what makes sense.
+    Size {
+        key: &'static str,
+        mm: f64,
+        min: f64,
+        max: f64,
+    },
+}
+
+impl fmt::Display for ExportError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ExportError::Empty => write!(
+                f,
+                "there is nothing to export yet: the shell has no surface (let it grow first)"
+            ),
+            ExportError::Failed(why) => write!(
+                f,
+                "this shell stopped growing before its end, so there is no whole shell to \
+                 export ({})",
+                why.trim_end_matches('.')
+            ),
+            ExportError::Open { key } => write!(
+                f,
+                "3MF holds closed solids for printing, and this shell is an open surface: give \
+                 it a wall ({key} above 0)"
+            ),
+            ExportError::Size { key, mm, min, max } if mm.is_finite() => write!(
+                f,
+                "{key}: {mm} mm is outside the heights an exported shell may have, {min} to \
+                 {max} mm"
+            ),
+            ExportError::Size { key, min, max, .. } => write!(
+                f,
+                "{key}: give the exported shell's height in millimetres, from {min} to {max}"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ExportError {}

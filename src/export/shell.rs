@@ -1,0 +1,62 @@
+//! What an export reads: the shell as it stands (its mesh, the growing edge's closure
+//! included), how it is painted, its material, the way the page first sees it, its name, and
+//! the size asked for. Taken in one go when the export starts, so that growth may go on (or
+//! restart) while the file is written.
+
+use super::error::ExportError;
+use super::paint::{Paint, PatternImage};
+use super::print_size::PrintSize;
+use crate::generator::Generator;
+use crate::mesh::Mesh;
+use crate::presets::Preset;
+use crate::spec::ShellSpec;
+use crate::view::camera::facing;
+
+/// A shell to export.
+pub struct Shell {
+    pub mesh: Mesh,
+    pub paint: Paint,
+    /// The material's roughness for glTF (see [`roughness`]).
+    pub roughness: f32,
+    /// The yaw (radians, about the vertical of the shell shown apex up) of the page's first
+    /// view: files are turned so that a viewer's front view (from +z, y up) shows it.
+    pub facing: f64,
+    /// The preset's name.
+    pub title: String,
+    pub size: PrintSize,
+}
+
+impl Shell {
+    /// The shell `generator` has grown so far from `spec` (a variant of `preset`); refused
+    /// when it has no surface yet or growth stopped on a failure.
+    pub fn new(
+        generator: &Generator,
+        spec: &ShellSpec,
+        preset: &Preset,
+        size: PrintSize,
+    ) -> Result<Self, ExportError> {
+        if let Some(why) = generator.failure() {
+            return Err(ExportError::Failed(why.to_string()));
+        }
+        let mesh = generator.snapshot();
+        if mesh.triangle_count() == 0 {
+            return Err(ExportError::Empty);
+        }
+        let (_, front) = generator.framing();
+        Ok(Self {
+            mesh,
+            paint: Paint::new(&spec.colours, generator.pattern().map(PatternImage::from)),
+            roughness: roughness(spec.material.gloss),
+            facing: facing(front) + f64::from(preset.view.yaw).to_radians(),
+            title: preset.name.clone(),
+            size,
+        })
+    }
+}
+
+/// The roughness of a glTF metallic-roughness material for the spec's gloss (0 to 1): from
+/// 0.9, a matte surface whose highlights spread wide, to 0.15 for the full polish the page
+/// shows with sharp reflections of its studio (Oliva and Conus, 0.9, get 0.225).
+pub fn roughness(gloss: f64) -> f32 {
+    (0.9 - 0.75 * gloss.clamp(0.0, 1.0)) as f32
+}
