@@ -9,10 +9,10 @@ use crate::blobtree::polygonize::ChunkWork;
 use crate::forms::{PieceMaker, piece_maker};
 use crate::generator::{Advance, Generator, within};
 use crate::mesh::{Bounds, Mesh};
+use crate::pattern::run::PatternRun;
 use crate::share::link;
 use crate::share::parameter_map::TileWork;
 use crate::spec::ShellSpec;
-use crate::pattern::run::PatternRun;
 use crate::view::preview::{Preview, PreviewState};
 use std::collections::VecDeque;
 
@@ -37,18 +37,9 @@ struct Growth {
 
 /// A job under way, kept between calls when the budget runs out.
 enum Job {
-    Pieces {
-        job: u32,
-        work: ChunkWork,
-    },
-    Whole {
-        job: u32,
-        generator: Box<Generator>,
-    },
-    Tile {
-        job: u32,
-        work: TileWork,
-    },
+    Pieces { job: u32, work: Box<ChunkWork> },
+    Whole { job: u32, generator: Box<Generator> },
+    Tile { job: u32, work: TileWork },
 }
 
 /// A worker's state: its sessions, the jobs waiting, and the pieces' maker of the last shell
@@ -212,10 +203,9 @@ impl Host {
                 budget_ms,
             } => match &mut self.growth {
                 Some(g) if g.session == session => {
-                    let advance = g.generator.advance_while(
-                        rows as usize,
-                        within(now, budget_ms, &mut g.longest),
-                    );
+                    let advance = g
+                        .generator
+                        .advance_while(rows as usize, within(now, budget_ms, &mut g.longest));
                     Reply::Grew {
                         session,
                         delta: g.delta(&advance),
@@ -365,23 +355,21 @@ impl Host {
                 let (_, maker) = self.maker.as_ref().expect("made above");
                 return Err(Job::Pieces {
                     job,
-                    work: maker.start(step, &ids),
+                    work: Box::new(maker.start(step, &ids)),
                 });
             }
-            Request::Whole { job, link } => {
-                match Generator::new(&spec_of(&link)) {
-                    Ok(generator) => {
-                        return Err(Job::Whole {
-                            job,
-                            generator: Box::new(generator),
-                        });
-                    }
-                    Err(e) => Reply::Grown {
+            Request::Whole { job, link } => match Generator::new(&spec_of(&link)) {
+                Ok(generator) => {
+                    return Err(Job::Whole {
                         job,
-                        result: Err(format!("This shell cannot be built: {e}")),
-                    },
+                        generator: Box::new(generator),
+                    });
                 }
-            }
+                Err(e) => Reply::Grown {
+                    job,
+                    result: Err(format!("This shell cannot be built: {e}")),
+                },
+            },
             Request::Tile { job, link, rows } => {
                 match TileWork::new(&spec_of(&link), rows as usize) {
                     Ok(work) => return Err(Job::Tile { job, work }),
@@ -410,7 +398,7 @@ impl Host {
                 if !maker.work(&mut work, keep_going) {
                     return Err(Job::Pieces { job, work });
                 }
-                let meshes = maker.finished(work);
+                let meshes = maker.finished(*work);
                 let hash = hash_of(&meshes);
                 Ok(Reply::Made { job, meshes, hash })
             }
@@ -423,7 +411,9 @@ impl Host {
                 if !generator.is_done() {
                     return Err(Job::Whole { job, generator });
                 }
-                let rgba = generator.pattern().map_or(Vec::new(), |p| p.rgba().to_vec());
+                let rgba = generator
+                    .pattern()
+                    .map_or(Vec::new(), |p| p.rgba().to_vec());
                 Ok(Reply::Grown {
                     job,
                     result: Ok(WholeShell {

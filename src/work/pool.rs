@@ -143,9 +143,9 @@ impl Pool {
     /// The first worker that has kept a request longer than its allowance, at `now`.
     pub fn overdue(&self, now: f64) -> Option<usize> {
         self.slots.iter().position(|s| {
-            s.sent
-                .first()
-                .is_some_and(|first| now - s.quiet_since.max(first.at) > first.request.allowance_ms())
+            s.sent.first().is_some_and(|first| {
+                now - s.quiet_since.max(first.at) > first.request.allowance_ms()
+            })
         })
     }
 
@@ -210,7 +210,11 @@ mod tests {
         }
         let sent = pool.dispatch(0.0);
         let slots: Vec<usize> = sent.iter().map(|s| s.slot).collect();
-        assert_eq!(slots, [0, 1, 0, 1, 0], "growth at 0, then jobs to the least busy");
+        assert_eq!(
+            slots,
+            [0, 1, 0, 1, 0],
+            "growth at 0, then jobs to the least busy"
+        );
         assert_eq!(pool.dispatch(0.0), [], "two jobs a worker");
         let first_job = sent[1].ticket;
         assert_eq!(pool.answered(1, first_job, 5.0), Some(tile(0)));
@@ -232,11 +236,18 @@ mod tests {
         let sent = pool.dispatch(0.0);
         assert_eq!(sent.iter().map(|s| s.slot).collect::<Vec<_>>(), [0, 1, 0]);
         assert_eq!(pool.overdue(14_000.0), None);
-        assert_eq!(pool.overdue(16_000.0), Some(1), "a tile is overdue before Finish");
+        assert_eq!(
+            pool.overdue(16_000.0),
+            Some(1),
+            "a tile is overdue before Finish"
+        );
         assert!(pool.failed(1).is_empty());
         let again = pool.dispatch(16_000.0);
         assert_eq!(
-            again.iter().map(|s| (s.slot, s.request.clone())).collect::<Vec<_>>(),
+            again
+                .iter()
+                .map(|s| (s.slot, s.request.clone()))
+                .collect::<Vec<_>>(),
             [(1, tile(0))],
             "to the fresh worker"
         );

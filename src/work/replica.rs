@@ -164,8 +164,7 @@ impl Replica {
         let joining = self.joining.take()?;
         let (v0, i0) = (self.mesh.vertices.len(), self.mesh.indices.len());
         joining.pieces.join(&mut self.mesh, joining.made);
-        self.grown
-            .include_vertices(&self.mesh.vertices[v0..]);
+        self.grown.include_vertices(&self.mesh.vertices[v0..]);
         self.progress.mesh_hash = Some(joining.hash);
         Some(Advance {
             vertices: v0..self.mesh.vertices.len(),

@@ -44,7 +44,10 @@ impl PieceMaker {
 
     /// The work of meshing the chunks numbered `ids` at growth step `step`.
     pub fn start(&self, step: u32, ids: &[u32]) -> ChunkWork {
-        let chunks = ids.iter().map(|&n| self.grid.chunk_at(n as usize)).collect();
+        let chunks = ids
+            .iter()
+            .map(|&n| self.grid.chunk_at(n as usize))
+            .collect();
         ChunkWork::new(step, chunks)
     }
 
