@@ -20,6 +20,7 @@ use super::panel::{Change, OnChange, Panel};
 use super::record::{self, Recording, Step, Support};
 use super::share;
 use super::viewer::{Viewer, now};
+use super::workers::Workers;
 use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
@@ -30,18 +31,19 @@ use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
+use crate::work::message::{Reply, Request};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
 
-/// Milliseconds of a frame for drawing the gallery's pictures.
-const PICTURE_BUDGET_MS: f64 = 10.0;
 /// Quiet time after an edit before the address bar is updated.
 const URL_DELAY_MS: f64 = 300.0;
 
 pub struct App {
     viewer: Viewer,
+    /// Where shells, pictures and pieces grow.
+    workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
     map: MapView,
     downloads: Downloads,
@@ -87,11 +89,12 @@ fn location_hash() -> String {
 }
 
 impl App {
-    pub fn new(viewer: Viewer, pictures: Pictures) -> Self {
+    pub fn new(viewer: Viewer, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
         signal("backend", viewer.backend());
         set_text("backend", &format!("Drawn with {}", viewer.backend()));
         Self {
             viewer,
+            workers,
             pictures,
             map: MapView::default(),
             downloads: Downloads::default(),
@@ -163,6 +166,13 @@ impl App {
 
     fn show(&mut self, gallery: bool) {
         self.in_gallery = gallery;
+        let mut workers = self.workers.borrow_mut();
+        if gallery {
+            self.pictures.ask(&mut workers);
+        } else {
+            self.pictures.pause(&mut workers);
+        }
+        drop(workers);
         if let (Some(g), Some(v)) = (element("gallery"), element("viewer")) {
             g.set_hidden(!gallery);
             v.set_hidden(gallery);
@@ -180,12 +190,7 @@ impl App {
         signal("state", "loading");
         signal("patternHash", "");
         signal("mesh", "");
-        if let Err(message) = self.viewer.load(preset, &spec) {
-            self.viewer.unload();
-            self.current = None;
-            page::show_error(&message);
-            return;
-        }
+        self.viewer.load(preset, &spec);
         set_text("title", &preset.name);
         set_text("source", &preset.source);
         page::document().set_title(&format!("{} — Seashells", preset.name));
@@ -443,10 +448,8 @@ impl App {
             return;
         };
         self.close_map();
+        let rows = spec.growth.rows.max(2) as usize;
         self.load(preset, spec);
-        let Some(rows) = self.viewer.growing().map(|g| g.generator.rows()) else {
-            return;
-        };
         let speed = self.viewer.playback.speed;
         let plan = RecordingPlan::new(rows, speed, record::options());
         self.viewer.fix_size(Some((plan.width, plan.height)));
@@ -545,22 +548,20 @@ impl App {
             return Err(failure.clone());
         }
         self.downloads.work();
+        self.take_replies();
         if self.recording.is_some() {
             self.record_frame();
             return Ok(());
         }
         if self.in_gallery {
-            if !self.pictures.finished() {
-                self.pictures.work(PICTURE_BUDGET_MS);
-                signal(
-                    "pictures",
-                    if self.pictures.finished() {
-                        "done"
-                    } else {
-                        "drawing"
-                    },
-                );
-            }
+            signal(
+                "pictures",
+                if self.pictures.finished() {
+                    "done"
+                } else {
+                    "drawing"
+                },
+            );
             return Ok(());
         }
         if self.url_due.is_some_and(|due| now() >= due) {
@@ -579,7 +580,11 @@ impl App {
         let Some(g) = self.viewer.growing() else {
             return Ok(());
         };
-        let (done, total) = (g.generator.rows_done(), g.generator.rows());
+        let replica = &g.replica;
+        if replica.shell().is_none() {
+            return Ok(());
+        }
+        let (done, total) = (replica.rows_done(), replica.rows());
         signal("rows", &done.to_string());
         if let Some(bar) =
             element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
@@ -589,14 +594,14 @@ impl App {
         }
         set_text("progress-text", &format!("{done} of {total} rows"));
         self.downloads.show_sizes(&self.viewer);
-        if let Some(failure) = g.generator.failure() {
+        if let Some(failure) = replica.failure() {
             show_message(failure);
             signal("state", "stopped");
-        } else if g.generator.is_done() && g.view_at_rest() {
-            if let Some(p) = g.generator.pattern() {
-                signal("patternHash", &format!("{:016x}", p.hash()));
+        } else if replica.is_done() && g.settled() && g.view_at_rest() {
+            if let Some(hash) = replica.pattern_hash() {
+                signal("patternHash", &format!("{hash:016x}"));
             }
-            let (mesh, edge) = (g.generator.mesh(), g.generator.edge());
+            let (mesh, edge) = (replica.mesh(), replica.edge());
             signal(
                 "mesh",
                 &format!(
@@ -605,12 +610,38 @@ impl App {
                     mesh.triangle_count() + edge.triangle_count()
                 ),
             );
-            signal("meshHash", &format!("{:016x}", g.generator.mesh_hash()));
+            if let Some(hash) = replica.mesh_hash() {
+                signal("meshHash", &format!("{hash:016x}"));
+            }
             signal("state", "grown");
         } else {
             signal("state", "growing");
         }
         Ok(())
+    }
+
+    /// Takes in what the workers sent back: the shell's growth and pieces go to the viewer,
+    /// gallery shells to the pictures; a worker replaced with the shell's session has it grown
+    /// again where the page's copy stands.
+    fn take_replies(&mut self) {
+        let polled = self.workers.borrow_mut().poll();
+        if let Some(lost) = polled.sessions_lost {
+            self.viewer.resume(lost);
+        }
+        for (request, reply) in polled.replies {
+            match (request, reply) {
+                (Request::Whole { link, .. }, Reply::Grown { result, .. }) => {
+                    self.pictures.take(&link, result);
+                }
+                (request, reply) => {
+                    if let Err(message) = self.viewer.take(&request, reply) {
+                        self.viewer.unload();
+                        self.current = None;
+                        page::show_error(&message);
+                    }
+                }
+            }
+        }
     }
 
     /// Shows the parameter map of the shell shown.

@@ -1,14 +1,17 @@
 //! The gallery: every preset in species/, grouped by where it comes from, each a card with its
 //! name, the figure it reproduces, a line of description and a picture of the shell. The cards
 //! are plain links to the preset's fragment, so the browser's history does the navigation; the
-//! pictures are drawn one by one by a second viewer on a small off-screen canvas.
+//! shells are grown whole by the pool of workers and drawn by a second viewer on a small
+//! off-screen canvas as they come.
 
 use super::dom::{append, attr, create, typed};
 use super::viewer::Viewer;
+use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
+use crate::spec::ShellSpec;
 use crate::spec::form::Form;
-use std::collections::VecDeque;
+use crate::work::message::{Request, WholeShell};
 use web_sys::{Element, HtmlImageElement};
 
 /// Fills `container` with one section per group and one card per preset.
@@ -46,51 +49,73 @@ pub fn build(container: &Element) {
     }
 }
 
-/// Draws the cards' pictures, a few milliseconds a frame.
+/// Draws the cards' pictures: each shell is grown whole by a worker of the pool (all at once,
+/// shared among them), and drawn here by a viewer of its own as its answer comes.
 pub struct Pictures {
     viewer: Viewer,
-    queue: VecDeque<&'static Preset>,
-    current: Option<&'static Preset>,
+    /// The presets whose pictures are not drawn yet.
+    left: Vec<&'static Preset>,
+    /// Whether the pool has been asked for them since the gallery was last shown.
+    asked: bool,
 }
 
 /// Voxels along the longest side of an implicit shell in a gallery picture: enough for its
 /// size, and quick to grow.
 const PICTURE_RESOLUTION: u32 = 64;
 
+/// The spec of a preset's picture.
+fn picture_spec(preset: &Preset) -> ShellSpec {
+    let mut spec = preset.spec.clone();
+    if let Form::Implicit(implicit) = &mut spec.form {
+        implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
+    }
+    spec
+}
+
 impl Pictures {
     pub fn new(viewer: Viewer) -> Self {
         Self {
             viewer,
-            queue: presets().iter().collect(),
-            current: None,
+            left: presets().iter().collect(),
+            asked: false,
         }
     }
 
-    /// Works on the pictures for at most `budget_ms`.
-    pub fn work(&mut self, budget_ms: f64) {
-        let preset = match self.current {
-            Some(p) => p,
-            None => {
-                let Some(next) = self.queue.pop_front() else {
-                    return;
-                };
-                let mut spec = next.spec.clone();
-                if let Form::Implicit(implicit) = &mut spec.form {
-                    implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
-                }
-                if self.viewer.load(next, &spec).is_err() {
-                    return;
-                }
-                self.current = Some(next);
-                next
-            }
-        };
-        let done = self.viewer.growing().is_none_or(|g| g.generator.is_done());
-        if !done {
-            self.viewer.grow(usize::MAX, budget_ms);
+    /// Asks the pool for the pictures not drawn yet (once while the gallery is shown).
+    pub fn ask(&mut self, workers: &mut Workers) {
+        if self.asked {
             return;
         }
-        self.current = None;
+        self.asked = true;
+        for (job, preset) in self.left.iter().enumerate() {
+            workers.submit(Request::Whole {
+                job: job as u32,
+                link: link::encode(preset, &picture_spec(preset)),
+            });
+        }
+    }
+
+    /// The gallery was left: the pictures not yet sent to a worker wait until it is shown
+    /// again.
+    pub fn pause(&mut self, workers: &mut Workers) {
+        workers.cancel(|r| matches!(r, Request::Whole { .. }));
+        self.asked = false;
+    }
+
+    /// A worker grew the shell of `link`: draws its picture onto its card.
+    pub fn take(&mut self, link: &str, result: Result<WholeShell, String>) {
+        let Some(at) = self
+            .left
+            .iter()
+            .position(|p| link::encode(p, &picture_spec(p)) == link)
+        else {
+            return;
+        };
+        let preset = self.left.remove(at);
+        let Ok(whole) = result else {
+            return;
+        };
+        self.viewer.show_whole(preset, &picture_spec(preset), whole);
         let Ok(url) = self.viewer.picture() else {
             return;
         };
@@ -112,6 +137,6 @@ impl Pictures {
 
     /// Whether every picture is drawn.
     pub fn finished(&self) -> bool {
-        self.queue.is_empty() && self.current.is_none()
+        self.left.is_empty()
     }
 }

@@ -6,12 +6,14 @@
 
 use super::page::show_message;
 use super::planar::Planar;
-use crate::generator::{Advance, Generator, within};
+use super::workers::Workers;
+use crate::generator::Advance;
 use crate::mesh::Bounds;
 use crate::pattern::run::PatternRun;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
 use crate::render::{Renderer, ShellLook};
+use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::camera::OrbitCamera;
@@ -19,33 +21,46 @@ use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::Preview;
+use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
+use crate::work::replica::Replica;
+use glam::DVec3;
+use std::cell::RefCell;
+use std::rc::Rc;
 use web_sys::HtmlCanvasElement;
 
-/// A shell being grown.
+/// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
 pub struct Growing {
     pub preset: &'static Preset,
-    pub generator: Generator,
+    spec: ShellSpec,
+    /// The link its worker grows it from.
+    link: String,
+    pub replica: Replica,
     camera: OrbitCamera,
     planar: Option<Planar>,
     /// The planar view's cells and rows for this shell's pattern.
     planar_size: Option<(u32, u32)>,
     /// The pattern of values being dragged, shown in the planar view while growth waits.
     preview: Option<Preview>,
-    /// Bounds of what has grown so far, edge included.
-    grown: Bounds,
-    /// The longest growth step lately, in milliseconds (see [`within`]).
-    longest_step: f64,
+    /// Requests of this shell's session sent and not yet answered.
+    pending: usize,
+    /// Whether growth to the end was asked for.
+    finishing: bool,
 }
 
 impl Growing {
     /// Whether the view rests on what has grown (or where the user left it).
     pub fn view_at_rest(&self) -> bool {
-        self.camera.settled(&self.grown)
+        self.camera.settled(self.replica.grown())
     }
 
     /// The panes of `layout` on a canvas of aspect `aspect`.
     fn panes(&self, layout: Layout, aspect: f32) -> Vec<Pane> {
-        panes(layout, &self.camera, &self.grown, aspect)
+        panes(layout, &self.camera, self.replica.grown(), aspect)
+    }
+
+    /// Whether the shell stands where its worker left it, nothing asked of it unanswered.
+    pub fn settled(&self) -> bool {
+        self.pending == 0 && self.replica.shell().is_some()
     }
 }
 
@@ -66,6 +81,10 @@ pub struct Viewer {
     last_frame: f64,
     /// The drawing size a recording asks for, instead of the canvas's own.
     fixed_size: Option<(u32, u32)>,
+    /// Where the shells grow.
+    workers: Rc<RefCell<Workers>>,
+    /// The last session started (each load starts one; replies of older ones are dropped).
+    session: u32,
 }
 
 /// Milliseconds since the page started.
@@ -81,6 +100,7 @@ impl Viewer {
         planar_canvas: Option<HtmlCanvasElement>,
         background: [u8; 3],
         follows: bool,
+        workers: Rc<RefCell<Workers>>,
     ) -> Result<Self, String> {
         let mut renderer = Renderer::new(canvas.clone()).await?;
         renderer.set_background(background);
@@ -96,6 +116,8 @@ impl Viewer {
             layout: Layout::Single,
             last_frame: now(),
             fixed_size: None,
+            workers,
+            session: 0,
         })
     }
 
@@ -120,76 +142,213 @@ impl Viewer {
         self.growing = None;
     }
 
-    /// Starts growing `spec` from its apex.
-    pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) -> Result<(), String> {
-        let generator =
-            Generator::new(spec).map_err(|e| format!("This shell cannot be built: {e}"))?;
-        let pattern = generator
-            .pattern()
-            .map(|p| (p.cells() as u32, spec.growth.rows));
+    /// Starts growing `spec` from its apex on a worker, dropping the shell grown before and
+    /// the work still waiting for it; nothing more of it reaches the screen. The worker's
+    /// answer comes in a later frame ([`Self::take`]).
+    pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) {
+        self.session = self.session.wrapping_add(1);
+        let link = link::encode(preset, spec);
+        let mut workers = self.workers.borrow_mut();
+        workers.cancel(|r| matches!(r, Request::Pieces { .. }));
+        workers.submit(Request::Load {
+            session: self.session,
+            link: link.clone(),
+        });
+        self.playback.restart(spec.growth.speed);
+        // Framed on a unit box until the worker says what the shell is.
+        let placeholder = Bounds {
+            min: DVec3::splat(-1.0),
+            max: DVec3::splat(1.0),
+        };
+        self.growing = Some(Growing {
+            preset,
+            spec: spec.clone(),
+            link,
+            replica: Replica::new(self.session),
+            camera: OrbitCamera::framing(&placeholder, DVec3::Z, 0.0, 0.0),
+            planar: None,
+            planar_size: None,
+            preview: None,
+            pending: 1,
+            finishing: false,
+        });
+        self.dirty = true;
+    }
+
+    /// Shows a shell grown whole on a worker (a gallery picture), at rest.
+    pub fn show_whole(&mut self, preset: &'static Preset, spec: &ShellSpec, whole: WholeShell) {
+        self.session = self.session.wrapping_add(1);
+        let shell = whole.shell.clone();
+        let replica = Replica::whole(self.session, whole);
+        let everything = replica.everything();
+        self.growing = Some(Growing {
+            preset,
+            spec: spec.clone(),
+            link: String::new(),
+            replica,
+            camera: OrbitCamera::framing(&shell.bounds, shell.front, 0.0, 0.0),
+            planar: None,
+            planar_size: None,
+            preview: None,
+            pending: 0,
+            finishing: false,
+        });
+        self.loaded(shell, everything);
+    }
+
+    /// The shell is built on its worker: sets up the renderer, the camera and the planar view
+    /// for it, and shows its first step.
+    fn loaded(&mut self, shell: ShellInfo, advance: Advance) {
+        let Some(g) = &mut self.growing else { return };
+        let pattern = (shell.cells > 0).then_some((shell.cells, g.spec.growth.rows));
         let layout = pattern.and_then(|(cells, rows)| TextureLayout::new(cells, rows));
         self.renderer.load_shell(
-            generator.capacity(),
+            shell.capacity,
             layout,
             ShellLook::new(
-                &spec.colours,
-                &spec.material,
-                crate::forms::rows_per_whorl(spec),
-                generator.line_grid(),
+                &g.spec.colours,
+                &g.spec.material,
+                crate::forms::rows_per_whorl(&g.spec),
+                shell.line_grid,
             ),
         );
-        let (bounds, front) = generator.framing();
         let mut grown = Bounds::EMPTY;
-        grown.include_vertices(&generator.mesh().vertices);
-        grown.include_vertices(&generator.edge().vertices);
+        grown.include_vertices(&g.replica.mesh().vertices);
+        grown.include_vertices(&g.replica.edge().vertices);
         let mut camera = OrbitCamera::framing(
-            &bounds,
-            front,
-            preset.view.yaw.to_radians(),
-            preset.view.pitch.to_radians(),
+            &shell.bounds,
+            shell.front,
+            g.preset.view.yaw.to_radians(),
+            g.preset.view.pitch.to_radians(),
         );
         if self.follows {
             camera = camera.following(&grown);
         }
-        let planar = self
+        g.camera = camera;
+        g.planar = self
             .planar_canvas
             .clone()
             .and_then(|c| Planar::new(c, pattern));
-        self.playback.restart(spec.growth.speed);
-        self.growing = Some(Growing {
-            preset,
-            generator,
-            camera,
-            planar,
-            planar_size: pattern,
-            preview: None,
-            grown,
-            longest_step: 0.0,
-        });
-        let grown = self
-            .growing
-            .as_ref()
-            .map(|g| g.generator.grown())
-            .unwrap_or_default();
-        self.upload(&grown);
+        g.planar_size = pattern;
+        self.upload(&advance);
+    }
+
+    /// Takes in a worker's reply to `request`: a reply about another shell than this one's is
+    /// dropped. Fails with the words to show when the shell cannot be built or grown.
+    pub fn take(&mut self, request: &Request, reply: Reply) -> Result<(), String> {
+        let Some(g) = &mut self.growing else {
+            return Ok(());
+        };
+        let session = g.replica.session();
+        let ours = |s: u32| s == session;
+        let advance = match reply {
+            Reply::Loaded {
+                session,
+                shell,
+                delta,
+            } if ours(session) => {
+                g.pending -= 1;
+                let advance = g.replica.loaded(shell.clone(), delta).map_err(|e| e.to_string())?;
+                self.loaded(shell, advance);
+                self.dirty = true;
+                return Ok(());
+            }
+            Reply::Refused { session, message } if ours(session) => return Err(message),
+            Reply::Grew { session, delta } if ours(session) => {
+                g.pending -= 1;
+                g.replica.apply(delta).map_err(|e| e.to_string())?
+            }
+            Reply::Apart {
+                session,
+                delta,
+                pieces,
+                hash,
+            } if ours(session) => {
+                g.pending -= 1;
+                let mut workers = self.workers.borrow_mut();
+                for (group, ids) in pieces.groups.iter().enumerate() {
+                    workers.submit(Request::Pieces {
+                        job: group as u32,
+                        link: g.link.clone(),
+                        step: pieces.step,
+                        ids: ids.clone(),
+                    });
+                }
+                g.replica
+                    .apart(delta, pieces, hash)
+                    .map_err(|e| e.to_string())?
+            }
+            Reply::Resumed {
+                session,
+                vertices,
+                indices,
+            } if ours(session) => {
+                g.pending -= 1;
+                let mesh = g.replica.mesh();
+                if (vertices as usize, indices as usize)
+                    != (mesh.vertices.len(), mesh.indices.len())
+                {
+                    return Err("a worker grew the shell again to another mesh".into());
+                }
+                return Ok(());
+            }
+            Reply::Made { job, meshes, hash } => {
+                let Request::Pieces { link, .. } = request else {
+                    return Ok(());
+                };
+                if *link != g.link {
+                    return Ok(());
+                }
+                match g.replica.made(job as usize, meshes, hash) {
+                    Some(advance) => advance,
+                    None => return Ok(()),
+                }
+            }
+            _ => return Ok(()),
+        };
+        self.upload(&advance);
         self.dirty = true;
         Ok(())
     }
 
+    /// The worker holding the shell was replaced, losing `lost` unanswered: the shell is grown
+    /// again on the fresh one to where the page's copy stands, and what was lost asked again.
+    pub fn resume(&mut self, lost: Vec<Request>) {
+        let Some(g) = &mut self.growing else { return };
+        let session = g.replica.session();
+        let mut workers = self.workers.borrow_mut();
+        g.pending = 0;
+        if g.replica.shell().is_none() {
+            workers.submit(Request::Load {
+                session,
+                link: g.link.clone(),
+            });
+            g.pending = 1;
+        } else if g.replica.pieces().is_none() && !g.replica.is_done() {
+            workers.submit(Request::Resume {
+                session,
+                link: g.link.clone(),
+                rows: g.replica.rows_done() as u32,
+                steps: g.replica.steps_done() as u32,
+            });
+            g.pending = 1;
+        } else {
+            return;
+        }
+        if lost.iter().any(|r| matches!(r, Request::Finish { .. })) || g.finishing {
+            workers.submit(Request::Finish { session });
+            g.pending += 1;
+        }
+    }
+
     fn upload(&mut self, advance: &Advance) {
         let Some(g) = &mut self.growing else { return };
-        g.grown
-            .include_vertices(&g.generator.mesh().vertices[advance.vertices.clone()]);
-        if advance.edge_changed {
-            g.grown.include_vertices(&g.generator.edge().vertices);
-        }
-        self.renderer.set_ground(&g.grown);
-        let rgba = g.generator.pattern().map_or(&[][..], |p| {
-            let row = p.cells() * 4;
-            &p.rgba()[advance.rows.start * row..advance.rows.end * row]
-        });
+        let replica = &g.replica;
+        self.renderer.set_ground(replica.grown());
+        let row = replica.cells() * 4;
+        let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
         self.renderer
-            .upload(g.generator.mesh(), g.generator.edge(), advance, rgba);
+            .upload(replica.mesh(), replica.edge(), advance, rgba);
         if let Some(planar) = &g.planar {
             planar.draw_rows(advance.rows.start as u32, rgba);
             planar.follow(advance.rows.end as u32);
@@ -229,9 +388,10 @@ impl Viewer {
             .planar_canvas
             .clone()
             .and_then(|c| Planar::new(c, g.planar_size));
-        if let (Some(planar), Some(pattern)) = (&g.planar, g.generator.pattern()) {
-            planar.draw_rows(0, pattern.rgba());
-            planar.follow(pattern.rows() as u32);
+        if let Some(planar) = &g.planar {
+            let replica = &g.replica;
+            planar.draw_rows(0, replica.rgba());
+            planar.follow((replica.rgba().len() / (replica.cells() * 4).max(1)) as u32);
         }
     }
 
@@ -243,28 +403,35 @@ impl Viewer {
             .map_or("", |p| p.state().signal())
     }
 
-    /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
+    /// Asks the shell's worker to grow up to `rows` rows, stopping early when `budget_ms`
+    /// has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
-        let advance = g
-            .generator
-            .advance_while(rows, within(now, budget_ms, &mut g.longest_step));
-        self.upload(&advance);
-        self.dirty = true;
+        if g.finishing || g.replica.is_done() {
+            return;
+        }
+        self.workers.borrow_mut().submit(Request::Grow {
+            session: g.replica.session(),
+            rows: u32::try_from(rows).unwrap_or(u32::MAX),
+            budget_ms,
+        });
+        g.pending += 1;
     }
 
-    /// Grows the rest of the shell at once.
+    /// Asks the shell's worker to grow the rest of the shell at once (what splits is shared
+    /// among the pool when it answers).
     pub fn finish(&mut self) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
-        if g.generator.is_done() {
+        if g.finishing || g.replica.is_done() {
             return;
         }
-        g.generator.finish();
-        let advance = g.generator.grown();
-        self.upload(&advance);
-        self.dirty = true;
+        self.workers.borrow_mut().submit(Request::Finish {
+            session: g.replica.session(),
+        });
+        g.pending += 1;
+        g.finishing = true;
     }
 
     /// Keeps the drawing buffer at the canvas's size in device pixels.
@@ -307,7 +474,7 @@ impl Viewer {
         let growing = self
             .growing
             .as_ref()
-            .is_some_and(|g| !g.generator.is_done() && g.preview.is_none());
+            .is_some_and(|g| g.settled() && !g.replica.is_done() && g.preview.is_none());
         if growing && self.playback.playing {
             let rows = self.playback.rows_this_frame();
             if rows > 0 {
@@ -318,14 +485,14 @@ impl Viewer {
         let dt = ((time - self.last_frame) / 1000.0).min(0.25) as f32;
         self.last_frame = time;
         if let Some(g) = &mut self.growing
-            && g.camera.follow(&g.grown, dt)
+            && g.camera.follow(g.replica.grown(), dt)
         {
             self.dirty = true;
         }
         if !self.dirty {
             return Ok(false);
         }
-        let Some(g) = &self.growing else {
+        let Some(g) = self.growing.as_ref().filter(|g| g.replica.shell().is_some()) else {
             return Ok(false);
         };
         self.renderer
@@ -405,17 +572,16 @@ impl Viewer {
         let Some(g) = &mut self.growing else {
             return true;
         };
-        let behind = row.saturating_sub(g.generator.rows_done());
-        if behind > 0 || !g.generator.caught_up() {
-            let advance = g
-                .generator
-                .advance_while(behind, within(now, budget_ms, &mut g.longest_step));
-            self.upload(&advance);
-            self.dirty = true;
+        if !g.settled() {
+            return false;
         }
-        self.growing.as_ref().is_none_or(|g| {
-            g.generator.is_done() || (g.generator.rows_done() >= row && g.generator.caught_up())
-        })
+        let r = &g.replica;
+        if r.is_done() || (r.rows_done() >= row && r.caught_up()) {
+            return true;
+        }
+        let behind = row.saturating_sub(r.rows_done());
+        self.grow(behind, budget_ms);
+        false
     }
 
     /// Draws a recording's frame: the camera eased by `dt` seconds of video (not of the
@@ -428,7 +594,7 @@ impl Viewer {
         let Some(g) = &mut self.growing else {
             return Err("no shell is loaded".into());
         };
-        g.camera.follow(&g.grown, dt);
+        g.camera.follow(g.replica.grown(), dt);
         g.camera.yaw += turn;
         self.renderer
             .draw(&g.panes(self.layout, self.renderer.aspect()))?;

@@ -5,7 +5,7 @@
 //! joined once all are in, in the order of their numbers: the mesh is then the one a single
 //! thread finishing the shell would have made, bit for bit, whatever the number of workers.
 
-use super::message::{Delta, Progress, ShellInfo};
+use super::message::{Delta, Progress, ShellInfo, WholeShell};
 use crate::generator::Advance;
 use crate::mesh::{Bounds, Mesh};
 use crate::shape::Pieces;
@@ -68,6 +68,32 @@ impl Replica {
             rows_grown: 0,
             grown: Bounds::EMPTY,
             progress: Progress::default(),
+            joining: None,
+        }
+    }
+
+    /// The copy of a shell grown whole on a worker (a gallery picture): grown, edge included
+    /// in its mesh.
+    pub fn whole(session: u32, whole: WholeShell) -> Self {
+        let rows = whole.shell.rows;
+        let mut grown = Bounds::EMPTY;
+        grown.include_vertices(&whole.mesh.vertices);
+        let mesh_hash = whole.mesh.content_hash();
+        Self {
+            session,
+            shell: Some(whole.shell),
+            mesh: whole.mesh,
+            edge: Mesh::default(),
+            rgba: whole.rgba,
+            rows_grown: rows as usize,
+            grown,
+            progress: Progress {
+                rows_done: rows,
+                caught_up: true,
+                done: true,
+                mesh_hash: Some(mesh_hash),
+                ..Progress::default()
+            },
             joining: None,
         }
     }
