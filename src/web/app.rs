@@ -131,7 +131,7 @@ impl App {
 
     /// Follows the URL fragment (closing the parameter map, whose tiles are links).
     pub fn route(&mut self) {
-        self.map.close();
+        self.map.close(&mut self.workers.borrow_mut());
         let fragment = location_hash();
         if fragment.trim_start_matches('#').is_empty() {
             self.stop_recording("you went back to the gallery");
@@ -226,10 +226,8 @@ impl App {
         } = link::with(preset, spec, key, &value);
         if change == Change::Moving {
             if previews(key) {
-                match self.viewer.preview(&next) {
-                    Ok(()) => say(&problems),
-                    Err(message) => show_message(&message),
-                }
+                say(&problems);
+                self.viewer.preview(&next);
                 signal("preview", self.viewer.preview_state());
             }
             return;
@@ -569,7 +567,6 @@ impl App {
         }
         if self.map.is_open() {
             // The map covers the shell, which waits meanwhile.
-            self.map.work(GROWTH_BUDGET_MS);
             return Ok(());
         }
         let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;
@@ -633,6 +630,7 @@ impl App {
                 (Request::Whole { link, .. }, Reply::Grown { result, .. }) => {
                     self.pictures.take(&link, result);
                 }
+                (_, Reply::Tiled { job, result }) => self.map.take(job, result),
                 (request, reply) => {
                     if let Err(message) = self.viewer.take(&request, reply) {
                         self.viewer.unload();
@@ -648,14 +646,14 @@ impl App {
     pub fn open_map(&mut self) {
         self.stop_recording("the map covered the shell");
         if let Some((preset, spec)) = &self.current {
-            self.map.open(preset, spec);
+            self.map.open(preset, spec, &mut self.workers.borrow_mut());
         }
     }
 
     /// Draws the map anew over the axes its controls now describe.
     pub fn draw_map(&mut self) {
         if let Some((preset, spec)) = &self.current {
-            self.map.draw(preset, spec);
+            self.map.draw(preset, spec, &mut self.workers.borrow_mut());
         }
     }
 
@@ -665,7 +663,7 @@ impl App {
     }
 
     pub fn close_map(&mut self) {
-        self.map.close();
+        self.map.close(&mut self.workers.borrow_mut());
     }
 
     /// Follows a change of the page's light or dark theme.

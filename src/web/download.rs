@@ -11,8 +11,8 @@ use super::viewer::{Viewer, now};
 use crate::export::Download;
 use crate::export::estimate::{Counts, Size};
 use crate::export::job::Export;
-use crate::export::print_size::PrintSize;
 use crate::export::paint::PatternImage;
+use crate::export::print_size::PrintSize;
 use crate::export::shell::{Grown, Shell};
 use crate::generator::within;
 use crate::presets::Preset;
@@ -170,14 +170,19 @@ impl Downloads {
         let counts = Counts {
             vertices: mesh.vertices.len() + edge.vertices.len(),
             triangles: mesh.triangle_count() + edge.triangle_count(),
-            pattern: (g.replica.cells() > 0)
-                .then(|| (g.replica.cells(), g.replica.rgba().len() / (g.replica.cells() * 4))),
+            pattern: (g.replica.cells() > 0).then(|| {
+                (
+                    g.replica.cells(),
+                    g.replica.rgba().len() / (g.replica.cells() * 4),
+                )
+            }),
             picture: (canvas.width() as usize, canvas.height() as usize),
         };
         let t = now();
-        if self.shown.is_some_and(|(c, at)| {
-            c == counts || (!g.replica.is_done() && t - at < SIZES_EVERY_MS)
-        }) || self.job.is_some()
+        if self
+            .shown
+            .is_some_and(|(c, at)| c == counts || (!g.replica.is_done() && t - at < SIZES_EVERY_MS))
+            || self.job.is_some()
         {
             return;
         }

@@ -9,7 +9,6 @@ use super::planar::Planar;
 use super::workers::Workers;
 use crate::generator::Advance;
 use crate::mesh::Bounds;
-use crate::pattern::run::PatternRun;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
 use crate::render::{Renderer, ShellLook};
@@ -20,7 +19,7 @@ use crate::view::camera::OrbitCamera;
 use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
-use crate::view::preview::Preview;
+use crate::view::preview::PreviewState;
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::replica::Replica;
 use glam::DVec3;
@@ -39,8 +38,9 @@ pub struct Growing {
     planar: Option<Planar>,
     /// The planar view's cells and rows for this shell's pattern.
     planar_size: Option<(u32, u32)>,
-    /// The pattern of values being dragged, shown in the planar view while growth waits.
-    preview: Option<Preview>,
+    /// The pattern of values being dragged, computed by a worker and shown in the planar
+    /// view while growth waits.
+    preview: Option<Previewing>,
     /// Requests of this shell's session sent and not yet answered.
     pending: usize,
     /// Whether growth to the end was asked for.
@@ -62,6 +62,14 @@ impl Growing {
     pub fn settled(&self) -> bool {
         self.pending == 0 && self.replica.shell().is_some()
     }
+}
+
+/// A pattern being previewed: its session on the worker that computes it, where it stands,
+/// and whether rows were asked for and not yet sent.
+struct Previewing {
+    session: u32,
+    state: PreviewState,
+    pending: bool,
 }
 
 pub struct Viewer {
@@ -248,7 +256,10 @@ impl Viewer {
                 delta,
             } if ours(session) => {
                 g.pending -= 1;
-                let advance = g.replica.loaded(shell.clone(), delta).map_err(|e| e.to_string())?;
+                let advance = g
+                    .replica
+                    .loaded(shell.clone(), delta)
+                    .map_err(|e| e.to_string())?;
                 self.loaded(shell, advance);
                 self.dirty = true;
                 return Ok(());
@@ -290,6 +301,12 @@ impl Viewer {
                 {
                     return Err("a worker grew the shell again to another mesh".into());
                 }
+                return Ok(());
+            }
+            reply @ Reply::Previewed { .. } => {
+                let rows = g.spec.growth.rows;
+                self.previewed(reply, rows);
+                self.dirty = true;
                 return Ok(());
             }
             Reply::Made { job, meshes, hash } => {
@@ -355,27 +372,58 @@ impl Viewer {
         }
     }
 
-    /// Shows the whole pattern of `spec` in the planar view, computed over the next frames,
-    /// while the shell's growth waits (until [`Self::end_preview`] or another spec is loaded).
-    /// Values that give no pattern at all are refused with the reason.
-    pub fn preview(&mut self, spec: &ShellSpec) -> Result<(), String> {
-        let Some(g) = &mut self.growing else {
-            return Ok(());
+    /// Shows the whole pattern of `spec` in the planar view, computed by a worker over the
+    /// next frames, while the shell's growth waits (until [`Self::end_preview`] or another
+    /// spec is loaded). Values that give no pattern at all are refused with the reason, in a
+    /// message, when the worker answers.
+    pub fn preview(&mut self, spec: &ShellSpec) {
+        let Some(g) = &mut self.growing else { return };
+        self.session = self.session.wrapping_add(1);
+        self.workers.borrow_mut().submit(Request::Preview {
+            session: self.session,
+            link: link::encode(g.preset, spec),
+        });
+        g.preview = Some(Previewing {
+            session: self.session,
+            state: PreviewState::Filling,
+            pending: true,
+        });
+    }
+
+    /// Takes in rows of the pattern previewed (`first..` of `cells` cells, `rows` in all).
+    fn previewed(&mut self, reply: Reply, rows: u32) {
+        let Reply::Previewed {
+            session,
+            cells,
+            first,
+            rgba,
+            state,
+            failure,
+        } = reply
+        else {
+            return;
         };
-        let run = match PatternRun::new(spec) {
-            Ok(Some(run)) => run,
-            Ok(None) => return Ok(()),
-            Err(e) => return Err(format!("With these values there is no pattern: {e}.")),
+        let Some(g) = &mut self.growing else { return };
+        let Some(p) = g.preview.as_mut().filter(|p| p.session == session) else {
+            return;
         };
-        g.planar = self
-            .planar_canvas
-            .clone()
-            .and_then(|c| Planar::new(c, Some((run.cells() as u32, spec.growth.rows))));
-        if let Some(planar) = &g.planar {
-            planar.draw_rows(0, run.rgba());
+        p.pending = false;
+        p.state = state;
+        if let Some(message) = failure {
+            show_message(&message);
         }
-        g.preview = Some(Preview::new(run, spec.growth.rows as usize));
-        Ok(())
+        if cells == 0 {
+            return;
+        }
+        if first == 0 {
+            g.planar = self
+                .planar_canvas
+                .clone()
+                .and_then(|c| Planar::new(c, Some((cells, rows))));
+        }
+        if let Some(planar) = &g.planar {
+            planar.draw_rows(first, &rgba);
+        }
     }
 
     /// Back from a preview to the growing shell's own pattern in the planar view.
@@ -400,7 +448,7 @@ impl Viewer {
         self.growing
             .as_ref()
             .and_then(|g| g.preview.as_ref())
-            .map_or("", |p| p.state().signal())
+            .map_or("", |p| p.state.signal())
     }
 
     /// Asks the shell's worker to grow up to `rows` rows, stopping early when `budget_ms`
@@ -460,16 +508,14 @@ impl Viewer {
         self.fit_canvas();
         if let Some(g) = &mut self.growing
             && let Some(preview) = &mut g.preview
+            && preview.state == PreviewState::Filling
+            && !preview.pending
         {
-            let until = now() + budget_ms;
-            let (first, failure) = preview.fill(|| now() < until);
-            if let Some(e) = failure {
-                show_message(&format!("With these values the pattern stops {e}."));
-            }
-            if let Some(planar) = &g.planar {
-                let run = preview.run();
-                planar.draw_rows(first as u32, &run.rgba()[first * run.cells() * 4..]);
-            }
+            self.workers.borrow_mut().submit(Request::Fill {
+                session: preview.session,
+                budget_ms,
+            });
+            preview.pending = true;
         }
         let growing = self
             .growing
@@ -492,7 +538,11 @@ impl Viewer {
         if !self.dirty {
             return Ok(false);
         }
-        let Some(g) = self.growing.as_ref().filter(|g| g.replica.shell().is_some()) else {
+        let Some(g) = self
+            .growing
+            .as_ref()
+            .filter(|g| g.replica.shell().is_some())
+        else {
             return Ok(false);
         };
         self.renderer

@@ -56,7 +56,7 @@ enum Backend {
         crashes_left: usize,
     },
     /// The page's own thread.
-    Local(Host),
+    Local(Box<Host>),
 }
 
 /// What came back since the last frame.
@@ -119,7 +119,9 @@ impl Workers {
     /// The pool this browser gets, or the page's own thread where workers cannot start.
     pub fn start(budget_ms: f64) -> Self {
         let cores = web_sys::window().map_or(1, |w| w.navigator().hardware_concurrency() as usize);
-        let size = query_number("workers").unwrap_or_else(|| size_for(cores)).min(8);
+        let size = query_number("workers")
+            .unwrap_or_else(|| size_for(cores))
+            .min(8);
         let mut crashes_left = query_number("crash-workers").unwrap_or(0);
         let local = |why: &str| {
             signal("workers", "0");
@@ -129,7 +131,7 @@ impl Workers {
             );
             Self {
                 pool: Pool::new(1),
-                backend: Backend::Local(Host::default()),
+                backend: Backend::Local(Box::default()),
                 budget_ms,
             }
         };
