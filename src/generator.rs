@@ -289,18 +289,12 @@ impl Generator {
     }
 
     /// Grows to the end at once, but for the pieces of the shape's growth it returns (see
-    /// [`GrowingShape::finish_apart`]): until they are made apart and [`Self::join`]ed, the mesh
-    /// lacks them. `None` when nothing is left apart: the shell is then whole.
+    /// [`GrowingShape::finish_apart`]): until they are made apart and joined (by the page's
+    /// copy of the shell, `work::replica`), the mesh lacks them. `None` when nothing is left apart: the shell is then whole.
     pub fn finish_apart(&mut self) -> Option<Pieces> {
         self.advance_pattern(self.rows);
         self.hash.take();
         self.shape.finish_apart(&mut self.mesh, &mut self.edge)
-    }
-
-    /// Appends the meshes of the `pieces` that [`Self::finish_apart`] left out.
-    pub fn join(&mut self, pieces: &Pieces, made: Vec<(u32, crate::mesh::Mesh)>) {
-        self.hash.take();
-        pieces.join(&mut self.mesh, made);
     }
 
     /// Steps of the shape grown so far.

@@ -9,7 +9,9 @@
 //! (the interface the link asks for), `data-layout` (single, four: one view or Kawaguchi's
 //! four), `data-encoder` (what the page records video with: a codec's name, MediaRecorder, none,
 //! or checking), `data-record` (recording, saved, cancelled, failed) and `data-record-frames`
-//! (video frames captured).
+//! (video frames captured), `data-growth` (growing, done: whether the shell is grown whole, before
+//! the view comes to rest), `data-workers` (workers in the pool, 0 on the page's own thread)
+//! and `data-worker-deaths` (workers replaced so far).
 
 use super::dom;
 use super::download::Downloads;
@@ -583,6 +585,8 @@ impl App {
         }
         let (done, total) = (replica.rows_done(), replica.rows());
         signal("rows", &done.to_string());
+        let whole = replica.is_done() && g.settled();
+        signal("growth", if whole { "done" } else { "growing" });
         if let Some(bar) =
             element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
         {

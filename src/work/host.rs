@@ -85,7 +85,7 @@ fn progress(generator: &Generator) -> Progress {
 }
 
 /// The sum of the meshes' content hashes: the content hash of them joined in any order.
-pub fn hash_of(meshes: &[(u32, Mesh)]) -> u64 {
+fn hash_of(meshes: &[(u32, Mesh)]) -> u64 {
     meshes
         .iter()
         .fold(0u64, |h, (_, m)| h.wrapping_add(m.content_hash()))

@@ -1,8 +1,8 @@
 //! What crosses between the page and its workers: a [`Request`] the page sends, the one
-//! [`Reply`] a worker sends back for it (or a [`Reply::Panicked`] instead, when it fails), each
-//! in an envelope with the request's ticket. Shells are named by their links, which give the
-//! same spec bit for bit on every thread; meshes and pattern rows cross as plain bytes
-//! ([`super::wire`]), and a growing shell sends only what each request added.
+//! [`Reply`] a worker sends back for it, each in an envelope with the request's ticket. Shells
+//! are named by their links, which give the same spec bit for bit on every thread; meshes and
+//! pattern rows cross as plain bytes ([`super::wire`]), and a growing shell sends only what
+//! each request added.
 
 use super::wire::{Reader, WireError, Writer};
 use crate::mesh::{Bounds, Capacity, Mesh, Vertex};
@@ -165,8 +165,6 @@ pub enum Reply {
         job: u32,
         result: Result<Picture, String>,
     },
-    /// The worker failed while doing something (a panic): what, and the panic's words.
-    Panicked { doing: String, message: String },
 }
 
 impl Request {
@@ -184,26 +182,6 @@ impl Request {
         match self {
             Request::Resume { .. } | Request::Load { .. } | Request::Finish { .. } => 60_000.0,
             _ => 15_000.0,
-        }
-    }
-
-    /// What doing it is, in words, for a message if it fails ("growing the shell of …").
-    pub fn describe(&self) -> String {
-        let shell = |link: &str| format!("the shell of #{link}");
-        match self {
-            Request::Load { link, .. } => format!("building {}", shell(link)),
-            Request::Grow { rows, .. } => format!("growing the shell by {rows} rows"),
-            Request::Finish { .. } => "growing the shell to its end".into(),
-            Request::Resume { link, rows, .. } => {
-                format!("growing {} again to row {rows}", shell(link))
-            }
-            Request::Preview { link, .. } => format!("starting the pattern of #{link}"),
-            Request::Fill { .. } => "computing the pattern being previewed".into(),
-            Request::Pieces { link, ids, .. } => {
-                format!("meshing {} chunks of {}", ids.len(), shell(link))
-            }
-            Request::Whole { link, .. } => format!("growing {} for its picture", shell(link)),
-            Request::Tile { link, .. } => format!("computing the map's tile #{link}"),
         }
     }
 }
@@ -228,7 +206,6 @@ const PREVIEWED: u8 = 106;
 const MADE: u8 = 107;
 const GROWN: u8 = 108;
 const TILED: u8 = 109;
-const PANICKED: u8 = 110;
 
 /// A request in its envelope, as bytes.
 pub fn encode_request(ticket: u32, request: &Request) -> Vec<u8> {
@@ -588,11 +565,6 @@ pub fn encode_reply(ticket: u32, reply: &Reply) -> Vec<u8> {
                 w.bytes(&picture.rgba);
             });
         }
-        Reply::Panicked { doing, message } => {
-            w.u8(PANICKED);
-            w.str(doing);
-            w.str(message);
-        }
     }
     w.into_bytes()
 }
@@ -675,10 +647,6 @@ pub fn decode_reply(bytes: &[u8]) -> Result<(u32, Reply), WireError> {
                     rgba: r.bytes("picture")?.to_vec(),
                 })
             })?,
-        },
-        PANICKED => Reply::Panicked {
-            doing: r.string("what it was doing")?,
-            message: r.string("message")?,
         },
         _ => {
             return Err(WireError {

@@ -166,13 +166,6 @@ impl Replica {
         self.joining.as_ref().map(|j| &j.pieces)
     }
 
-    /// Which groups of the pieces are still to come.
-    pub fn groups_left(&self) -> Vec<usize> {
-        self.joining.as_ref().map_or(Vec::new(), |j| {
-            (0..j.arrived.len()).filter(|&g| !j.arrived[g]).collect()
-        })
-    }
-
     /// The meshes of group `group` of the pieces have come (with the hash of them all; a
     /// group that came already is ignored); once every group is in, they are joined and the
     /// ranges added are returned.
