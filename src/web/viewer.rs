@@ -95,12 +95,7 @@ pub struct Viewer {
     session: u32,
 }
 
-/// Milliseconds since the page started.
-pub fn now() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.performance())
-        .map_or(0.0, |p| p.now())
-}
+pub use super::page::now;
 
 impl Viewer {
     pub async fn new(

@@ -10,8 +10,7 @@
 //! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
 //! first request (see `www/worker.js`).
 
-use super::page::{set_text, signal};
-use super::viewer::now;
+use super::page::{now, set_text, signal};
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
 use crate::work::pool::{Pool, SESSIONS, size_for};
