@@ -1,8 +1,12 @@
 //! The browser's graphics device on one canvas: WebGPU when an adapter comes, WebGL2
-//! otherwise, the canvas configured in an 8-bit colour format, and a watch that turns a lost
-//! device or an uncaptured error into words the page shows.
+//! otherwise, the canvas configured in an 8-bit colour format, and a watch that records a lost
+//! device (WebGPU's device-lost callback, WebGL's `webglcontextlost` and
+//! `webglcontextrestored` events) apart from an uncaptured error, so that the page can open a
+//! device again after the one and say the other in words.
 
 use std::sync::{Arc, Mutex};
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::Closure;
 
 /// MSAA samples when the format allows them.
 const SAMPLES: u32 = 4;
@@ -17,15 +21,28 @@ pub(super) struct Gpu {
     pub(super) backend: &'static str,
     /// MSAA samples the surface's format allows, up to [`SAMPLES`].
     pub(super) samples: u32,
-    /// A device loss or error reported since the start, in words.
-    pub(super) failure: Arc<Mutex<Option<String>>>,
+    /// What the watch saw: a lost device, an uncaptured error.
+    pub(super) watch: Arc<Mutex<Watch>>,
+    /// The canvas's WebGL context events, removed with the device.
+    _context_events: Vec<CanvasListener>,
+}
+
+/// A lost device or an error, as the watch saw them.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Watch {
+    /// Why the device was lost, in words, once it is.
+    pub(super) lost: Option<String>,
+    /// Whether the browser gave a lost WebGL context back (`webglcontextrestored`).
+    pub(super) restored: bool,
+    /// The first uncaptured error, in words.
+    pub(super) error: Option<String>,
 }
 
 impl Gpu {
     /// Opens a device on `canvas` and configures the canvas for it.
     pub(super) async fn open(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
         let (width, height) = (canvas.width().max(1), canvas.height().max(1));
-        let (surface, adapter, backend) = adapter(canvas).await?;
+        let (surface, adapter, backend) = adapter(canvas.clone()).await?;
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("seashells"),
@@ -36,7 +53,12 @@ impl Gpu {
             })
             .await
             .map_err(|e| format!("The {backend} device could not be opened ({e})."))?;
-        let failure = watch(&device);
+        let watch = watch(&device);
+        let context_events = if backend == "WebGL2" {
+            watch_context(&canvas, &watch)
+        } else {
+            Vec::new()
+        };
         let config = configuration(&surface, &adapter, width, height)?;
         surface.configure(&device, &config);
         let samples = if adapter
@@ -55,7 +77,8 @@ impl Gpu {
             config,
             backend,
             samples,
-            failure,
+            watch,
+            _context_events: context_events,
         })
     }
 }
@@ -92,24 +115,69 @@ async fn adapter(
     Ok((surface, adapter, backend))
 }
 
-/// Where a lost device or an uncaptured error is written, in words, for the page to show.
-fn watch(device: &wgpu::Device) -> Arc<Mutex<Option<String>>> {
-    let failure = Arc::new(Mutex::new(None));
-    let lost = Arc::clone(&failure);
+/// Where a lost device or an uncaptured error is written, in words, for the page.
+fn watch(device: &wgpu::Device) -> Arc<Mutex<Watch>> {
+    let watch = Arc::new(Mutex::new(Watch::default()));
+    let lost = Arc::clone(&watch);
     device.set_device_lost_callback(move |reason, message| {
-        if let Ok(mut slot) = lost.lock() {
-            *slot = Some(format!(
-                "The graphics device was lost ({reason:?}: {message}). Reload the page to continue."
-            ));
+        if let Ok(mut w) = lost.lock() {
+            w.lost = Some(format!("{reason:?}: {message}"));
         }
     });
-    let errors = Arc::clone(&failure);
+    let errors = Arc::clone(&watch);
     device.on_uncaptured_error(Arc::new(move |error| {
-        if let Ok(mut slot) = errors.lock() {
-            slot.get_or_insert_with(|| format!("The graphics device reported an error: {error}"));
+        if let Ok(mut w) = errors.lock() {
+            w.error
+                .get_or_insert_with(|| format!("The graphics device reported an error: {error}"));
         }
     }));
-    failure
+    watch
+}
+
+/// An event listener on a canvas, removed when dropped (its closure goes with it).
+pub(super) struct CanvasListener {
+    canvas: web_sys::HtmlCanvasElement,
+    kind: &'static str,
+    closure: Closure<dyn FnMut(web_sys::Event)>,
+}
+
+impl Drop for CanvasListener {
+    fn drop(&mut self) {
+        // Removing a listener that is there cannot fail.
+        let _ = self
+            .canvas
+            .remove_event_listener_with_callback(self.kind, self.closure.as_ref().unchecked_ref());
+    }
+}
+
+/// Watches a WebGL2 canvas for the browser taking its context away, and giving it back. The
+/// loss is accepted (`preventDefault`), which asks the browser to restore the context later.
+fn watch_context(
+    canvas: &web_sys::HtmlCanvasElement,
+    watch: &Arc<Mutex<Watch>>,
+) -> Vec<CanvasListener> {
+    let listen = |kind: &'static str, seen: fn(&mut Watch)| {
+        let watch = Arc::clone(watch);
+        let closure = Closure::<dyn FnMut(web_sys::Event)>::new(move |event: web_sys::Event| {
+            event.prevent_default();
+            if let Ok(mut w) = watch.lock() {
+                seen(&mut w);
+            }
+        });
+        // Adding a listener to an element cannot fail.
+        let _ = canvas.add_event_listener_with_callback(kind, closure.as_ref().unchecked_ref());
+        CanvasListener {
+            canvas: canvas.clone(),
+            kind,
+            closure,
+        }
+    };
+    vec![
+        listen("webglcontextlost", |w| {
+            w.lost = Some("the browser took the WebGL context away".into());
+        }),
+        listen("webglcontextrestored", |w| w.restored = true),
+    ]
 }
 
 /// The canvas's configuration: an sRGB 8-bit format where it has one (else a linear one, and

@@ -104,6 +104,16 @@ fn ground_quad(grown: &Bounds) -> Mesh {
     mesh
 }
 
+/// A device the browser took away.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Loss {
+    /// Why, in words.
+    pub reason: String,
+    /// Whether the browser gave the canvas's WebGL context back, so that a device can be
+    /// opened on the same canvas again.
+    pub restored: bool,
+}
+
 /// The buffers of one shell.
 struct Shell {
     mesh: MeshBuffers,
@@ -204,9 +214,26 @@ impl Renderer {
         self.gpu.backend
     }
 
-    /// A device loss or error reported since the start, in words.
+    /// An uncaptured error of the device, in words.
     pub fn failure(&self) -> Option<String> {
-        self.gpu.failure.lock().ok().and_then(|f| f.clone())
+        self.gpu.watch.lock().ok().and_then(|w| w.error.clone())
+    }
+
+    /// Whether the browser took the device away, and why: then nothing more is drawn with
+    /// this renderer, and another must be opened.
+    pub fn lost(&self) -> Option<Loss> {
+        let watch = self.gpu.watch.lock().ok()?;
+        watch.lost.clone().map(|reason| Loss {
+            reason,
+            restored: watch.restored,
+        })
+    }
+
+    /// Destroys the device as a driver reset would (`GPUDevice.destroy()` on WebGPU; nothing
+    /// on WebGL2, whose context the `WEBGL_lose_context` extension takes away instead). For the
+    /// page tests' test-only hook.
+    pub fn destroy_device(&self) {
+        self.gpu.device.destroy();
     }
 
     /// The clear colour, as sRGB bytes; written as is to a target that does not encode sRGB.

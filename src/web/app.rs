@@ -10,9 +10,11 @@
 //! four), `data-encoder` (what the page records video with: a codec's name, MediaRecorder, none,
 //! or checking), `data-record` (recording, saved, cancelled, failed) and `data-record-frames`
 //! (video frames captured), `data-growth` (growing, done: whether the shell is grown whole, before
-//! the view comes to rest), `data-workers` (workers in the pool, 0 on the page's own thread)
-//! and `data-worker-deaths` (workers replaced so far).
+//! the view comes to rest), `data-workers` (workers in the pool, 0 on the page's own thread),
+//! `data-worker-deaths` (workers replaced so far) and `data-recoveries` (how many times the
+//! graphics device was lost and opened again; the state is `recovering` meanwhile).
 
+use super::activity;
 use super::dom;
 use super::download::Downloads;
 use super::gallery::Pictures;
@@ -21,7 +23,7 @@ use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
 use super::record::{self, Recording, Step, Support};
 use super::share;
-use super::viewer::{Viewer, now};
+use super::viewer::{Device, Viewer, now};
 use super::workers::Workers;
 use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;
@@ -56,8 +58,8 @@ pub struct App {
     on_change: Option<OnChange>,
     in_gallery: bool,
     url_due: Option<f64>,
-    /// Why the page cannot go on (the graphics device was lost): the next frame stops on it.
-    failure: Option<String>,
+    /// How many times the main viewer's graphics device was lost and opened again.
+    recoveries: u32,
     /// What the browser can record video with (found out after the start).
     support: Rc<RefCell<Support>>,
     /// A video being recorded.
@@ -106,7 +108,7 @@ impl App {
             on_change: None,
             in_gallery: false,
             url_due: None,
-            failure: None,
+            recoveries: 0,
             support: Rc::new(RefCell::new(Support::Checking)),
             recording: None,
         }
@@ -135,6 +137,7 @@ impl App {
     pub fn route(&mut self) {
         self.map.close(&mut self.workers.borrow_mut());
         let fragment = location_hash();
+        activity::set(format!("opening the link {fragment}"));
         if fragment.trim_start_matches('#').is_empty() {
             self.stop_recording("you went back to the gallery");
             self.present(Presentation::default());
@@ -217,6 +220,7 @@ impl App {
     /// result; passed by a dragged slider of the pattern, the planar view shows the whole
     /// pattern of the result while the shell waits.
     pub fn edit(&mut self, key: &str, value: String, change: Change) {
+        activity::set(format!("applying {key}={value}"));
         let Some((preset, spec)) = &self.current else {
             return;
         };
@@ -537,15 +541,51 @@ impl App {
             .start(what, &mut self.viewer, self.current.as_ref());
     }
 
-    /// Stops the page on a failure it cannot recover from; the frame loop says why.
-    pub fn fail(&mut self, message: &str) {
-        self.failure = Some(message.to_string());
+    /// Test-only (see `debug.rs`): destroys both graphics devices, the main viewer's and the
+    /// gallery pictures', as a driver reset would.
+    pub fn destroy_devices(&self) {
+        self.viewer.destroy_device();
+        self.pictures.destroy_device();
+    }
+
+    /// Keeps the main viewer's graphics device, saying in words when it was lost and when it
+    /// is back; returns whether the frame may draw.
+    fn survive(&mut self) -> Result<bool, String> {
+        match self.viewer.survive() {
+            Device::Ready => Ok(true),
+            Device::Reopening(reason) => {
+                show_message(&format!(
+                    "The graphics device was lost ({reason}); opening it again…"
+                ));
+                if !self.in_gallery {
+                    signal("state", "recovering");
+                }
+                Ok(false)
+            }
+            Device::Reopened(backend) => {
+                self.recoveries += 1;
+                signal("recoveries", &self.recoveries.to_string());
+                signal("backend", backend);
+                set_text("backend", &format!("Drawn with {backend}"));
+                if self.in_gallery {
+                    page::hide_message();
+                } else {
+                    let rows = self.viewer.growing().map_or(0, |g| g.replica.rows_done());
+                    show_message(&format!(
+                        "The graphics device was lost and has been opened again, with \
+                         {backend}: the shell goes on from row {rows}."
+                    ));
+                }
+                Ok(true)
+            }
+            Device::Gone(message) => Err(message),
+        }
     }
 
     /// One animation frame.
     pub fn frame(&mut self) -> Result<(), String> {
-        if let Some(failure) = &self.failure {
-            return Err(failure.clone());
+        if !self.survive()? {
+            return Ok(());
         }
         self.downloads.work();
         self.take_replies();
@@ -554,6 +594,7 @@ impl App {
             return Ok(());
         }
         if self.in_gallery {
+            self.pictures.work();
             signal(
                 "pictures",
                 if self.pictures.finished() {
@@ -569,6 +610,7 @@ impl App {
         }
         if self.map.is_open() {
             // The map covers the shell, which waits meanwhile.
+            activity::set("drawing the parameter map".to_string());
             return Ok(());
         }
         let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;

@@ -5,13 +5,14 @@
 //! off-screen canvas as they come.
 
 use super::dom::{append, attr, create, typed};
-use super::viewer::Viewer;
+use super::viewer::{Device, Viewer, now};
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;
 use crate::work::message::{Request, WholeShell};
+use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
 
 /// Fills `container` with one section per group and one card per preset.
@@ -57,7 +58,16 @@ pub struct Pictures {
     left: Vec<&'static Preset>,
     /// Whether the pool has been asked for them since the gallery was last shown.
     asked: bool,
+    /// Shells grown and not drawn yet: their answer came while the graphics device was lost.
+    waiting: Vec<(&'static Preset, WholeShell)>,
+    /// Pictures drawn within [`LOSS_NOTICE_MS`], their shells, and when: the browser tells of a
+    /// lost device a little after the fact, so these may be blank and are drawn again after a
+    /// loss.
+    lately: VecDeque<(&'static Preset, WholeShell, f64)>,
 }
+
+/// Milliseconds within which the browser is taken to report a lost device.
+const LOSS_NOTICE_MS: f64 = 2000.0;
 
 /// Voxels along the longest side of an implicit shell in a gallery picture: enough for its
 /// size, and quick to grow.
@@ -78,6 +88,8 @@ impl Pictures {
             viewer,
             left: presets().iter().collect(),
             asked: false,
+            waiting: Vec::new(),
+            lately: VecDeque::new(),
         }
     }
 
@@ -102,7 +114,8 @@ impl Pictures {
         self.asked = false;
     }
 
-    /// A worker grew the shell of `link`: draws its picture onto its card.
+    /// A worker grew the shell of `link`: draws its picture onto its card (once a graphics
+    /// device is at hand).
     pub fn take(&mut self, link: &str, result: Result<WholeShell, String>) {
         let Some(at) = self
             .left
@@ -115,18 +128,45 @@ impl Pictures {
         let Ok(whole) = result else {
             return;
         };
-        self.viewer.show_whole(preset, &picture_spec(preset), whole);
-        let Ok(url) = self.viewer.picture() else {
+        self.waiting.push((preset, whole));
+        self.work();
+    }
+
+    /// Keeps the pictures' graphics device and draws the shells waiting for it. After a loss,
+    /// the pictures drawn just before it are drawn again on the next device.
+    pub fn work(&mut self) {
+        if self.viewer.survive() != Device::Ready {
+            for (preset, whole, _) in self.lately.drain(..) {
+                self.waiting.push((preset, whole));
+            }
             return;
-        };
-        let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
-        let image = super::page::document()
-            .query_selector(&selector)
-            .ok()
-            .flatten()
-            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
-        if let Some(img) = image {
-            img.set_src(&url);
+        }
+        let noticed = now() - LOSS_NOTICE_MS;
+        while self.lately.front().is_some_and(|(_, _, at)| *at < noticed) {
+            self.lately.pop_front();
+        }
+        while let Some((preset, whole)) = self.waiting.pop() {
+            self.viewer
+                .show_whole(preset, &picture_spec(preset), whole.clone());
+            let picture = self.viewer.picture();
+            if self.viewer.survive() != Device::Ready {
+                // Lost while drawing: the picture may be blank; it is drawn on the next device.
+                self.waiting.push((preset, whole));
+                return;
+            }
+            let Ok(url) = picture else {
+                continue;
+            };
+            self.lately.push_back((preset, whole, now()));
+            let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
+            let image = super::page::document()
+                .query_selector(&selector)
+                .ok()
+                .flatten()
+                .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+            if let Some(img) = image {
+                img.set_src(&url);
+            }
         }
     }
 
@@ -135,8 +175,14 @@ impl Pictures {
         self.viewer.set_background(srgb);
     }
 
-    /// Whether every picture is drawn.
+    /// Test-only (see `debug.rs`): destroys the pictures' graphics device.
+    pub fn destroy_device(&self) {
+        self.viewer.destroy_device();
+    }
+
+    /// Whether every picture is drawn, and the last of them long enough ago that a lost
+    /// device would have been reported.
     pub fn finished(&self) -> bool {
-        self.left.is_empty()
+        self.left.is_empty() && self.waiting.is_empty() && self.lately.is_empty()
     }
 }

@@ -1,7 +1,9 @@
 //! The browser adapter: the wasm entry, the requestAnimationFrame loop, and the events that
 //! reach the app. Everything it shows comes from the pure core.
 
+mod activity;
 mod app;
+mod debug;
 mod dom;
 mod download;
 mod gallery;
@@ -10,6 +12,7 @@ mod page;
 mod panel;
 mod planar;
 mod record;
+mod recovery;
 mod share;
 mod viewer;
 mod webcodecs;
@@ -28,13 +31,16 @@ use web_sys::{
     WheelEvent,
 };
 
-/// Installs the panic hook: the console gets the full report, the page a sentence.
+/// Installs the panic hook: the console gets the full report, the page a sentence saying what
+/// was being done ("while growing murex-pecten, row 312") and a button that reloads the link.
 #[wasm_bindgen(start)]
 pub fn install_panic_hook() {
     std::panic::set_hook(Box::new(|info| {
         console_error_panic_hook::hook(info);
-        page::show_error(&format!(
-            "Something went wrong inside the shell generator: {info}"
+        page::show_crash(&format!(
+            "Something went wrong while {}: {info}. The page cannot go on; reloading the link \
+             starts this shell again.",
+            activity::describe()
         ));
     }));
 }
@@ -105,6 +111,13 @@ pub async fn start() -> Result<(), JsValue> {
         workers,
     )));
     let weak = Rc::downgrade(&app);
+    debug::register(Box::new(move || {
+        let app = weak.upgrade().ok_or("the page has ended")?;
+        let app = app.try_borrow().map_err(|_| "the page is busy")?;
+        app.destroy_devices();
+        Ok(())
+    }));
+    let weak = Rc::downgrade(&app);
     app.borrow_mut()
         .set_on_change(Rc::new(move |key: &str, value: String, change| {
             if let Some(app) = weak.upgrade() {
@@ -143,9 +156,20 @@ type FrameLoop = Rc<RefCell<Option<Closure<dyn FnMut()>>>>;
 fn run(app: Shared) {
     let callback: FrameLoop = Rc::new(RefCell::new(None));
     let next = Rc::clone(&callback);
-    *callback.borrow_mut() = Some(Closure::new(move || match app.borrow_mut().frame() {
-        Ok(()) => request_frame(next.borrow().as_ref().expect("the loop holds its closure")),
-        Err(message) => page::show_error(&message),
+    *callback.borrow_mut() = Some(Closure::new(move || {
+        let outcome = app.borrow_mut().frame();
+        // A fresh canvas took the old one's place (a lost device opened again): listen to it.
+        let replaced = app.borrow_mut().viewer().take_replaced_canvas();
+        if let Some(canvas) = replaced
+            && let Err(e) = listen_canvas(&app, &canvas.into())
+        {
+            page::show_error(&format!("The new canvas could not be listened to: {e:?}"));
+            return;
+        }
+        match outcome {
+            Ok(()) => request_frame(next.borrow().as_ref().expect("the loop holds its closure")),
+            Err(message) => page::show_error(&message),
+        }
     }));
     request_frame(callback.borrow().as_ref().expect("just set"));
 }
@@ -166,8 +190,10 @@ fn on<E: JsCast + 'static>(
 ) -> Result<(), JsValue> {
     let app = Rc::clone(app);
     let closure = Closure::<dyn FnMut(Event)>::new(move |event: Event| {
-        if let Ok(event) = event.dyn_into::<E>() {
-            handler(&mut app.borrow_mut(), event);
+        // After a panic the app stays borrowed: events then do nothing, and the page shows
+        // the panic's message.
+        if let (Ok(event), Ok(mut app)) = (event.dyn_into::<E>(), app.try_borrow_mut()) {
+            handler(&mut app, event);
         }
     });
     let options = web_sys::AddEventListenerOptions::new();
@@ -202,6 +228,37 @@ fn typing(e: &KeyboardEvent) -> bool {
     )
 }
 
+/// Listens to the shell's canvas: orbit, zoom, reset (again on a fresh canvas that replaced it).
+fn listen_canvas(app: &Shared, canvas: &EventTarget) -> Result<(), JsValue> {
+    on(canvas, "pointerdown", app, |a, e: PointerEvent| {
+        let v = a.viewer();
+        // Capture keeps the drag alive outside the canvas; failing that, it ends at the edge.
+        let _ = v.canvas().set_pointer_capture(e.pointer_id());
+        v.pointers
+            .press(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
+    })?;
+    on(canvas, "pointermove", app, |a, e: PointerEvent| {
+        a.viewer()
+            .pointer_moved(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
+    })?;
+    for kind in ["pointerup", "pointercancel"] {
+        on(canvas, kind, app, |a, e: PointerEvent| {
+            a.viewer().pointers.release(e.pointer_id())
+        })?;
+    }
+    on(canvas, "wheel", app, |a, e: WheelEvent| {
+        // An embedded shell leaves the wheel to the page around it; a pinch (or the wheel with
+        // Ctrl) still zooms.
+        if a.embedded() && !e.ctrl_key() {
+            return;
+        }
+        e.prevent_default();
+        a.viewer().wheel(e.delta_y());
+    })?;
+    on(canvas, "dblclick", app, |a, _: Event| a.reset_camera())?;
+    Ok(())
+}
+
 fn listen(app: &Shared) -> Result<(), JsValue> {
     let window: EventTarget = web_sys::window().ok_or("no window")?.into();
     on(&window, "hashchange", app, |a, _: Event| a.route())?;
@@ -212,36 +269,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             a.theme_changed()
         })?;
     }
-    let canvas: EventTarget = canvas("shell")?.into();
-    on(&canvas, "pointerdown", app, |a, e: PointerEvent| {
-        let v = a.viewer();
-        // Capture keeps the drag alive outside the canvas; failing that, it ends at the edge.
-        let _ = v.canvas().set_pointer_capture(e.pointer_id());
-        v.pointers
-            .press(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
-    })?;
-    on(&canvas, "pointermove", app, |a, e: PointerEvent| {
-        a.viewer()
-            .pointer_moved(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
-    })?;
-    for kind in ["pointerup", "pointercancel"] {
-        on(&canvas, kind, app, |a, e: PointerEvent| {
-            a.viewer().pointers.release(e.pointer_id())
-        })?;
-    }
-    on(&canvas, "wheel", app, |a, e: WheelEvent| {
-        // An embedded shell leaves the wheel to the page around it; a pinch (or the wheel with
-        // Ctrl) still zooms.
-        if a.embedded() && !e.ctrl_key() {
-            return;
-        }
-        e.prevent_default();
-        a.viewer().wheel(e.delta_y());
-    })?;
-    on(&canvas, "dblclick", app, |a, _: Event| a.reset_camera())?;
-    on(&canvas, "webglcontextlost", app, |a, _: Event| {
-        a.fail("The graphics device was lost: the browser took WebGL away from this page. Reload the page to continue.");
-    })?;
+    listen_canvas(app, &canvas("shell")?.into())?;
     on_click("play", app, App::toggle_playing)?;
     on_click("restart", app, App::restart)?;
     on_click("step", app, App::step)?;

@@ -61,6 +61,22 @@ pub fn show_error(text: &str) {
     signal("state", "error");
 }
 
+/// Shows what a panic left: what was being done and what went wrong, above a button that
+/// reloads the link (wired in main.js, which works without the wasm). The first panic's message
+/// stays: later ones are what the first left broken.
+pub fn show_crash(text: &str) {
+    let Some(crash) = element("crash") else {
+        return show_error(text);
+    };
+    if !crash.hidden() {
+        return;
+    }
+    set_text("crash-text", text);
+    crash.set_hidden(false);
+    signal("state", "error");
+    signal("crashed", "true");
+}
+
 /// The page's background colour as sRGB bytes, following the light or dark theme (the same
 /// values as --bg in style.css).
 pub fn background() -> [u8; 3] {

@@ -2,10 +2,15 @@
 //! and the camera the pointer turns. Loading another spec restarts growth without reloading the
 //! page. The page's main view is one viewer, whose camera follows the growing shell; the
 //! gallery's pictures are drawn by another, framed on the whole shell. While a pattern slider
-//! is dragged, the planar view previews the whole pattern of its values instead.
+//! is dragged, the planar view previews the whole pattern of its values instead. When the
+//! browser takes the graphics device away, the viewer opens another (`recovery.rs`) and uploads
+//! the shell grown so far to it: growth goes on from where it was.
 
+use super::activity;
+use super::debug;
 use super::page::show_message;
 use super::planar::Planar;
+use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use super::workers::Workers;
 use crate::generator::Advance;
 use crate::mesh::Bounds;
@@ -48,6 +53,32 @@ pub struct Growing {
 }
 
 impl Growing {
+    /// Records what is being grown, for a panic's message; a test may ask for a panic here.
+    fn note_activity(&self) {
+        activity::set(format!(
+            "growing {}, row {}",
+            self.preset.id,
+            self.replica.rows_done() + 1
+        ));
+        debug::panic_if_asked();
+    }
+
+    /// Sets `renderer` up for this shell as its worker built it: buffers, pattern texture and
+    /// look. A renderer opened again after a lost device is set up the same way.
+    fn load_into(&self, renderer: &mut Renderer, shell: &ShellInfo) {
+        renderer.load_shell(
+            shell.capacity,
+            self.planar_size
+                .and_then(|(cells, rows)| TextureLayout::new(cells, rows)),
+            ShellLook::new(
+                &self.spec.colours,
+                &self.spec.material,
+                crate::forms::rows_per_whorl(&self.spec),
+                shell.line_grid,
+            ),
+        );
+    }
+
     /// Whether the view rests on what has grown (or where the user left it).
     pub fn view_at_rest(&self) -> bool {
         self.camera.settled(self.replica.grown())
@@ -93,6 +124,28 @@ pub struct Viewer {
     workers: Rc<RefCell<Workers>>,
     /// The last session started (each load starts one; replies of older ones are dropped).
     session: u32,
+    /// The clear colour, as sRGB bytes (for a renderer opened again).
+    background: [u8; 3],
+    /// A renderer being opened after the device was lost, and when the loss was seen.
+    reopening: Option<Reopening>,
+    lost_at: Option<f64>,
+    /// Why no renderer could be opened again: the viewer draws no more.
+    gone: Option<String>,
+    /// A fresh canvas that took the old one's place, until the page moves its listeners.
+    replaced_canvas: Option<HtmlCanvasElement>,
+}
+
+/// The state of the viewer's graphics device.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Device {
+    /// Drawing.
+    Ready,
+    /// Lost (why, in words), and being opened again.
+    Reopening(String),
+    /// Opened again just now, with this backend.
+    Reopened(&'static str),
+    /// Lost for good: no device could be opened again (why, in words).
+    Gone(String),
 }
 
 pub use super::page::now;
@@ -121,6 +174,11 @@ impl Viewer {
             fixed_size: None,
             workers,
             session: 0,
+            background,
+            reopening: None,
+            lost_at: None,
+            gone: None,
+            replaced_canvas: None,
         })
     }
 
@@ -136,6 +194,7 @@ impl Viewer {
 
     /// Follows a change of the page's theme.
     pub fn set_background(&mut self, srgb: [u8; 3]) {
+        self.background = srgb;
         self.renderer.set_background(srgb);
         self.dirty = true;
     }
@@ -149,6 +208,7 @@ impl Viewer {
     /// the work still waiting for it; nothing more of it reaches the screen. The worker's
     /// answer comes in a later frame ([`Self::take`]).
     pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) {
+        activity::set(format!("loading {}", preset.id));
         self.session = self.session.wrapping_add(1);
         let link = link::encode(preset, spec);
         let mut workers = self.workers.borrow_mut();
@@ -204,17 +264,8 @@ impl Viewer {
     fn loaded(&mut self, shell: ShellInfo, advance: Advance) {
         let Some(g) = &mut self.growing else { return };
         let pattern = (shell.cells > 0).then_some((shell.cells, g.spec.growth.rows));
-        let layout = pattern.and_then(|(cells, rows)| TextureLayout::new(cells, rows));
-        self.renderer.load_shell(
-            shell.capacity,
-            layout,
-            ShellLook::new(
-                &g.spec.colours,
-                &g.spec.material,
-                crate::forms::rows_per_whorl(&g.spec),
-                shell.line_grid,
-            ),
-        );
+        g.planar_size = pattern;
+        g.load_into(&mut self.renderer, &shell);
         let mut grown = Bounds::EMPTY;
         grown.include_vertices(&g.replica.mesh().vertices);
         grown.include_vertices(&g.replica.edge().vertices);
@@ -232,7 +283,6 @@ impl Viewer {
             .planar_canvas
             .clone()
             .and_then(|c| Planar::new(c, pattern));
-        g.planar_size = pattern;
         self.upload(&advance);
     }
 
@@ -446,6 +496,91 @@ impl Viewer {
             .map_or("", |p| p.state.signal())
     }
 
+    /// Keeps a graphics device: when the browser took the renderer's away, opens another in
+    /// the background (on the same canvas, or a fresh one; see `recovery.rs`) and, once it is
+    /// open, uploads the shell grown so far to it. Called once a frame before anything is drawn.
+    pub fn survive(&mut self) -> Device {
+        if let Some(gone) = &self.gone {
+            return Device::Gone(gone.clone());
+        }
+        if let Some(reopening) = &self.reopening {
+            return match reopening.take() {
+                None => Device::Reopening(self.loss_reason()),
+                Some(Ok(reopened)) => {
+                    self.reopening = None;
+                    self.lost_at = None;
+                    self.install(reopened);
+                    Device::Reopened(self.renderer.backend())
+                }
+                Some(Err(e)) => {
+                    self.reopening = None;
+                    let gone = format!(
+                        "The graphics device was lost ({}) and none could be opened again: {e}",
+                        self.loss_reason()
+                    );
+                    self.gone = Some(gone.clone());
+                    Device::Gone(gone)
+                }
+            };
+        }
+        let Some(loss) = self.renderer.lost() else {
+            return Device::Ready;
+        };
+        let since = *self.lost_at.get_or_insert_with(now);
+        let webgl = self.renderer.backend() == "WebGL2";
+        if webgl && !loss.restored && now() - since < RESTORE_WAIT_MS {
+            // The browser may give the context back (webglcontextrestored): wait a little.
+            return Device::Reopening(loss.reason);
+        }
+        self.reopening = Some(Reopening::start(
+            self.canvas.clone(),
+            webgl && !loss.restored,
+        ));
+        Device::Reopening(loss.reason)
+    }
+
+    fn loss_reason(&self) -> String {
+        self.renderer
+            .lost()
+            .map_or_else(|| "no reason given".to_string(), |l| l.reason)
+    }
+
+    /// Draws with a renderer opened again: the shell's buffers and texture are made anew and
+    /// take everything grown so far (mesh, edge and pattern rows), which the page's copy of the
+    /// shell kept.
+    fn install(&mut self, reopened: Reopened) {
+        let Reopened {
+            mut renderer,
+            canvas,
+        } = reopened;
+        renderer.set_background(self.background);
+        if canvas != self.canvas {
+            self.replaced_canvas = Some(canvas.clone());
+        }
+        self.canvas = canvas;
+        self.renderer = renderer;
+        let everything = self.growing.as_ref().and_then(|g| {
+            let shell = g.replica.shell()?;
+            g.load_into(&mut self.renderer, shell);
+            Some(g.replica.everything())
+        });
+        if let Some(everything) = everything {
+            self.upload(&everything);
+        }
+        self.dirty = true;
+    }
+
+    /// A fresh canvas that took the old one's place since the last call: the page listens to
+    /// it instead.
+    pub fn take_replaced_canvas(&mut self) -> Option<HtmlCanvasElement> {
+        self.replaced_canvas.take()
+    }
+
+    /// Test-only (see `debug.rs`): destroys the graphics device as a driver reset would.
+    pub fn destroy_device(&self) {
+        self.renderer.destroy_device();
+    }
+
     /// Asks the shell's worker to grow up to `rows` rows, stopping early when `budget_ms`
     /// has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
@@ -454,6 +589,7 @@ impl Viewer {
         if g.finishing || g.replica.is_done() {
             return;
         }
+        g.note_activity();
         self.workers.borrow_mut().submit(Request::Grow {
             session: g.replica.session(),
             rows: u32::try_from(rows).unwrap_or(u32::MAX),
@@ -470,6 +606,7 @@ impl Viewer {
         if g.finishing || g.replica.is_done() {
             return;
         }
+        g.note_activity();
         self.workers.borrow_mut().submit(Request::Finish {
             session: g.replica.session(),
         });
@@ -499,6 +636,9 @@ impl Viewer {
     pub fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
+        }
+        if self.reopening.is_some() || self.renderer.lost().is_some() {
+            return Ok(false);
         }
         self.fit_canvas();
         if let Some(g) = &mut self.growing
@@ -585,6 +725,9 @@ impl Viewer {
 
     /// Draws now and returns the canvas as a PNG data URL (read before the browser clears it).
     pub fn picture(&mut self) -> Result<String, String> {
+        if let Some(loss) = self.renderer.lost() {
+            return Err(format!("the graphics device was lost ({})", loss.reason));
+        }
         let Some(g) = &self.growing else {
             return Err("nothing is drawn yet".into());
         };
@@ -634,6 +777,9 @@ impl Viewer {
     pub fn draw_recorded(&mut self, dt: f32, turn: f32) -> Result<(), String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
+        }
+        if let Some(loss) = self.renderer.lost() {
+            return Err(format!("the graphics device was lost ({})", loss.reason));
         }
         self.fit_canvas();
         let Some(g) = &mut self.growing else {

@@ -54,7 +54,11 @@ export async function waitForState(page, states, timeout = 120_000) {
  */
 export async function measureCanvas(page, file) {
   const canvas = page.locator('#shell');
-  const png = await canvas.screenshot({ path: file });
+  return measurePng(page, await canvas.screenshot({ path: file }));
+}
+
+/** The same measure as `measureCanvas`, of any PNG's bytes, computed in `page`. */
+export function measurePng(page, png) {
   return page.evaluate(async (bytes) => {
     const blob = new Blob([new Uint8Array(bytes)], { type: 'image/png' });
     const bitmap = await createImageBitmap(blob);

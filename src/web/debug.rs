@@ -1,0 +1,44 @@
+//! Test-only hooks, exported from the wasm module for the page tests
+//! (`tests/page/survive.test.mjs`) to force what a user's machine does rarely: a destroyed
+//! graphics device and a panic. They are not part of the page's interface; calling one does to
+//! the page what the event itself would, and the page must survive it.
+
+use std::cell::{Cell, RefCell};
+use wasm_bindgen::prelude::*;
+
+/// Destroys the page's graphics devices; says why it could not.
+pub type Destroy = Box<dyn Fn() -> Result<(), String>>;
+
+thread_local! {
+    static DESTROY: RefCell<Option<Destroy>> = const { RefCell::new(None) };
+    static PANIC_WHILE_GROWING: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Remembers how to reach the page's devices, for [`debug_destroy_device`].
+pub fn register(destroy: Destroy) {
+    DESTROY.with(|d| *d.borrow_mut() = Some(destroy));
+}
+
+/// Test-only: destroys the page's graphics devices, the main viewer's and the gallery
+/// pictures' (`GPUDevice.destroy()`, as a driver reset would lose them). On WebGL2 this does nothing: tests lose the context with
+/// `WEBGL_lose_context` instead.
+#[wasm_bindgen]
+pub fn debug_destroy_device() -> Result<(), JsValue> {
+    DESTROY.with(|d| match d.borrow().as_ref() {
+        Some(destroy) => destroy().map_err(JsValue::from),
+        None => Err("the page has not started".into()),
+    })
+}
+
+/// Test-only: makes the next growth step panic, inside the frame loop, as a bug would.
+#[wasm_bindgen]
+pub fn debug_panic_while_growing() {
+    PANIC_WHILE_GROWING.with(|p| p.set(true));
+}
+
+/// Panics if a test asked for it with [`debug_panic_while_growing`].
+pub fn panic_if_asked() {
+    if PANIC_WHILE_GROWING.with(|p| p.replace(false)) {
+        panic!("a panic forced by the page tests' hook (debug_panic_while_growing)");
+    }
+}

@@ -1,0 +1,247 @@
+// A page that survives: a destroyed WebGPU device, a lost WebGL context (given back by the
+// browser, or not) and a panic. After a lost device the page opens another (WebGPU again, or
+// WebGL2 when WebGPU cannot be had) and shows the shell again where it was, growth resumed, not
+// restarted; the finished shell then has the hashes of a fresh load. After a panic the page says
+// what it was doing and offers a button that reloads the link, which grows the same shell again.
+// The device is destroyed and the panic forced through test-only hooks exported by the wasm
+// module (src/web/debug.rs); the context is lost with WEBGL_lose_context. Screenshots after each
+// recovery are kept in tests/page/screenshots/ for people to look at.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { session, open, waitForState, measureCanvas, measurePng, differing } from './browser.mjs';
+
+const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
+mkdirSync(SHOTS, { recursive: true });
+// A swept shell with a reaction-diffusion pattern (2,100 rows), grown slowly enough to stop it
+// on the way.
+const LINK = '#v=1&preset=stripes&growth.speed=8';
+const PAUSE_AT = 150;
+
+/** Calls one of the wasm module's test-only hooks (src/web/debug.rs) in the page. */
+function hook(page, name) {
+  return page.evaluate(async (name) => {
+    const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
+    module[name]();
+  }, name);
+}
+
+/** The page's hashes of the finished shell. */
+async function finished(page) {
+  await page.keyboard.press('e');
+  const state = await waitForState(page, ['grown', 'error']);
+  assert.equal(state.state, 'grown', await page.textContent('#message'));
+  return { pattern: state.patternHash, mesh: state.meshHash, counts: state.mesh };
+}
+
+/** The hashes of a fresh load of the link, finished at once. */
+async function fresh({ browser, base }) {
+  const { page } = await open(browser, `${base}${LINK}`);
+  try {
+    await waitForState(page, ['growing']);
+    return await finished(page);
+  } finally {
+    await page.close();
+  }
+}
+
+/** Opens the link, lets it grow past PAUSE_AT rows and pauses; returns the row it stopped at. */
+async function grownAndPaused(page) {
+  await waitForState(page, ['growing']);
+  await page.waitForFunction((n) => Number(document.body.dataset.rows) >= n, PAUSE_AT, { timeout: 120_000 });
+  await page.keyboard.press('Space');
+  await page.waitForFunction(() => document.body.dataset.playing === 'false');
+  await page.waitForTimeout(300);
+  return Number(await page.evaluate(() => document.body.dataset.rows));
+}
+
+/**
+ * Marks the canvas element (a property, which a copy of the element does not take), to tell
+ * afterwards whether a fresh one took its place; and keeps every message the page shows from
+ * now on in `window.messages`.
+ */
+function markCanvas(page) {
+  return page.evaluate(() => {
+    document.getElementById('shell').original = true;
+    window.messages = [];
+    const message = document.getElementById('message');
+    new MutationObserver(() => window.messages.push(message.textContent))
+      .observe(message, { childList: true, characterData: true, subtree: true });
+  });
+}
+
+/**
+ * Waits for the page to say that the device was opened again, checks that growth resumed where
+ * it stopped (same row, still paused), that the shell is drawn again, that the canvas still
+ * answers a drag, and that the finished shell has the hashes of a fresh load.
+ */
+async function checkRecovered(page, run, { row, backend, sameCanvas, shot }) {
+  await page.waitForFunction(() => document.body.dataset.recoveries === '1', null, { timeout: 60_000 });
+  const state = await waitForState(page, ['growing']);
+  const said = await page.evaluate(() => window.messages);
+  assert.ok(said.some((m) => /^The graphics device was lost \(.+\); opening it again/.test(m)), `said: ${said.join(' | ')}`);
+  assert.equal(state.backend, backend, 'the backend the device was opened again with');
+  assert.equal(Number(state.rows), row, 'growth goes on from the row it had reached, not from the apex');
+  assert.match(await page.textContent('#message'), new RegExp(`opened again, with ${backend}: the shell goes on from row ${row}`));
+  assert.equal(
+    await page.evaluate(() => document.getElementById('shell').original === true),
+    sameCanvas,
+    sameCanvas ? 'drawn again on the same canvas' : 'drawn on a fresh canvas',
+  );
+  await page.waitForTimeout(1000);
+  const drawn = await measureCanvas(page, `${SHOTS}survive-${shot}.png`);
+  assert.ok(drawn.share > 0.03, `after recovery the shell covers only ${drawn.share} of the canvas`);
+  assert.ok(drawn.shades > 30, `after recovery only ${drawn.shades} shades: not the lit shell`);
+  // The canvas still answers: a drag turns the shell.
+  const before = await page.locator('#shell').screenshot();
+  const box = await page.locator('#shell').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 160, box.y + box.height / 2, { steps: 8 });
+  await page.mouse.up();
+  await page.waitForTimeout(800);
+  const turned = await page.locator('#shell').screenshot();
+  const moved = await differing(page, before, turned);
+  assert.ok(moved > 0.01, `a drag after recovery changed only ${moved} of the canvas`);
+  const after = await finished(page);
+  assert.deepEqual(after, await fresh(run), 'the finished shell equals a fresh load of the link');
+}
+
+/** How each test takes the device away, and how the page must come back. */
+const LOSSES = [
+  {
+    name: 'a destroyed WebGPU device is opened again and the shell goes on where it was',
+    backend: 'WebGPU',
+    lose: (page) => hook(page, 'debug_destroy_device'),
+    back: { backend: 'WebGPU', sameCanvas: true, shot: 'webgpu-destroyed' },
+  },
+  {
+    name: 'when WebGPU cannot be had again, the shell goes on with WebGL2 on a fresh canvas',
+    backend: 'WebGPU',
+    lose: async (page) => {
+      // From now on the browser has no WebGPU adapter to give.
+      await page.evaluate(() => { navigator.gpu.requestAdapter = async () => null; });
+      await hook(page, 'debug_destroy_device');
+    },
+    back: { backend: 'WebGL2', sameCanvas: false, shot: 'webgpu-to-webgl2' },
+  },
+  {
+    name: 'a lost WebGL context that the browser gives back is drawn on again',
+    backend: 'WebGL2',
+    lose: (page) => page.evaluate(() => {
+      const lose = document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context');
+      lose.loseContext();
+      setTimeout(() => lose.restoreContext(), 300);
+    }),
+    back: { backend: 'WebGL2', sameCanvas: true, shot: 'webgl-restored' },
+  },
+  {
+    name: 'a lost WebGL context that never comes back is replaced by a fresh canvas',
+    backend: 'WebGL2',
+    lose: (page) => page.evaluate(() => {
+      document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
+    }),
+    back: { backend: 'WebGL2', sameCanvas: false, shot: 'webgl-not-restored' },
+  },
+];
+
+for (const { name, backend, lose, back } of LOSSES) {
+  test(name, async () => {
+    const run = await session(backend);
+    try {
+      const { page } = await open(run.browser, `${run.base}${LINK}`);
+      const row = await grownAndPaused(page);
+      assert.equal(await page.evaluate(() => document.body.dataset.backend), backend);
+      await markCanvas(page);
+      await lose(page);
+      await checkRecovered(page, run, { row, ...back });
+    } finally {
+      await run.close();
+    }
+  });
+}
+
+for (const backend of ['WebGL2', 'WebGPU']) {
+  test(`a panic on ${backend} says what was being done and reloading the link grows the shell again`, async () => {
+    const run = await session(backend);
+    try {
+      const { page, errors } = await open(run.browser, `${run.base}${LINK}`);
+      await waitForState(page, ['growing']);
+      await page.waitForFunction((n) => Number(document.body.dataset.rows) >= n, 100, { timeout: 120_000 });
+      await hook(page, 'debug_panic_while_growing');
+      const state = await waitForState(page, ['error']);
+      assert.equal(state.crashed, 'true');
+      assert.ok(await page.isVisible('#crash'));
+      const text = await page.textContent('#crash-text');
+      assert.match(text, /^Something went wrong while growing stripes, row \d+: .*debug_panic_while_growing/s);
+      assert.ok(errors.some((e) => /debug_panic_while_growing/.test(e)), 'the console has the full report');
+      // The page does not freeze or go blank: the last picture stays, keys and clicks are
+      // ignored without a second panic covering the first's message.
+      await page.screenshot({ path: `${SHOTS}survive-panic-page-${backend}.png` });
+      const still = await measureCanvas(page, `${SHOTS}survive-panic-${backend}.png`);
+      assert.ok(still.share > 0.03, `after the panic the canvas shows only ${still.share} of a shell`);
+      await page.keyboard.press('Space');
+      await page.click('#finish', { force: true }).catch(() => {});
+      assert.equal(await page.textContent('#crash-text'), text, 'the first message stays');
+      await Promise.all([page.waitForEvent('load'), page.click('#reload')]);
+      await page.waitForFunction(() => document.body.dataset.crashed === undefined && document.body.dataset.state === 'growing');
+      assert.equal(await page.isVisible('#crash'), false);
+      assert.equal(new URL(page.url()).hash, LINK, 'the reload keeps the link');
+      assert.deepEqual(await finished(page), await fresh(run), 'the reloaded shell equals a fresh load');
+      await measureCanvas(page, `${SHOTS}survive-panic-reloaded-${backend}.png`);
+    } finally {
+      await run.close();
+    }
+  });
+}
+
+/** Every card's picture, measured as the canvas is (`measurePng`: blank shows no share). */
+async function pictures(page) {
+  const cards = await page.$$eval('a.card', (as) => as.map((a) => [a.dataset.preset, a.querySelector('img').src]));
+  return Promise.all(cards.map(async ([preset, src]) => {
+    const png = src.startsWith('data:image/png;base64,') ? Buffer.from(src.split(',')[1], 'base64') : null;
+    return { preset, src, cover: png ? (await measurePng(page, png)).share : 0 };
+  }));
+}
+
+for (const backend of ['WebGL2', 'WebGPU']) {
+  test(`the gallery's pictures and the viewer survive losing every device on ${backend}`, async () => {
+    const run = await session(backend);
+    try {
+      const { page } = await open(run.browser, run.base);
+      await waitForState(page, ['gallery']);
+      await page.waitForFunction(
+        () => [...document.querySelectorAll('a.card img')].filter((i) => i.src.startsWith('data:')).length >= 4,
+        null, { timeout: 120_000 },
+      );
+      if (backend === 'WebGPU') {
+        await hook(page, 'debug_destroy_device');
+      } else {
+        // Both canvases lose their contexts, which never come back: fresh canvases take over.
+        await page.evaluate(() => {
+          for (const id of ['shell', 'picture-canvas']) {
+            document.getElementById(id).getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
+          }
+        });
+      }
+      await page.waitForFunction(() => document.body.dataset.recoveries === '1', null, { timeout: 60_000 });
+      await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 300_000 });
+      assert.equal(await page.evaluate(() => document.body.dataset.state), 'gallery');
+      assert.equal(await page.isVisible('#message'), false, 'the gallery shows no message once drawn again');
+      const drawn = await pictures(page);
+      assert.ok(drawn.every((p) => p.src.startsWith('data:image/png')), 'every card has its picture');
+      assert.equal(new Set(drawn.map((p) => p.src)).size, drawn.length, 'every picture is a different shell');
+      const blank = drawn.filter((p) => p.cover < 0.02).map((p) => `${p.preset} ${p.cover}`);
+      assert.deepEqual(blank, [], 'no picture is blank');
+      await page.screenshot({ path: `${SHOTS}survive-gallery-${backend}.png`, fullPage: true });
+      // The viewer's own device was opened again too: a shell grows and is drawn.
+      await page.evaluate(() => { window.location.hash = 'v=1&preset=stripes&growth.speed=200'; });
+      const state = await waitForState(page, ['grown', 'error']);
+      assert.equal(state.state, 'grown');
+      const shell = await measureCanvas(page, `${SHOTS}survive-gallery-then-viewer-${backend}.png`);
+      assert.ok(shell.share > 0.03, `the shell covers only ${shell.share} of the canvas`);
+    } finally {
+      await run.close();
+    }
+  });
+}
