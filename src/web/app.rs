@@ -11,8 +11,10 @@
 //! or checking), `data-record` (recording, saved, cancelled, failed) and `data-record-frames`
 //! (video frames captured), `data-growth` (growing, done: whether the shell is grown whole, before
 //! the view comes to rest), `data-workers` (workers in the pool, 0 on the page's own thread),
-//! `data-worker-deaths` (workers replaced so far) and `data-recoveries` (how many times the
-//! graphics device was lost and opened again; the state is `recovering` meanwhile).
+//! `data-worker-deaths` (workers replaced so far), `data-settled` (true when the page's copy
+//! of the shell has every answer it asked its worker for: paused, it stands still) and
+//! `data-recoveries` (how many times the graphics device was lost and opened again; the state
+//! is `recovering` meanwhile).
 
 use super::activity;
 use super::dom;
@@ -615,6 +617,8 @@ impl App {
         }
         let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;
         signal("preview", self.viewer.preview_state());
+        let settled = self.viewer.growing().is_some_and(|g| g.settled());
+        signal("settled", if settled { "true" } else { "false" });
         if !drawn {
             return Ok(());
         }
