@@ -124,6 +124,8 @@ pub struct Viewer {
     workers: Rc<RefCell<Workers>>,
     /// The last session started (each load starts one; replies of older ones are dropped).
     session: u32,
+    /// Rows the playback's speed asked for while the worker was still busy.
+    owed: usize,
     /// The clear colour, as sRGB bytes (for a renderer opened again).
     background: [u8; 3],
     /// A renderer being opened after the device was lost, and when the loss was seen.
@@ -174,6 +176,7 @@ impl Viewer {
             fixed_size: None,
             workers,
             session: 0,
+            owed: 0,
             background,
             reopening: None,
             lost_at: None,
@@ -218,6 +221,7 @@ impl Viewer {
             link: link.clone(),
         });
         self.playback.restart(spec.growth.speed);
+        self.owed = 0;
         // Framed on a unit box until the worker says what the shell is.
         let placeholder = Bounds {
             min: DVec3::splat(-1.0),
@@ -652,15 +656,20 @@ impl Viewer {
             });
             preview.pending = true;
         }
-        let growing = self
-            .growing
-            .as_ref()
-            .is_some_and(|g| g.settled() && !g.replica.is_done() && g.preview.is_none());
+        let growing = self.growing.as_ref().is_some_and(|g| {
+            g.replica.shell().is_some() && !g.replica.is_done() && g.preview.is_none()
+        });
         if growing && self.playback.playing {
-            let rows = self.playback.rows_this_frame();
-            if rows > 0 {
+            // The rows of frames that pass while the worker is busy add up, and are asked for
+            // together once it has answered: growth keeps the speed it has on the page's thread.
+            self.owed += self.playback.rows_this_frame();
+            let settled = self.growing.as_ref().is_some_and(Growing::settled);
+            if settled && self.owed > 0 {
+                let rows = std::mem::take(&mut self.owed);
                 self.grow(rows, growth_budget(budget_ms, now() - self.last_frame));
             }
+        } else {
+            self.owed = 0;
         }
         let time = now();
         let dt = ((time - self.last_frame) / 1000.0).min(0.25) as f32;
