@@ -290,7 +290,8 @@ impl Generator {
 
     /// Grows to the end at once, but for the pieces of the shape's growth it returns (see
     /// [`GrowingShape::finish_apart`]): until they are made apart and joined (by the page's
-    /// copy of the shell, `work::replica`), the mesh lacks them. `None` when nothing is left apart: the shell is then whole.
+    /// copy of the shell, `work::replica`), the mesh lacks them. `None` when nothing is left
+    /// apart: the shell is then whole.
     pub fn finish_apart(&mut self) -> Option<Pieces> {
         self.advance_pattern(self.rows);
         self.hash.take();

@@ -596,7 +596,7 @@ impl App {
             return Ok(());
         }
         if self.in_gallery {
-            self.pictures.work();
+            self.pictures.work(&mut self.workers.borrow_mut());
             signal(
                 "pictures",
                 if self.pictures.finished() {

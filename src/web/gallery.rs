@@ -54,16 +54,15 @@ pub fn build(container: &Element) {
 /// shared among them), and drawn here by a viewer of its own as its answer comes.
 pub struct Pictures {
     viewer: Viewer,
-    /// The presets whose pictures are not drawn yet.
-    left: Vec<&'static Preset>,
+    /// The presets whose pictures are not drawn yet, each with the link its shell is grown from.
+    left: Vec<(&'static Preset, String)>,
     /// Whether the pool has been asked for them since the gallery was last shown.
     asked: bool,
-    /// Shells grown and not drawn yet: their answer came while the graphics device was lost.
+    /// Shells grown and not drawn yet.
     waiting: Vec<(&'static Preset, WholeShell)>,
-    /// Pictures drawn within [`LOSS_NOTICE_MS`], their shells, and when: the browser tells of a
-    /// lost device a little after the fact, so these may be blank and are drawn again after a
-    /// loss.
-    lately: VecDeque<(&'static Preset, WholeShell, f64)>,
+    /// Pictures drawn within [`LOSS_NOTICE_MS`], and when: the browser tells of a lost device a
+    /// little after the fact, so these may be blank, and are grown and drawn again after a loss.
+    lately: VecDeque<(&'static Preset, f64)>,
 }
 
 /// Milliseconds within which the browser is taken to report a lost device.
@@ -82,11 +81,16 @@ fn picture_spec(preset: &Preset) -> ShellSpec {
     spec
 }
 
+/// The link a preset's picture is grown from.
+fn picture_link(preset: &Preset) -> String {
+    link::encode(preset, &picture_spec(preset))
+}
+
 impl Pictures {
     pub fn new(viewer: Viewer) -> Self {
         Self {
             viewer,
-            left: presets().iter().collect(),
+            left: presets().iter().map(|p| (p, picture_link(p))).collect(),
             asked: false,
             waiting: Vec::new(),
             lately: VecDeque::new(),
@@ -99,12 +103,22 @@ impl Pictures {
             return;
         }
         self.asked = true;
-        for (job, preset) in self.left.iter().enumerate() {
+        for (job, (_, link)) in self.left.iter().enumerate() {
             workers.submit(Request::Whole {
                 job: job as u32,
-                link: link::encode(preset, &picture_spec(preset)),
+                link: link.clone(),
             });
         }
+    }
+
+    /// Asks the pool again for a picture that may have been drawn blank by a lost device.
+    fn ask_again(&mut self, preset: &'static Preset, workers: &mut Workers) {
+        let link = picture_link(preset);
+        workers.submit(Request::Whole {
+            job: self.left.len() as u32,
+            link: link.clone(),
+        });
+        self.left.push((preset, link));
     }
 
     /// The gallery was left: the pictures not yet sent to a worker wait until it is shown
@@ -114,50 +128,42 @@ impl Pictures {
         self.asked = false;
     }
 
-    /// A worker grew the shell of `link`: draws its picture onto its card (once a graphics
-    /// device is at hand).
+    /// A worker grew the shell of `link`: it waits to be drawn onto its card ([`Self::work`]).
     pub fn take(&mut self, link: &str, result: Result<WholeShell, String>) {
-        let Some(at) = self
-            .left
-            .iter()
-            .position(|p| link::encode(p, &picture_spec(p)) == link)
-        else {
+        let Some(at) = self.left.iter().position(|(_, l)| l == link) else {
             return;
         };
-        let preset = self.left.remove(at);
-        let Ok(whole) = result else {
-            return;
-        };
-        self.waiting.push((preset, whole));
-        self.work();
+        let (preset, _) = self.left.remove(at);
+        if let Ok(whole) = result {
+            self.waiting.push((preset, whole));
+        }
     }
 
     /// Keeps the pictures' graphics device and draws the shells waiting for it. After a loss,
-    /// the pictures drawn just before it are drawn again on the next device.
-    pub fn work(&mut self) {
+    /// the pictures drawn just before it are grown and drawn again on the next device.
+    pub fn work(&mut self, workers: &mut Workers) {
         if self.viewer.survive() != Device::Ready {
-            for (preset, whole, _) in self.lately.drain(..) {
-                self.waiting.push((preset, whole));
+            while let Some((preset, _)) = self.lately.pop_front() {
+                self.ask_again(preset, workers);
             }
             return;
         }
         let noticed = now() - LOSS_NOTICE_MS;
-        while self.lately.front().is_some_and(|(_, _, at)| *at < noticed) {
+        while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
             self.lately.pop_front();
         }
         while let Some((preset, whole)) = self.waiting.pop() {
-            self.viewer
-                .show_whole(preset, &picture_spec(preset), whole.clone());
+            self.viewer.show_whole(preset, &picture_spec(preset), whole);
             let picture = self.viewer.picture();
             if self.viewer.survive() != Device::Ready {
                 // Lost while drawing: the picture may be blank; it is drawn on the next device.
-                self.waiting.push((preset, whole));
+                self.ask_again(preset, workers);
                 return;
             }
             let Ok(url) = picture else {
                 continue;
             };
-            self.lately.push_back((preset, whole, now()));
+            self.lately.push_back((preset, now()));
             let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
             let image = super::page::document()
                 .query_selector(&selector)

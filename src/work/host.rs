@@ -289,26 +289,24 @@ impl Host {
                         self.preview = Some((session, Preview::new(run, rows)));
                         reply
                     }
-                    Ok(None) => {
+                    none => {
+                        // No pattern to preview: none in the spec (whole at once), or values
+                        // that give none (stopped, with the reason).
                         self.preview = None;
+                        let failure = none
+                            .err()
+                            .map(|e| format!("With these values there is no pattern: {e}."));
                         Reply::Previewed {
                             session,
                             cells: 0,
                             first: 0,
                             rgba: Vec::new(),
-                            state: PreviewState::Whole,
-                            failure: None,
-                        }
-                    }
-                    Err(e) => {
-                        self.preview = None;
-                        Reply::Previewed {
-                            session,
-                            cells: 0,
-                            first: 0,
-                            rgba: Vec::new(),
-                            state: PreviewState::Stopped,
-                            failure: Some(format!("With these values there is no pattern: {e}.")),
+                            state: if failure.is_some() {
+                                PreviewState::Stopped
+                            } else {
+                                PreviewState::Whole
+                            },
+                            failure,
                         }
                     }
                 }
