@@ -7,7 +7,7 @@ use crate::forms::shape_for;
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
-use crate::shape::{GrowingShape, LineGrid, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
@@ -286,6 +286,33 @@ impl Generator {
         self.advance_pattern(self.rows);
         self.hash.take();
         self.shape.finish(&mut self.mesh, &mut self.edge);
+    }
+
+    /// Grows to the end at once, but for the pieces of the shape's growth it returns (see
+    /// [`GrowingShape::finish_apart`]): until they are made apart and joined (by the page's
+    /// copy of the shell, `work::replica`), the mesh lacks them. `None` when nothing is left
+    /// apart: the shell is then whole.
+    pub fn finish_apart(&mut self) -> Option<Pieces> {
+        self.advance_pattern(self.rows);
+        self.hash.take();
+        self.shape.finish_apart(&mut self.mesh, &mut self.edge)
+    }
+
+    /// Steps of the shape grown so far.
+    pub fn steps_done(&self) -> usize {
+        self.shape.steps_done()
+    }
+
+    /// Grows at once to where another generator of the same spec stood: `rows` rows and
+    /// `steps` steps of its shape (at most as far as those rows reach). Growth is the same bit
+    /// for bit however it was cut into calls, so this one then goes on as that one would.
+    pub fn catch_up(&mut self, rows: usize, steps: usize) {
+        self.advance_pattern(rows.min(self.rows));
+        self.hash.take();
+        let target = steps.min(self.target_step());
+        while self.shape.steps_done() < target {
+            self.shape.grow(&mut self.mesh, &mut self.edge);
+        }
     }
 }
 

@@ -15,6 +15,7 @@ pub mod shape;
 pub mod share;
 pub mod spec;
 pub mod view;
+pub mod work;
 
 #[cfg(target_arch = "wasm32")]
 pub mod render;

@@ -68,6 +68,34 @@ impl LineGrid {
     }
 }
 
+/// The rest of a shape's growth cut into pieces that can be made apart from the shape (on other
+/// threads, by [`crate::forms::PieceMaker`], from the same spec) and joined in a fixed order:
+/// each piece's mesh is appended to the permanent mesh in the order of the pieces' numbers, so
+/// how the pieces were shared out cannot change a bit of the result.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Pieces {
+    /// The growth step the pieces are made at.
+    pub step: u32,
+    /// The pieces' numbers, in groups best made together (by one worker), each ascending.
+    pub groups: Vec<Vec<u32>>,
+}
+
+impl Pieces {
+    /// How many pieces there are.
+    pub fn count(&self) -> usize {
+        self.groups.iter().map(Vec::len).sum()
+    }
+
+    /// Appends the meshes `made` of these pieces (by number, in any order; a piece that holds
+    /// nothing may be missing) to `mesh`, in the order of their numbers.
+    pub fn join(&self, mesh: &mut Mesh, mut made: Vec<(u32, Mesh)>) {
+        made.sort_by_key(|(n, _)| *n);
+        for (_, m) in made {
+            mesh.append(&m);
+        }
+    }
+}
+
 /// A shape grown step by step.
 pub trait GrowingShape {
     /// Steps from the first to the fully grown shape.
@@ -93,5 +121,12 @@ pub trait GrowingShape {
         while self.steps_done() < self.steps() {
             self.grow(mesh, edge);
         }
+    }
+    /// Ends growth as [`Self::finish`] does, but leaves out the pieces it returns, to be made
+    /// apart and appended to `mesh` in the order of their numbers (see [`Pieces`]). A form
+    /// whose rest of growth does not split finishes here and returns `None`.
+    fn finish_apart(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> Option<Pieces> {
+        self.finish(mesh, edge);
+        None
     }
 }

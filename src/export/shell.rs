@@ -11,6 +11,7 @@ use crate::mesh::Mesh;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
 use crate::view::camera::facing;
+use glam::DVec3;
 
 /// A shell to export.
 pub struct Shell {
@@ -26,6 +27,18 @@ pub struct Shell {
     pub size: PrintSize,
 }
 
+/// What an export reads of a grown shell, wherever it grew (a generator here, or the page's
+/// copy of a shell grown on a worker).
+pub struct Grown<'a> {
+    /// The shell as it stands, edge included.
+    pub mesh: Mesh,
+    /// Why growth stopped early, if it did.
+    pub failure: Option<&'a str>,
+    /// The direction the shell is best seen from.
+    pub front: DVec3,
+    pub pattern: Option<PatternImage<'a>>,
+}
+
 impl Shell {
     /// The shell `generator` has grown so far from `spec` (a variant of `preset`); refused
     /// when it has no surface yet or growth stopped on a failure.
@@ -35,19 +48,33 @@ impl Shell {
         preset: &Preset,
         size: PrintSize,
     ) -> Result<Self, ExportError> {
-        if let Some(why) = generator.failure() {
+        let grown = Grown {
+            mesh: generator.snapshot(),
+            failure: generator.failure(),
+            front: generator.framing().1,
+            pattern: generator.pattern().map(PatternImage::from),
+        };
+        Self::of(grown, spec, preset, size)
+    }
+
+    /// The shell `grown` from `spec` (a variant of `preset`), refused as [`Self::new`] says.
+    pub fn of(
+        grown: Grown,
+        spec: &ShellSpec,
+        preset: &Preset,
+        size: PrintSize,
+    ) -> Result<Self, ExportError> {
+        if let Some(why) = grown.failure {
             return Err(ExportError::Failed(why.to_string()));
         }
-        let mesh = generator.snapshot();
-        if mesh.triangle_count() == 0 {
+        if grown.mesh.triangle_count() == 0 {
             return Err(ExportError::Empty);
         }
-        let (_, front) = generator.framing();
         Ok(Self {
-            mesh,
-            paint: Paint::new(&spec.colours, generator.pattern().map(PatternImage::from)),
+            mesh: grown.mesh,
+            paint: Paint::new(&spec.colours, grown.pattern),
             roughness: roughness(spec.material.gloss),
-            facing: facing(front) + f64::from(preset.view.yaw).to_radians(),
+            facing: facing(grown.front) + f64::from(preset.view.yaw).to_radians(),
             title: preset.name.clone(),
             size,
         })

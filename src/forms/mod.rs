@@ -22,6 +22,7 @@ use kawaguchi::branching::branching_mesh::BranchingMesh;
 use kawaguchi::chambers::chamber_mesh::ChamberMesh;
 use kawaguchi::chambers::chamber_stack::turn_per_chamber;
 use murex::implicit_mesh::ImplicitMesh;
+pub use murex::implicit_mesh::PieceMaker;
 use sweep::sweep_mesh::SweepMesh;
 
 /// The growing shape a spec's form describes; `rows` (at least 2) is the length of the pattern
@@ -38,6 +39,18 @@ pub fn shape_for(spec: &ShellSpec, rows: usize) -> Result<Box<dyn GrowingShape>,
             spec.seed,
             rows,
         )?)),
+    }
+}
+
+/// What makes the pieces of the growth of `spec` (`rows` long) that its shape's
+/// [`GrowingShape::finish_apart`] leaves out, apart from that shape; `None` for a form whose
+/// growth does not split.
+pub fn piece_maker(spec: &ShellSpec, rows: usize) -> Result<Option<PieceMaker>, ShapeError> {
+    match &spec.form {
+        Form::Implicit(implicit) => {
+            PieceMaker::new(implicit, &spec.pattern, spec.seed, rows).map(Some)
+        }
+        Form::Sweep(_) | Form::Chambers(_) | Form::Branching(_) => Ok(None),
     }
 }
 

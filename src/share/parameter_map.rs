@@ -159,6 +159,44 @@ pub struct Tile {
     pub failure: Option<String>,
 }
 
+/// One tile's pattern being computed, a row at a time: `rows` rows of a shell's pattern, kept
+/// as a picture once all are computed.
+pub struct TileWork {
+    run: PatternRun,
+    rows: usize,
+}
+
+impl TileWork {
+    /// The first `rows` rows of the pattern of `spec`, or why it has none.
+    pub fn new(spec: &ShellSpec, rows: usize) -> Result<Self, String> {
+        // Only this map's rows are kept while computing, not the shell's.
+        let mut spec = spec.clone();
+        spec.growth.rows = rows as u32;
+        match PatternRun::new(&spec) {
+            Ok(Some(run)) => Ok(Self { run, rows }),
+            Ok(None) => Err("this shell has no pattern".into()),
+            Err(e) => Err(e.to_string()),
+        }
+    }
+
+    /// Computes rows while `more()` says so (at least one); the tile's picture once all its
+    /// rows are computed, or why the pattern stopped.
+    pub fn work(&mut self, mut more: impl FnMut() -> bool) -> Option<Result<Picture, String>> {
+        let mut first = true;
+        while first || more() {
+            first = false;
+            if self.run.rows() >= self.rows {
+                let block = self.run.cells().div_ceil(PICTURE_WIDTH);
+                return Some(Ok(Picture::of(&self.run, block)));
+            }
+            if let Err(e) = self.run.advance() {
+                return Some(Err(format!("the pattern stops {e}")));
+            }
+        }
+        None
+    }
+}
+
 /// The map: `y.values.len()` rows of `x.values.len()` tiles, the first row at the first value
 /// of y, each row from the first value of x. Only the tile being computed holds its pattern.
 pub struct ParameterMap {
@@ -167,9 +205,9 @@ pub struct ParameterMap {
     /// Pattern rows computed for every tile.
     pub rows: usize,
     tiles: Vec<Tile>,
-    /// The tile being computed, and its pattern so far.
+    /// The tile being computed here, and its pattern so far.
     next: usize,
-    run: Option<PatternRun>,
+    work: Option<TileWork>,
 }
 
 impl ParameterMap {
@@ -203,7 +241,7 @@ impl ParameterMap {
             rows,
             tiles,
             next: 0,
-            run: None,
+            work: None,
         }
     }
 
@@ -218,45 +256,50 @@ impl ParameterMap {
 
     /// Whether every tile is computed (or has failed).
     pub fn finished(&self) -> bool {
-        self.next >= self.tiles.len()
+        self.tiles
+            .iter()
+            .all(|t| t.picture.is_some() || t.failure.is_some())
+    }
+
+    /// The tiles still to compute, by index: what may be computed elsewhere ([`TileWork`] on
+    /// each tile's spec and [`Self::rows`]) and [`Self::place`]d.
+    pub fn to_compute(&self) -> Vec<usize> {
+        (0..self.tiles.len())
+            .filter(|&i| self.tiles[i].picture.is_none() && self.tiles[i].failure.is_none())
+            .collect()
+    }
+
+    /// Keeps what computing tile `index` gave: its picture, or why it has none.
+    pub fn place(&mut self, index: usize, result: Result<Picture, String>) {
+        let tile = &mut self.tiles[index];
+        match result {
+            Ok(picture) => tile.picture = Some(picture),
+            Err(why) => tile.failure = Some(why),
+        }
     }
 
     /// Computes rows, tile after tile, while `more()` says so; returns the tiles it finished.
     pub fn work(&mut self, mut more: impl FnMut() -> bool) -> std::ops::Range<usize> {
         let first = self.next;
         while self.next < self.tiles.len() && more() {
-            let tile = &mut self.tiles[self.next];
-            if tile.failure.is_some() {
+            let tile = &self.tiles[self.next];
+            if tile.failure.is_some() || tile.picture.is_some() {
                 self.next += 1;
                 continue;
             }
-            let run = match &mut self.run {
-                Some(run) => run,
-                None => {
-                    // Only this map's rows are kept while computing, not the shell's.
-                    let mut spec = tile.spec.clone();
-                    spec.growth.rows = self.rows as u32;
-                    match PatternRun::new(&spec) {
-                        Ok(Some(run)) => self.run.insert(run),
-                        Ok(None) => {
-                            tile.failure = Some("this shell has no pattern".into());
-                            continue;
-                        }
-                        Err(e) => {
-                            tile.failure = Some(e.to_string());
-                            continue;
-                        }
+            let work = match &mut self.work {
+                Some(work) => work,
+                None => match TileWork::new(&tile.spec, self.rows) {
+                    Ok(work) => self.work.insert(work),
+                    Err(why) => {
+                        self.place(self.next, Err(why));
+                        continue;
                     }
-                }
+                },
             };
-            if run.rows() >= self.rows {
-                let block = run.cells().div_ceil(PICTURE_WIDTH);
-                tile.picture = Some(Picture::of(run, block));
-                self.run = None;
-                self.next += 1;
-            } else if let Err(e) = run.advance() {
-                tile.failure = Some(format!("the pattern stops {e}"));
-                self.run = None;
+            if let Some(result) = work.work(|| false) {
+                self.work = None;
+                self.place(self.next, result);
                 self.next += 1;
             }
         }

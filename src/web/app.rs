@@ -9,8 +9,12 @@
 //! (the interface the link asks for), `data-layout` (single, four: one view or Kawaguchi's
 //! four), `data-encoder` (what the page records video with: a codec's name, MediaRecorder, none,
 //! or checking), `data-record` (recording, saved, cancelled, failed) and `data-record-frames`
-//! (video frames captured), `data-recoveries` (how many times the graphics device was lost
-//! and opened again; the state is `recovering` meanwhile).
+//! (video frames captured), `data-growth` (growing, done: whether the shell is grown whole, before
+//! the view comes to rest), `data-workers` (workers in the pool, 0 on the page's own thread),
+//! `data-worker-deaths` (workers replaced so far), `data-settled` (true when the page's copy
+//! of the shell has every answer it asked its worker for: paused, it stands still) and
+//! `data-recoveries` (how many times the graphics device was lost and opened again; the state
+//! is `recovering` meanwhile).
 
 use super::activity;
 use super::dom;
@@ -22,6 +26,7 @@ use super::panel::{Change, OnChange, Panel};
 use super::record::{self, Recording, Step, Support};
 use super::share;
 use super::viewer::{Device, Viewer, now};
+use super::workers::Workers;
 use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
@@ -32,18 +37,19 @@ use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
+use crate::work::message::{Reply, Request};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlInputElement, HtmlProgressElement};
 
-/// Milliseconds of a frame for drawing the gallery's pictures.
-const PICTURE_BUDGET_MS: f64 = 10.0;
 /// Quiet time after an edit before the address bar is updated.
 const URL_DELAY_MS: f64 = 300.0;
 
 pub struct App {
     viewer: Viewer,
+    /// Where shells, pictures and pieces grow.
+    workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
     map: MapView,
     downloads: Downloads,
@@ -89,11 +95,12 @@ fn location_hash() -> String {
 }
 
 impl App {
-    pub fn new(viewer: Viewer, pictures: Pictures) -> Self {
+    pub fn new(viewer: Viewer, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
         signal("backend", viewer.backend());
         set_text("backend", &format!("Drawn with {}", viewer.backend()));
         Self {
             viewer,
+            workers,
             pictures,
             map: MapView::default(),
             downloads: Downloads::default(),
@@ -130,7 +137,7 @@ impl App {
 
     /// Follows the URL fragment (closing the parameter map, whose tiles are links).
     pub fn route(&mut self) {
-        self.map.close();
+        self.map.close(&mut self.workers.borrow_mut());
         let fragment = location_hash();
         activity::set(format!("opening the link {fragment}"));
         if fragment.trim_start_matches('#').is_empty() {
@@ -166,6 +173,13 @@ impl App {
 
     fn show(&mut self, gallery: bool) {
         self.in_gallery = gallery;
+        let mut workers = self.workers.borrow_mut();
+        if gallery {
+            self.pictures.ask(&mut workers);
+        } else {
+            self.pictures.pause(&mut workers);
+        }
+        drop(workers);
         if let (Some(g), Some(v)) = (element("gallery"), element("viewer")) {
             g.set_hidden(!gallery);
             v.set_hidden(gallery);
@@ -183,12 +197,7 @@ impl App {
         signal("state", "loading");
         signal("patternHash", "");
         signal("mesh", "");
-        if let Err(message) = self.viewer.load(preset, &spec) {
-            self.viewer.unload();
-            self.current = None;
-            page::show_error(&message);
-            return;
-        }
+        self.viewer.load(preset, &spec);
         set_text("title", &preset.name);
         set_text("source", &preset.source);
         page::document().set_title(&format!("{} — Seashells", preset.name));
@@ -225,10 +234,8 @@ impl App {
         } = link::with(preset, spec, key, &value);
         if change == Change::Moving {
             if previews(key) {
-                match self.viewer.preview(&next) {
-                    Ok(()) => say(&problems),
-                    Err(message) => show_message(&message),
-                }
+                say(&problems);
+                self.viewer.preview(&next);
                 signal("preview", self.viewer.preview_state());
             }
             return;
@@ -447,10 +454,8 @@ impl App {
             return;
         };
         self.close_map();
+        let rows = spec.growth.rows.max(2) as usize;
         self.load(preset, spec);
-        let Some(rows) = self.viewer.growing().map(|g| g.generator.rows()) else {
-            return;
-        };
         let speed = self.viewer.playback.speed;
         let plan = RecordingPlan::new(rows, speed, record::options());
         self.viewer.fix_size(Some((plan.width, plan.height)));
@@ -567,7 +572,7 @@ impl App {
                 if self.in_gallery {
                     page::hide_message();
                 } else {
-                    let rows = self.viewer.growing().map_or(0, |g| g.generator.rows_done());
+                    let rows = self.viewer.growing().map_or(0, |g| g.replica.rows_done());
                     show_message(&format!(
                         "The graphics device was lost and has been opened again, with \
                          {backend}: the shell goes on from row {rows}."
@@ -585,22 +590,21 @@ impl App {
             return Ok(());
         }
         self.downloads.work();
+        self.take_replies();
         if self.recording.is_some() {
             self.record_frame();
             return Ok(());
         }
         if self.in_gallery {
-            if !self.pictures.finished() {
-                self.pictures.work(PICTURE_BUDGET_MS);
-                signal(
-                    "pictures",
-                    if self.pictures.finished() {
-                        "done"
-                    } else {
-                        "drawing"
-                    },
-                );
-            }
+            self.pictures.work(&mut self.workers.borrow_mut());
+            signal(
+                "pictures",
+                if self.pictures.finished() {
+                    "done"
+                } else {
+                    "drawing"
+                },
+            );
             return Ok(());
         }
         if self.url_due.is_some_and(|due| now() >= due) {
@@ -609,19 +613,26 @@ impl App {
         if self.map.is_open() {
             // The map covers the shell, which waits meanwhile.
             activity::set("drawing the parameter map".to_string());
-            self.map.work(GROWTH_BUDGET_MS);
             return Ok(());
         }
         let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;
         signal("preview", self.viewer.preview_state());
+        let settled = self.viewer.growing().is_some_and(|g| g.settled());
+        signal("settled", if settled { "true" } else { "false" });
         if !drawn {
             return Ok(());
         }
         let Some(g) = self.viewer.growing() else {
             return Ok(());
         };
-        let (done, total) = (g.generator.rows_done(), g.generator.rows());
+        let replica = &g.replica;
+        if replica.shell().is_none() {
+            return Ok(());
+        }
+        let (done, total) = (replica.rows_done(), replica.rows());
         signal("rows", &done.to_string());
+        let whole = replica.is_done() && g.settled();
+        signal("growth", if whole { "done" } else { "growing" });
         if let Some(bar) =
             element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
         {
@@ -630,14 +641,14 @@ impl App {
         }
         set_text("progress-text", &format!("{done} of {total} rows"));
         self.downloads.show_sizes(&self.viewer);
-        if let Some(failure) = g.generator.failure() {
+        if let Some(failure) = replica.failure() {
             show_message(failure);
             signal("state", "stopped");
-        } else if g.generator.is_done() && g.view_at_rest() {
-            if let Some(p) = g.generator.pattern() {
-                signal("patternHash", &format!("{:016x}", p.hash()));
+        } else if replica.is_done() && g.settled() && g.view_at_rest() {
+            if let Some(hash) = replica.pattern_hash() {
+                signal("patternHash", &format!("{hash:016x}"));
             }
-            let (mesh, edge) = (g.generator.mesh(), g.generator.edge());
+            let (mesh, edge) = (replica.mesh(), replica.edge());
             signal(
                 "mesh",
                 &format!(
@@ -646,7 +657,9 @@ impl App {
                     mesh.triangle_count() + edge.triangle_count()
                 ),
             );
-            signal("meshHash", &format!("{:016x}", g.generator.mesh_hash()));
+            if let Some(hash) = replica.mesh_hash() {
+                signal("meshHash", &format!("{hash:016x}"));
+            }
             signal("state", "grown");
         } else {
             signal("state", "growing");
@@ -654,18 +667,43 @@ impl App {
         Ok(())
     }
 
+    /// Takes in what the workers sent back: the shell's growth and pieces go to the viewer,
+    /// gallery shells to the pictures; a worker replaced with the shell's session has it grown
+    /// again where the page's copy stands.
+    fn take_replies(&mut self) {
+        let polled = self.workers.borrow_mut().poll();
+        if let Some(lost) = polled.sessions_lost {
+            self.viewer.resume(lost);
+        }
+        for (request, reply) in polled.replies {
+            match (request, reply) {
+                (Request::Whole { link, .. }, Reply::Grown { result, .. }) => {
+                    self.pictures.take(&link, result);
+                }
+                (_, Reply::Tiled { job, result }) => self.map.take(job, result),
+                (request, reply) => {
+                    if let Err(message) = self.viewer.take(&request, reply) {
+                        self.viewer.unload();
+                        self.current = None;
+                        page::show_error(&message);
+                    }
+                }
+            }
+        }
+    }
+
     /// Shows the parameter map of the shell shown.
     pub fn open_map(&mut self) {
         self.stop_recording("the map covered the shell");
         if let Some((preset, spec)) = &self.current {
-            self.map.open(preset, spec);
+            self.map.open(preset, spec, &mut self.workers.borrow_mut());
         }
     }
 
     /// Draws the map anew over the axes its controls now describe.
     pub fn draw_map(&mut self) {
         if let Some((preset, spec)) = &self.current {
-            self.map.draw(preset, spec);
+            self.map.draw(preset, spec, &mut self.workers.borrow_mut());
         }
     }
 
@@ -675,7 +713,7 @@ impl App {
     }
 
     pub fn close_map(&mut self) {
-        self.map.close();
+        self.map.close(&mut self.workers.borrow_mut());
     }
 
     /// Follows a change of the page's light or dark theme.

@@ -11,8 +11,9 @@ use super::viewer::{Viewer, now};
 use crate::export::Download;
 use crate::export::estimate::{Counts, Size};
 use crate::export::job::Export;
+use crate::export::paint::PatternImage;
 use crate::export::print_size::PrintSize;
-use crate::export::shell::Shell;
+use crate::export::shell::{Grown, Shell};
 use crate::generator::within;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
@@ -82,8 +83,12 @@ impl Downloads {
                 return offer_url(&name, &url);
             }
             Download::Pattern => {
-                let p = g.generator.pattern().ok_or("this shell has no pattern")?;
-                let export = Export::pattern(p.cells(), p.rows(), p.rgba().to_vec());
+                let r = &g.replica;
+                if r.cells() == 0 {
+                    return Err("this shell has no pattern".into());
+                }
+                let rows = r.rgba().len() / (r.cells() * 4);
+                let export = Export::pattern(r.cells(), rows, r.rgba().to_vec());
                 (export, "image/png")
             }
             Download::Mesh(format) => {
@@ -92,8 +97,20 @@ impl Downloads {
                 } else {
                     PrintSize::default()
                 };
-                let shell =
-                    Shell::new(&g.generator, spec, preset, size).map_err(|e| e.to_string())?;
+                let r = &g.replica;
+                let info = r.shell().ok_or("the shell is not built yet")?;
+                let pattern = (r.cells() > 0).then(|| PatternImage {
+                    cells: r.cells(),
+                    rows: r.rgba().len() / (r.cells() * 4),
+                    rgba: r.rgba(),
+                });
+                let grown = Grown {
+                    mesh: r.snapshot(),
+                    failure: r.failure(),
+                    front: info.front,
+                    pattern,
+                };
+                let shell = Shell::of(grown, spec, preset, size).map_err(|e| e.to_string())?;
                 let export = Export::new(format, shell).map_err(|e| e.to_string())?;
                 (export, format.mime())
             }
@@ -148,18 +165,24 @@ impl Downloads {
         let Some(g) = viewer.growing() else {
             return;
         };
-        let (mesh, edge) = (g.generator.mesh(), g.generator.edge());
+        let (mesh, edge) = (g.replica.mesh(), g.replica.edge());
         let canvas = viewer.canvas();
         let counts = Counts {
             vertices: mesh.vertices.len() + edge.vertices.len(),
             triangles: mesh.triangle_count() + edge.triangle_count(),
-            pattern: g.generator.pattern().map(|p| (p.cells(), p.rows())),
+            pattern: (g.replica.cells() > 0).then(|| {
+                (
+                    g.replica.cells(),
+                    g.replica.rgba().len() / (g.replica.cells() * 4),
+                )
+            }),
             picture: (canvas.width() as usize, canvas.height() as usize),
         };
         let t = now();
-        if self.shown.is_some_and(|(c, at)| {
-            c == counts || (!g.generator.is_done() && t - at < SIZES_EVERY_MS)
-        }) || self.job.is_some()
+        if self
+            .shown
+            .is_some_and(|(c, at)| c == counts || (!g.replica.is_done() && t - at < SIZES_EVERY_MS))
+            || self.job.is_some()
         {
             return;
         }

@@ -1,13 +1,17 @@
 //! The gallery: every preset in species/, grouped by where it comes from, each a card with its
 //! name, the figure it reproduces, a line of description and a picture of the shell. The cards
 //! are plain links to the preset's fragment, so the browser's history does the navigation; the
-//! pictures are drawn one by one by a second viewer on a small off-screen canvas.
+//! shells are grown whole by the pool of workers and drawn by a second viewer on a small
+//! off-screen canvas as they come.
 
 use super::dom::{append, attr, create, typed};
 use super::viewer::{Device, Viewer, now};
+use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
+use crate::spec::ShellSpec;
 use crate::spec::form::Form;
+use crate::work::message::{Request, WholeShell};
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
 
@@ -46,13 +50,18 @@ pub fn build(container: &Element) {
     }
 }
 
-/// Draws the cards' pictures, a few milliseconds a frame.
+/// Draws the cards' pictures: each shell is grown whole by a worker of the pool (all at once,
+/// shared among them), and drawn here by a viewer of its own as its answer comes.
 pub struct Pictures {
     viewer: Viewer,
-    queue: VecDeque<&'static Preset>,
-    current: Option<&'static Preset>,
-    /// Pictures finished within [`LOSS_NOTICE_MS`], and when: the browser tells of a lost
-    /// device a little after the fact, so these may be blank and are drawn again after a loss.
+    /// The presets whose pictures are not drawn yet, each with the link its shell is grown from.
+    left: Vec<(&'static Preset, String)>,
+    /// Whether the pool has been asked for them since the gallery was last shown.
+    asked: bool,
+    /// Shells grown and not drawn yet.
+    waiting: Vec<(&'static Preset, WholeShell)>,
+    /// Pictures drawn within [`LOSS_NOTICE_MS`], and when: the browser tells of a lost device a
+    /// little after the fact, so these may be blank, and are grown and drawn again after a loss.
     lately: VecDeque<(&'static Preset, f64)>,
 }
 
@@ -63,23 +72,79 @@ const LOSS_NOTICE_MS: f64 = 2000.0;
 /// size, and quick to grow.
 const PICTURE_RESOLUTION: u32 = 64;
 
+/// The spec of a preset's picture.
+fn picture_spec(preset: &Preset) -> ShellSpec {
+    let mut spec = preset.spec.clone();
+    if let Form::Implicit(implicit) = &mut spec.form {
+        implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
+    }
+    spec
+}
+
+/// The link a preset's picture is grown from.
+fn picture_link(preset: &Preset) -> String {
+    link::encode(preset, &picture_spec(preset))
+}
+
 impl Pictures {
     pub fn new(viewer: Viewer) -> Self {
         Self {
             viewer,
-            queue: presets().iter().collect(),
-            current: None,
+            left: presets().iter().map(|p| (p, picture_link(p))).collect(),
+            asked: false,
+            waiting: Vec::new(),
             lately: VecDeque::new(),
         }
     }
 
-    /// Works on the pictures for at most `budget_ms`.
-    pub fn work(&mut self, budget_ms: f64) {
+    /// Asks the pool for the pictures not drawn yet (once while the gallery is shown).
+    pub fn ask(&mut self, workers: &mut Workers) {
+        if self.asked {
+            return;
+        }
+        self.asked = true;
+        for (job, (_, link)) in self.left.iter().enumerate() {
+            workers.submit(Request::Whole {
+                job: job as u32,
+                link: link.clone(),
+            });
+        }
+    }
+
+    /// Asks the pool again for a picture that may have been drawn blank by a lost device.
+    fn ask_again(&mut self, preset: &'static Preset, workers: &mut Workers) {
+        let link = picture_link(preset);
+        workers.submit(Request::Whole {
+            job: self.left.len() as u32,
+            link: link.clone(),
+        });
+        self.left.push((preset, link));
+    }
+
+    /// The gallery was left: the pictures not yet sent to a worker wait until it is shown
+    /// again.
+    pub fn pause(&mut self, workers: &mut Workers) {
+        workers.cancel(|r| matches!(r, Request::Whole { .. }));
+        self.asked = false;
+    }
+
+    /// A worker grew the shell of `link`: it waits to be drawn onto its card ([`Self::work`]).
+    pub fn take(&mut self, link: &str, result: Result<WholeShell, String>) {
+        let Some(at) = self.left.iter().position(|(_, l)| l == link) else {
+            return;
+        };
+        let (preset, _) = self.left.remove(at);
+        if let Ok(whole) = result {
+            self.waiting.push((preset, whole));
+        }
+    }
+
+    /// Keeps the pictures' graphics device and draws the shells waiting for it. After a loss,
+    /// the pictures drawn just before it are grown and drawn again on the next device.
+    pub fn work(&mut self, workers: &mut Workers) {
         if self.viewer.survive() != Device::Ready {
-            // The device was lost: the picture under way, and those finished just before, are
-            // drawn once another is open.
-            for (preset, _) in self.lately.drain(..).rev() {
-                self.queue.push_front(preset);
+            while let Some((preset, _)) = self.lately.pop_front() {
+                self.ask_again(preset, workers);
             }
             return;
         }
@@ -87,47 +152,28 @@ impl Pictures {
         while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
             self.lately.pop_front();
         }
-        let preset = match self.current {
-            Some(p) => p,
-            None => {
-                let Some(next) = self.queue.pop_front() else {
-                    return;
-                };
-                let mut spec = next.spec.clone();
-                if let Form::Implicit(implicit) = &mut spec.form {
-                    implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
-                }
-                if self.viewer.load(next, &spec).is_err() {
-                    return;
-                }
-                self.current = Some(next);
-                next
+        while let Some((preset, whole)) = self.waiting.pop() {
+            self.viewer.show_whole(preset, &picture_spec(preset), whole);
+            let picture = self.viewer.picture();
+            if self.viewer.survive() != Device::Ready {
+                // Lost while drawing: the picture may be blank; it is drawn on the next device.
+                self.ask_again(preset, workers);
+                return;
             }
-        };
-        let done = self.viewer.growing().is_none_or(|g| g.generator.is_done());
-        if !done {
-            self.viewer.grow(usize::MAX, budget_ms);
-            return;
+            let Ok(url) = picture else {
+                continue;
+            };
+            self.lately.push_back((preset, now()));
+            let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
+            let image = super::page::document()
+                .query_selector(&selector)
+                .ok()
+                .flatten()
+                .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+            if let Some(img) = image {
+                img.set_src(&url);
+            }
         }
-        let picture = self.viewer.picture();
-        if self.viewer.survive() != Device::Ready {
-            // Lost while drawing: the picture may be blank; it is drawn again on the next device.
-            return;
-        }
-        self.current = None;
-        let Ok(url) = picture else {
-            return;
-        };
-        let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
-        let image = super::page::document()
-            .query_selector(&selector)
-            .ok()
-            .flatten()
-            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
-        if let Some(img) = image {
-            img.set_src(&url);
-        }
-        self.lately.push_back((preset, now()));
     }
 
     /// Follows a change of the page's theme (pictures already drawn keep theirs).
@@ -143,6 +189,6 @@ impl Pictures {
     /// Whether every picture is drawn, and the last of them long enough ago that a lost
     /// device would have been reported.
     pub fn finished(&self) -> bool {
-        self.queue.is_empty() && self.current.is_none() && self.lately.is_empty()
+        self.left.is_empty() && self.waiting.is_empty() && self.lately.is_empty()
     }
 }

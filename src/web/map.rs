@@ -1,15 +1,19 @@
 //! The parameter map on the page: over the shell's view, a grid of the planar patterns of two
 //! parameters of its pattern model spread over ranges the reader chooses (the core's
-//! `ParameterMap`), filled within the frames' budget; every tile is a link that opens its shell.
+//! `ParameterMap`), its tiles computed by the pool of workers and drawn as they come; every tile
+//! is a link that opens its shell.
 
 use super::dom::{append, attr, clear, create, typed};
 use super::page::{element, set_text, signal};
 use super::panel::label;
-use super::viewer::now;
+use super::workers::Workers;
 use crate::presets::Preset;
-use crate::share::parameter_map::{Axis, ParameterMap, SIDE, first_axes, parameters};
+use crate::share::parameter_map::{
+    Axis, ParameterMap, Picture, SIDE, Tile, first_axes, parameters,
+};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, display};
+use crate::work::message::Request;
 use wasm_bindgen::{Clamped, JsCast};
 use web_sys::{
     CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlInputElement, HtmlOptionElement,
@@ -89,7 +93,13 @@ pub struct MapView {
     map: Option<ParameterMap>,
     tiles: Vec<Element>,
     parameters: Vec<(&'static Field, f64)>,
+    /// The map drawn last: a tile's job number carries it, so that tiles of an older map
+    /// are dropped.
+    generation: u32,
 }
+
+/// Tiles of one map (the low bits of a tile's job number; `SIDE × SIDE` fit).
+const TILES_PER_MAP: u32 = 256;
 
 impl MapView {
     /// Whether the map is shown.
@@ -98,7 +108,7 @@ impl MapView {
     }
 
     /// Shows the map for `spec`, over its first two parameters, and starts filling it.
-    pub fn open(&mut self, preset: &'static Preset, spec: &ShellSpec) {
+    pub fn open(&mut self, preset: &'static Preset, spec: &ShellSpec, workers: &mut Workers) {
         let (Some(section), Some(x), Some(y)) = (
             element("map"),
             AxisControls::find("x"),
@@ -122,11 +132,12 @@ impl MapView {
         let (across, down) = first_axes(&self.parameters);
         x.offer(&self.parameters, across);
         y.offer(&self.parameters, down);
-        self.draw(preset, spec);
+        self.draw(preset, spec, workers);
     }
 
     /// Hides the map and stops filling it.
-    pub fn close(&mut self) {
+    pub fn close(&mut self, workers: &mut Workers) {
+        self.stop(workers);
         if let Some(section) = element("map") {
             attr(&section, "hidden", "");
         }
@@ -143,7 +154,7 @@ impl MapView {
     }
 
     /// Starts a map of `spec` over the axes the controls describe, or says why it cannot.
-    pub fn draw(&mut self, preset: &'static Preset, spec: &ShellSpec) {
+    pub fn draw(&mut self, preset: &'static Preset, spec: &ShellSpec, workers: &mut Workers) {
         let (Some(x), Some(y), Some(grid)) = (
             AxisControls::find("x"),
             AxisControls::find("y"),
@@ -191,8 +202,27 @@ impl MapView {
                 map.rows
             ),
         );
+        self.stop(workers);
+        for index in map.to_compute() {
+            workers.submit(Request::Tile {
+                job: self.generation * TILES_PER_MAP + index as u32,
+                link: map.tiles()[index].link.clone(),
+                rows: map.rows as u32,
+            });
+        }
+        for (index, tile) in map.tiles().iter().enumerate() {
+            if tile.failure.is_some() {
+                show_tile(&self.tiles[index], tile);
+            }
+        }
+        signal("map", if map.finished() { "whole" } else { "filling" });
         self.map = Some(map);
-        signal("map", "filling");
+    }
+
+    /// Drops the tiles of the map drawn so far that no worker has started.
+    fn stop(&mut self, workers: &mut Workers) {
+        workers.cancel(|r| matches!(r, Request::Tile { .. }));
+        self.generation = (self.generation + 1) % (u32::MAX / TILES_PER_MAP);
     }
 
     fn refuse(&mut self, message: &str) {
@@ -202,26 +232,32 @@ impl MapView {
         signal("map", "refused");
     }
 
-    /// Fills tiles for `budget_ms`, drawing each one finished.
-    pub fn work(&mut self, budget_ms: f64) {
+    /// A worker computed tile `job`: draws it, unless it belongs to an older map.
+    pub fn take(&mut self, job: u32, result: Result<Picture, String>) {
         let Some(map) = &mut self.map else { return };
-        if map.finished() {
+        if job / TILES_PER_MAP != self.generation {
             return;
         }
-        let until = now() + budget_ms;
-        for index in map.work(|| now() < until) {
-            let (tile, element) = (&map.tiles()[index], &self.tiles[index]);
-            match (&tile.picture, &tile.failure) {
-                (Some(picture), _) => paint(element, picture),
-                (None, failure) => {
-                    let _ = element.class_list().add_1("failed");
-                    let why = failure.as_deref().unwrap_or("no pattern");
-                    let title = element.get_attribute("title").unwrap_or_default();
-                    attr(element, "title", &format!("{title}: {why}"));
-                }
-            }
+        let index = (job % TILES_PER_MAP) as usize;
+        if index >= map.tiles().len() {
+            return;
         }
+        map.place(index, result);
+        show_tile(&self.tiles[index], &map.tiles()[index]);
         signal("map", if map.finished() { "whole" } else { "filling" });
+    }
+}
+
+/// Draws a tile's picture, or hatches it and says why it has none.
+fn show_tile(element: &Element, tile: &Tile) {
+    match (&tile.picture, &tile.failure) {
+        (Some(picture), _) => paint(element, picture),
+        (None, failure) => {
+            let _ = element.class_list().add_1("failed");
+            let why = failure.as_deref().unwrap_or("no pattern");
+            let title = element.get_attribute("title").unwrap_or_default();
+            attr(element, "title", &format!("{title}: {why}"));
+        }
     }
 }
 
@@ -240,7 +276,7 @@ fn clear_grid() {
 }
 
 /// Draws a tile's picture into its canvas.
-fn paint(tile: &Element, picture: &crate::share::parameter_map::Picture) {
+fn paint(tile: &Element, picture: &Picture) {
     let Some(canvas) = tile
         .first_element_child()
         .and_then(|c| c.dyn_into::<HtmlCanvasElement>().ok())

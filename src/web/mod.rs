@@ -16,6 +16,8 @@ mod recovery;
 mod share;
 mod viewer;
 mod webcodecs;
+mod worker_host;
+mod workers;
 
 use crate::export::Download;
 use app::App;
@@ -78,9 +80,21 @@ pub async fn start() -> Result<(), JsValue> {
         gallery::build(&groups);
     }
     let background = page::background();
+    let workers = Rc::new(RefCell::new(workers::Workers::start(
+        crate::generator::GROWTH_BUDGET_MS,
+    )));
     let viewers = async {
-        let main = Viewer::new(canvas("shell")?, Some(canvas("planar")?), background, true).await?;
-        let pictures = Viewer::new(canvas("picture-canvas")?, None, background, false).await?;
+        let shared = || Rc::clone(&workers);
+        let main = Viewer::new(
+            canvas("shell")?,
+            Some(canvas("planar")?),
+            background,
+            true,
+            shared(),
+        )
+        .await?;
+        let pictures =
+            Viewer::new(canvas("picture-canvas")?, None, background, false, shared()).await?;
         Ok::<_, String>((main, pictures))
     };
     let (main, pictures) = match viewers.await {
@@ -94,6 +108,7 @@ pub async fn start() -> Result<(), JsValue> {
     let app: Shared = Rc::new(RefCell::new(App::new(
         main,
         gallery::Pictures::new(pictures),
+        workers,
     )));
     let weak = Rc::downgrade(&app);
     debug::register(Box::new(move || {

@@ -11,6 +11,13 @@ pub fn document() -> Document {
         .expect("a browser page has a document")
 }
 
+/// Milliseconds since the page started.
+pub fn now() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map_or(0.0, |p| p.now())
+}
+
 /// The element with this id, as an `HtmlElement`.
 pub fn element(id: &str) -> Option<HtmlElement> {
     document().get_element_by_id(id)?.dyn_into().ok()

@@ -11,39 +11,45 @@ use super::debug;
 use super::page::show_message;
 use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
-use crate::generator::{Advance, Generator, within};
+use super::workers::Workers;
+use crate::generator::Advance;
 use crate::mesh::Bounds;
-use crate::pattern::run::PatternRun;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
 use crate::render::{Renderer, ShellLook};
+use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::camera::OrbitCamera;
 use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
-use crate::view::preview::Preview;
+use crate::view::preview::PreviewState;
+use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
+use crate::work::replica::Replica;
+use glam::DVec3;
+use std::cell::RefCell;
+use std::rc::Rc;
 use web_sys::HtmlCanvasElement;
 
-/// A shell being grown.
+/// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
 pub struct Growing {
     pub preset: &'static Preset,
-    pub generator: Generator,
+    spec: ShellSpec,
+    /// The link its worker grows it from.
+    link: String,
+    pub replica: Replica,
     camera: OrbitCamera,
     planar: Option<Planar>,
     /// The planar view's cells and rows for this shell's pattern.
     planar_size: Option<(u32, u32)>,
-    /// The pattern of values being dragged, shown in the planar view while growth waits.
-    preview: Option<Preview>,
-    /// Bounds of what has grown so far, edge included.
-    grown: Bounds,
-    /// The longest growth step lately, in milliseconds (see [`within`]).
-    longest_step: f64,
-    /// The pattern texture's layout and the shader's look: what a new renderer needs to take
-    /// the shell again.
-    texture_layout: Option<TextureLayout>,
-    look: ShellLook,
+    /// The pattern of values being dragged, computed by a worker and shown in the planar
+    /// view while growth waits.
+    preview: Option<Previewing>,
+    /// Requests of this shell's session sent and not yet answered.
+    pending: usize,
+    /// Whether growth to the end was asked for.
+    finishing: bool,
 }
 
 impl Growing {
@@ -52,20 +58,49 @@ impl Growing {
         activity::set(format!(
             "growing {}, row {}",
             self.preset.id,
-            self.generator.rows_done() + 1
+            self.replica.rows_done() + 1
         ));
         debug::panic_if_asked();
     }
 
+    /// Sets `renderer` up for this shell as its worker built it: buffers, pattern texture and
+    /// look. A renderer opened again after a lost device is set up the same way.
+    fn load_into(&self, renderer: &mut Renderer, shell: &ShellInfo) {
+        renderer.load_shell(
+            shell.capacity,
+            self.planar_size
+                .and_then(|(cells, rows)| TextureLayout::new(cells, rows)),
+            ShellLook::new(
+                &self.spec.colours,
+                &self.spec.material,
+                crate::forms::rows_per_whorl(&self.spec),
+                shell.line_grid,
+            ),
+        );
+    }
+
     /// Whether the view rests on what has grown (or where the user left it).
     pub fn view_at_rest(&self) -> bool {
-        self.camera.settled(&self.grown)
+        self.camera.settled(self.replica.grown())
     }
 
     /// The panes of `layout` on a canvas of aspect `aspect`.
     fn panes(&self, layout: Layout, aspect: f32) -> Vec<Pane> {
-        panes(layout, &self.camera, &self.grown, aspect)
+        panes(layout, &self.camera, self.replica.grown(), aspect)
     }
+
+    /// Whether the shell stands where its worker left it, nothing asked of it unanswered.
+    pub fn settled(&self) -> bool {
+        self.pending == 0 && self.replica.shell().is_some()
+    }
+}
+
+/// A pattern being previewed: its session on the worker that computes it, where it stands,
+/// and whether rows were asked for and not yet sent.
+struct Previewing {
+    session: u32,
+    state: PreviewState,
+    pending: bool,
 }
 
 pub struct Viewer {
@@ -85,6 +120,12 @@ pub struct Viewer {
     last_frame: f64,
     /// The drawing size a recording asks for, instead of the canvas's own.
     fixed_size: Option<(u32, u32)>,
+    /// Where the shells grow.
+    workers: Rc<RefCell<Workers>>,
+    /// The last session started (each load starts one; replies of older ones are dropped).
+    session: u32,
+    /// Rows the playback's speed asked for while the worker was still busy.
+    owed: usize,
     /// The clear colour, as sRGB bytes (for a renderer opened again).
     background: [u8; 3],
     /// A renderer being opened after the device was lost, and when the loss was seen.
@@ -109,12 +150,7 @@ pub enum Device {
     Gone(String),
 }
 
-/// Milliseconds since the page started.
-pub fn now() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.performance())
-        .map_or(0.0, |p| p.now())
-}
+pub use super::page::now;
 
 impl Viewer {
     pub async fn new(
@@ -122,6 +158,7 @@ impl Viewer {
         planar_canvas: Option<HtmlCanvasElement>,
         background: [u8; 3],
         follows: bool,
+        workers: Rc<RefCell<Workers>>,
     ) -> Result<Self, String> {
         let mut renderer = Renderer::new(canvas.clone()).await?;
         renderer.set_background(background);
@@ -137,6 +174,9 @@ impl Viewer {
             layout: Layout::Single,
             last_frame: now(),
             fixed_size: None,
+            workers,
+            session: 0,
+            owed: 0,
             background,
             reopening: None,
             lost_at: None,
@@ -167,104 +207,272 @@ impl Viewer {
         self.growing = None;
     }
 
-    /// Starts growing `spec` from its apex.
-    pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) -> Result<(), String> {
+    /// Starts growing `spec` from its apex on a worker, dropping the shell grown before and
+    /// the work still waiting for it; nothing more of it reaches the screen. The worker's
+    /// answer comes in a later frame ([`Self::take`]).
+    pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) {
         activity::set(format!("loading {}", preset.id));
-        let generator =
-            Generator::new(spec).map_err(|e| format!("This shell cannot be built: {e}"))?;
-        let pattern = generator
-            .pattern()
-            .map(|p| (p.cells() as u32, spec.growth.rows));
-        let texture_layout = pattern.and_then(|(cells, rows)| TextureLayout::new(cells, rows));
-        let look = ShellLook::new(
-            &spec.colours,
-            &spec.material,
-            crate::forms::rows_per_whorl(spec),
-            generator.line_grid(),
-        );
-        self.renderer
-            .load_shell(generator.capacity(), texture_layout, look);
-        let (bounds, front) = generator.framing();
+        self.session = self.session.wrapping_add(1);
+        let link = link::encode(preset, spec);
+        let mut workers = self.workers.borrow_mut();
+        workers.cancel(|r| matches!(r, Request::Pieces { .. }));
+        workers.submit(Request::Load {
+            session: self.session,
+            link: link.clone(),
+        });
+        self.playback.restart(spec.growth.speed);
+        self.owed = 0;
+        // Framed on a unit box until the worker says what the shell is.
+        let placeholder = Bounds {
+            min: DVec3::splat(-1.0),
+            max: DVec3::splat(1.0),
+        };
+        self.growing = Some(Growing {
+            preset,
+            spec: spec.clone(),
+            link,
+            replica: Replica::new(self.session),
+            camera: OrbitCamera::framing(&placeholder, DVec3::Z, 0.0, 0.0),
+            planar: None,
+            planar_size: None,
+            preview: None,
+            pending: 1,
+            finishing: false,
+        });
+        self.dirty = true;
+    }
+
+    /// Shows a shell grown whole on a worker (a gallery picture), at rest.
+    pub fn show_whole(&mut self, preset: &'static Preset, spec: &ShellSpec, whole: WholeShell) {
+        self.session = self.session.wrapping_add(1);
+        let shell = whole.shell.clone();
+        let replica = Replica::whole(self.session, whole);
+        let everything = replica.everything();
+        self.growing = Some(Growing {
+            preset,
+            spec: spec.clone(),
+            link: String::new(),
+            replica,
+            camera: OrbitCamera::framing(&shell.bounds, shell.front, 0.0, 0.0),
+            planar: None,
+            planar_size: None,
+            preview: None,
+            pending: 0,
+            finishing: false,
+        });
+        self.loaded(shell, everything);
+    }
+
+    /// The shell is built on its worker: sets up the renderer, the camera and the planar view
+    /// for it, and shows its first step.
+    fn loaded(&mut self, shell: ShellInfo, advance: Advance) {
+        let Some(g) = &mut self.growing else { return };
+        let pattern = (shell.cells > 0).then_some((shell.cells, g.spec.growth.rows));
+        g.planar_size = pattern;
+        g.load_into(&mut self.renderer, &shell);
         let mut grown = Bounds::EMPTY;
-        grown.include_vertices(&generator.mesh().vertices);
-        grown.include_vertices(&generator.edge().vertices);
+        grown.include_vertices(&g.replica.mesh().vertices);
+        grown.include_vertices(&g.replica.edge().vertices);
         let mut camera = OrbitCamera::framing(
-            &bounds,
-            front,
-            preset.view.yaw.to_radians(),
-            preset.view.pitch.to_radians(),
+            &shell.bounds,
+            shell.front,
+            g.preset.view.yaw.to_radians(),
+            g.preset.view.pitch.to_radians(),
         );
         if self.follows {
             camera = camera.following(&grown);
         }
-        let planar = self
+        g.camera = camera;
+        g.planar = self
             .planar_canvas
             .clone()
             .and_then(|c| Planar::new(c, pattern));
-        self.playback.restart(spec.growth.speed);
-        self.growing = Some(Growing {
-            preset,
-            generator,
-            camera,
-            planar,
-            planar_size: pattern,
-            preview: None,
-            grown,
-            longest_step: 0.0,
-            texture_layout,
-            look,
-        });
-        let grown = self
-            .growing
-            .as_ref()
-            .map(|g| g.generator.grown())
-            .unwrap_or_default();
-        self.upload(&grown);
+        self.upload(&advance);
+    }
+
+    /// Takes in a worker's reply to `request`: a reply about another shell than this one's is
+    /// dropped. Fails with the words to show when the shell cannot be built or grown.
+    pub fn take(&mut self, request: &Request, reply: Reply) -> Result<(), String> {
+        let Some(g) = &mut self.growing else {
+            return Ok(());
+        };
+        let session = g.replica.session();
+        let ours = |s: u32| s == session;
+        let advance = match reply {
+            Reply::Loaded {
+                session,
+                shell,
+                delta,
+            } if ours(session) => {
+                g.pending -= 1;
+                let advance = g
+                    .replica
+                    .loaded(shell.clone(), delta)
+                    .map_err(|e| e.to_string())?;
+                self.loaded(shell, advance);
+                self.dirty = true;
+                return Ok(());
+            }
+            Reply::Refused { session, message } if ours(session) => return Err(message),
+            Reply::Grew { session, delta } if ours(session) => {
+                g.pending -= 1;
+                g.replica.apply(delta).map_err(|e| e.to_string())?
+            }
+            Reply::Apart {
+                session,
+                delta,
+                pieces,
+                hash,
+            } if ours(session) => {
+                g.pending -= 1;
+                let mut workers = self.workers.borrow_mut();
+                for (group, ids) in pieces.groups.iter().enumerate() {
+                    workers.submit(Request::Pieces {
+                        job: group as u32,
+                        link: g.link.clone(),
+                        step: pieces.step,
+                        ids: ids.clone(),
+                    });
+                }
+                g.replica
+                    .apart(delta, pieces, hash)
+                    .map_err(|e| e.to_string())?
+            }
+            Reply::Resumed {
+                session,
+                vertices,
+                indices,
+            } if ours(session) => {
+                g.pending -= 1;
+                let mesh = g.replica.mesh();
+                if (vertices as usize, indices as usize)
+                    != (mesh.vertices.len(), mesh.indices.len())
+                {
+                    return Err("a worker grew the shell again to another mesh".into());
+                }
+                return Ok(());
+            }
+            reply @ Reply::Previewed { .. } => {
+                let rows = g.spec.growth.rows;
+                self.previewed(reply, rows);
+                self.dirty = true;
+                return Ok(());
+            }
+            Reply::Made { job, meshes, hash } => {
+                let Request::Pieces { link, .. } = request else {
+                    return Ok(());
+                };
+                if *link != g.link {
+                    return Ok(());
+                }
+                match g.replica.made(job as usize, meshes, hash) {
+                    Some(advance) => advance,
+                    None => return Ok(()),
+                }
+            }
+            _ => return Ok(()),
+        };
+        self.upload(&advance);
         self.dirty = true;
         Ok(())
     }
 
+    /// The worker holding the shell was replaced, losing `lost` unanswered: the shell is grown
+    /// again on the fresh one to where the page's copy stands, and what was lost asked again.
+    pub fn resume(&mut self, lost: Vec<Request>) {
+        let Some(g) = &mut self.growing else { return };
+        let session = g.replica.session();
+        let mut workers = self.workers.borrow_mut();
+        g.pending = 0;
+        if g.replica.shell().is_none() {
+            workers.submit(Request::Load {
+                session,
+                link: g.link.clone(),
+            });
+            g.pending = 1;
+        } else if g.replica.pieces().is_none() && !g.replica.is_done() {
+            workers.submit(Request::Resume {
+                session,
+                link: g.link.clone(),
+                rows: g.replica.rows_done() as u32,
+                steps: g.replica.steps_done() as u32,
+            });
+            g.pending = 1;
+        } else {
+            return;
+        }
+        if lost.iter().any(|r| matches!(r, Request::Finish { .. })) || g.finishing {
+            workers.submit(Request::Finish { session });
+            g.pending += 1;
+        }
+    }
+
     fn upload(&mut self, advance: &Advance) {
         let Some(g) = &mut self.growing else { return };
-        g.grown
-            .include_vertices(&g.generator.mesh().vertices[advance.vertices.clone()]);
-        if advance.edge_changed {
-            g.grown.include_vertices(&g.generator.edge().vertices);
-        }
-        self.renderer.set_ground(&g.grown);
-        let rgba = g.generator.pattern().map_or(&[][..], |p| {
-            let row = p.cells() * 4;
-            &p.rgba()[advance.rows.start * row..advance.rows.end * row]
-        });
+        let replica = &g.replica;
+        self.renderer.set_ground(replica.grown());
+        let row = replica.cells() * 4;
+        let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
         self.renderer
-            .upload(g.generator.mesh(), g.generator.edge(), advance, rgba);
+            .upload(replica.mesh(), replica.edge(), advance, rgba);
         if let Some(planar) = &g.planar {
             planar.draw_rows(advance.rows.start as u32, rgba);
             planar.follow(advance.rows.end as u32);
         }
     }
 
-    /// Shows the whole pattern of `spec` in the planar view, computed over the next frames,
-    /// while the shell's growth waits (until [`Self::end_preview`] or another spec is loaded).
-    /// Values that give no pattern at all are refused with the reason.
-    pub fn preview(&mut self, spec: &ShellSpec) -> Result<(), String> {
-        let Some(g) = &mut self.growing else {
-            return Ok(());
+    /// Shows the whole pattern of `spec` in the planar view, computed by a worker over the
+    /// next frames, while the shell's growth waits (until [`Self::end_preview`] or another
+    /// spec is loaded). Values that give no pattern at all are refused with the reason, in a
+    /// message, when the worker answers.
+    pub fn preview(&mut self, spec: &ShellSpec) {
+        let Some(g) = &mut self.growing else { return };
+        self.session = self.session.wrapping_add(1);
+        self.workers.borrow_mut().submit(Request::Preview {
+            session: self.session,
+            link: link::encode(g.preset, spec),
+        });
+        g.preview = Some(Previewing {
+            session: self.session,
+            state: PreviewState::Filling,
+            pending: true,
+        });
+    }
+
+    /// Takes in rows of the pattern previewed (`first..` of `cells` cells, `rows` in all).
+    fn previewed(&mut self, reply: Reply, rows: u32) {
+        let Reply::Previewed {
+            session,
+            cells,
+            first,
+            rgba,
+            state,
+            failure,
+        } = reply
+        else {
+            return;
         };
-        let run = match PatternRun::new(spec) {
-            Ok(Some(run)) => run,
-            Ok(None) => return Ok(()),
-            Err(e) => return Err(format!("With these values there is no pattern: {e}.")),
+        let Some(g) = &mut self.growing else { return };
+        let Some(p) = g.preview.as_mut().filter(|p| p.session == session) else {
+            return;
         };
-        g.planar = self
-            .planar_canvas
-            .clone()
-            .and_then(|c| Planar::new(c, Some((run.cells() as u32, spec.growth.rows))));
-        if let Some(planar) = &g.planar {
-            planar.draw_rows(0, run.rgba());
+        p.pending = false;
+        p.state = state;
+        if let Some(message) = failure {
+            show_message(&message);
         }
-        g.preview = Some(Preview::new(run, spec.growth.rows as usize));
-        Ok(())
+        if cells == 0 {
+            return;
+        }
+        if first == 0 {
+            g.planar = self
+                .planar_canvas
+                .clone()
+                .and_then(|c| Planar::new(c, Some((cells, rows))));
+        }
+        if let Some(planar) = &g.planar {
+            planar.draw_rows(first, &rgba);
+        }
     }
 
     /// Back from a preview to the growing shell's own pattern in the planar view.
@@ -277,9 +485,10 @@ impl Viewer {
             .planar_canvas
             .clone()
             .and_then(|c| Planar::new(c, g.planar_size));
-        if let (Some(planar), Some(pattern)) = (&g.planar, g.generator.pattern()) {
-            planar.draw_rows(0, pattern.rgba());
-            planar.follow(pattern.rows() as u32);
+        if let Some(planar) = &g.planar {
+            let replica = &g.replica;
+            planar.draw_rows(0, replica.rgba());
+            planar.follow((replica.rgba().len() / (replica.cells() * 4).max(1)) as u32);
         }
     }
 
@@ -288,7 +497,7 @@ impl Viewer {
         self.growing
             .as_ref()
             .and_then(|g| g.preview.as_ref())
-            .map_or("", |p| p.state().signal())
+            .map_or("", |p| p.state.signal())
     }
 
     /// Keeps a graphics device: when the browser took the renderer's away, opens another in
@@ -341,7 +550,8 @@ impl Viewer {
     }
 
     /// Draws with a renderer opened again: the shell's buffers and texture are made anew and
-    /// take everything grown so far (mesh, edge and pattern rows), which the generator kept.
+    /// take everything grown so far (mesh, edge and pattern rows), which the page's copy of the
+    /// shell kept.
     fn install(&mut self, reopened: Reopened) {
         let Reopened {
             mut renderer,
@@ -353,13 +563,13 @@ impl Viewer {
         }
         self.canvas = canvas;
         self.renderer = renderer;
-        let grown = self.growing.as_ref().map(|g| {
-            self.renderer
-                .load_shell(g.generator.capacity(), g.texture_layout, g.look);
-            g.generator.grown()
+        let everything = self.growing.as_ref().and_then(|g| {
+            let shell = g.replica.shell()?;
+            g.load_into(&mut self.renderer, shell);
+            Some(g.replica.everything())
         });
-        if let Some(grown) = grown {
-            self.upload(&grown);
+        if let Some(everything) = everything {
+            self.upload(&everything);
         }
         self.dirty = true;
     }
@@ -375,30 +585,37 @@ impl Viewer {
         self.renderer.destroy_device();
     }
 
-    /// Grows up to `rows` rows now, stopping early when `budget_ms` has passed.
+    /// Asks the shell's worker to grow up to `rows` rows, stopping early when `budget_ms`
+    /// has passed.
     pub fn grow(&mut self, rows: usize, budget_ms: f64) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
-        g.note_activity();
-        let advance = g
-            .generator
-            .advance_while(rows, within(now, budget_ms, &mut g.longest_step));
-        self.upload(&advance);
-        self.dirty = true;
-    }
-
-    /// Grows the rest of the shell at once.
-    pub fn finish(&mut self) {
-        self.end_preview();
-        let Some(g) = &mut self.growing else { return };
-        if g.generator.is_done() {
+        if g.finishing || g.replica.is_done() {
             return;
         }
         g.note_activity();
-        g.generator.finish();
-        let advance = g.generator.grown();
-        self.upload(&advance);
-        self.dirty = true;
+        self.workers.borrow_mut().submit(Request::Grow {
+            session: g.replica.session(),
+            rows: u32::try_from(rows).unwrap_or(u32::MAX),
+            budget_ms,
+        });
+        g.pending += 1;
+    }
+
+    /// Asks the shell's worker to grow the rest of the shell at once (what splits is shared
+    /// among the pool when it answers).
+    pub fn finish(&mut self) {
+        self.end_preview();
+        let Some(g) = &mut self.growing else { return };
+        if g.finishing || g.replica.is_done() {
+            return;
+        }
+        g.note_activity();
+        self.workers.borrow_mut().submit(Request::Finish {
+            session: g.replica.session(),
+        });
+        g.pending += 1;
+        g.finishing = true;
     }
 
     /// Keeps the drawing buffer at the canvas's size in device pixels.
@@ -430,39 +647,46 @@ impl Viewer {
         self.fit_canvas();
         if let Some(g) = &mut self.growing
             && let Some(preview) = &mut g.preview
+            && preview.state == PreviewState::Filling
+            && !preview.pending
         {
-            let until = now() + budget_ms;
-            let (first, failure) = preview.fill(|| now() < until);
-            if let Some(e) = failure {
-                show_message(&format!("With these values the pattern stops {e}."));
-            }
-            if let Some(planar) = &g.planar {
-                let run = preview.run();
-                planar.draw_rows(first as u32, &run.rgba()[first * run.cells() * 4..]);
-            }
+            self.workers.borrow_mut().submit(Request::Fill {
+                session: preview.session,
+                budget_ms,
+            });
+            preview.pending = true;
         }
-        let growing = self
-            .growing
-            .as_ref()
-            .is_some_and(|g| !g.generator.is_done() && g.preview.is_none());
+        let growing = self.growing.as_ref().is_some_and(|g| {
+            g.replica.shell().is_some() && !g.replica.is_done() && g.preview.is_none()
+        });
         if growing && self.playback.playing {
-            let rows = self.playback.rows_this_frame();
-            if rows > 0 {
+            // The rows of frames that pass while the worker is busy add up, and are asked for
+            // together once it has answered: growth keeps the speed it has on the page's thread.
+            self.owed += self.playback.rows_this_frame();
+            let settled = self.growing.as_ref().is_some_and(Growing::settled);
+            if settled && self.owed > 0 {
+                let rows = std::mem::take(&mut self.owed);
                 self.grow(rows, growth_budget(budget_ms, now() - self.last_frame));
             }
+        } else {
+            self.owed = 0;
         }
         let time = now();
         let dt = ((time - self.last_frame) / 1000.0).min(0.25) as f32;
         self.last_frame = time;
         if let Some(g) = &mut self.growing
-            && g.camera.follow(&g.grown, dt)
+            && g.camera.follow(g.replica.grown(), dt)
         {
             self.dirty = true;
         }
         if !self.dirty {
             return Ok(false);
         }
-        let Some(g) = &self.growing else {
+        let Some(g) = self
+            .growing
+            .as_ref()
+            .filter(|g| g.replica.shell().is_some())
+        else {
             return Ok(false);
         };
         self.renderer
@@ -545,18 +769,16 @@ impl Viewer {
         let Some(g) = &mut self.growing else {
             return true;
         };
-        let behind = row.saturating_sub(g.generator.rows_done());
-        if behind > 0 || !g.generator.caught_up() {
-            g.note_activity();
-            let advance = g
-                .generator
-                .advance_while(behind, within(now, budget_ms, &mut g.longest_step));
-            self.upload(&advance);
-            self.dirty = true;
+        if !g.settled() {
+            return false;
         }
-        self.growing.as_ref().is_none_or(|g| {
-            g.generator.is_done() || (g.generator.rows_done() >= row && g.generator.caught_up())
-        })
+        let r = &g.replica;
+        if r.is_done() || (r.rows_done() >= row && r.caught_up()) {
+            return true;
+        }
+        let behind = row.saturating_sub(r.rows_done());
+        self.grow(behind, budget_ms);
+        false
     }
 
     /// Draws a recording's frame: the camera eased by `dt` seconds of video (not of the
@@ -572,7 +794,7 @@ impl Viewer {
         let Some(g) = &mut self.growing else {
             return Err("no shell is loaded".into());
         };
-        g.camera.follow(&g.grown, dt);
+        g.camera.follow(g.replica.grown(), dt);
         g.camera.yaw += turn;
         self.renderer
             .draw(&g.panes(self.layout, self.renderer.aspect()))?;

@@ -16,11 +16,14 @@ from PIL import Image
 from cli import export
 
 # One preset of each form, and whether it has a pattern.
+# Each form's preset and how its GLB carries colour: the pattern as a texture, colours per
+# vertex (the Murex's four parts textured apart and blended by field, Galbraith et al. §3.4),
+# or the material's colour alone.
 FORMS = {
-    "sweep": ("oliva-porphyria", True),
-    "chambers": ("kawaguchi-painted", True),
-    "branching": ("kawaguchi-coral", False),
-    "implicit": ("murex-cabritii", True),
+    "sweep": ("oliva-porphyria", "texture"),
+    "chambers": ("kawaguchi-painted", "texture"),
+    "branching": ("kawaguchi-coral", None),
+    "implicit": ("murex-cabritii", "vertex"),
 }
 
 
@@ -57,6 +60,16 @@ def sample(image, uv):
     return to_srgb(top * (1 - fy) + bottom * fy)
 
 
+def glb_json(path):
+    """The JSON chunk of the GLB at `path` (glTF 2.0 §4.4: a 12-byte header, then the chunk's
+    length and type)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    length = int.from_bytes(data[12:16], "little")
+    assert data[16:20] == b"JSON"
+    return json.loads(data[20:20 + length])
+
+
 def parts(path):
     """The GLB's primitives by material name, as trimesh loads them."""
     scene = trimesh.load(path)
@@ -65,7 +78,8 @@ def parts(path):
 
 class Glb(unittest.TestCase):
     def test_one_preset_of_each_form_passes_the_validator_and_loads(self):
-        for form, (preset, patterned) in FORMS.items():
+        for form, (preset, colours) in FORMS.items():
+            patterned = colours == "texture"
             with self.subTest(form=form):
                 path = export(preset, "glb")
                 report = validate(path)
@@ -82,6 +96,10 @@ class Glb(unittest.TestCase):
                 if patterned:
                     self.assertIsNotNone(shell.visual.material.baseColorTexture)
                     self.assertEqual(shell.visual.uv.shape, (len(shell.vertices), 2))
+                if colours == "vertex":
+                    document = glb_json(path)
+                    attributes = [p["attributes"] for m in document["meshes"] for p in m["primitives"]]
+                    self.assertTrue(any("COLOR_0" in a for a in attributes), attributes)
 
     def test_the_texture_is_the_planar_pattern(self):
         glb = parts(export("oliva-porphyria", "glb"))

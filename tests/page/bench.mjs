@@ -41,3 +41,7 @@ for (const [what, rate] of wasmRates) {
   if (jsRates.has(what)) parts.push(`wasm / JavaScript ${(rate / jsRates.get(what)).toFixed(2)}`);
   console.log(`${what.padEnd(40)} ${parts.join('   ')}`);
 }
+
+// Growth off the page's thread: frame script time, finishing and the gallery, 1 vs W workers.
+const { benchWorkers } = await import('./bench-workers.mjs');
+await benchWorkers();

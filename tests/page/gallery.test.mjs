@@ -170,6 +170,8 @@ test('the keyboard plays, pauses, steps and restarts', async () => {
     await page.locator('#shell').click();
     await page.keyboard.press(' ');
     await page.waitForFunction(() => document.body.dataset.playing === 'false');
+    // Rows asked of the worker before the pause still arrive: wait until every answer is in.
+    await page.waitForFunction(() => document.body.dataset.settled === 'true');
     const paused = Number((await dataset(page)).rows);
     await page.waitForTimeout(600);
     assert.equal(Number((await dataset(page)).rows), paused, 'paused growth stays put');

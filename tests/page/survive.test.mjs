@@ -51,6 +51,8 @@ async function grownAndPaused(page) {
   await page.waitForFunction((n) => Number(document.body.dataset.rows) >= n, PAUSE_AT, { timeout: 120_000 });
   await page.keyboard.press('Space');
   await page.waitForFunction(() => document.body.dataset.playing === 'false');
+  // Rows asked of the worker before the pause still arrive: wait until every answer is in.
+  await page.waitForFunction(() => document.body.dataset.settled === 'true', null, { timeout: 60_000 });
   await page.waitForTimeout(300);
   return Number(await page.evaluate(() => document.body.dataset.rows));
 }

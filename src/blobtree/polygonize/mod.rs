@@ -40,42 +40,117 @@ use std::collections::HashMap;
 /// culled from that: culling a chunk from the whole tree costs more than sampling it.
 const CULLED_CHUNKS: u32 = 4;
 
+/// The block of chunks that `chunk` is culled with.
+pub fn block_of(chunk: ChunkIndex) -> [u32; 3] {
+    chunk.map(|c| c / CULLED_CHUNKS)
+}
+
 /// Every chunk of `tree` at growth step `step`, meshed and joined: the whole surface at once.
 pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
-    let mut scratch = Scratch::default();
-    let mut seams = Seams::default();
+    let mut work = ChunkWork::new(step, grid.chunks_touching(&tree.bounds));
+    work.work(tree, grid, &mut || true);
     let mut mesh = Mesh::default();
-    let mut blocks: Vec<Vec<ChunkIndex>> = Vec::new();
-    let mut block_of = HashMap::new();
-    for chunk in grid.chunks_touching(&tree.bounds) {
-        let block = chunk.map(|c| c / CULLED_CHUNKS);
-        let n = *block_of.entry(block).or_insert_with(|| {
-            blocks.push(Vec::new());
-            blocks.len() - 1
-        });
-        blocks[n].push(chunk);
-    }
-    for chunks in blocks {
-        let mut region = Bounds::EMPTY;
-        for &chunk in &chunks {
-            region = region.union(&grid.region(chunk));
-        }
-        // As wide as the culls of its chunks reach (see `sample`).
-        let Some(tree) = tree.cull(&region.padded(grid.voxel), step) else {
-            continue;
-        };
-        for chunk in chunks {
-            mesh.append(&mesh_chunk(
-                &tree,
-                grid,
-                chunk,
-                step,
-                &mut scratch,
-                Memory::Seams(&mut seams),
-            ));
-        }
+    for (_, m) in work.into_meshes() {
+        mesh.append(&m);
     }
     mesh
+}
+
+/// Chunks meshed one after another from one tree at one growth step, a few at a time if need
+/// be: grouped by block (in the order each block first appears), each block's tree culled
+/// once, and every chunk handing the samples and vertices on its faces to the neighbours met
+/// after it ([`Seams`]). A chunk's mesh is the same, bit for bit, whichever other chunks are
+/// meshed with it, so the chunks of a surface may be shared out among workers and their meshes
+/// joined in a fixed order.
+pub struct ChunkWork {
+    step: u32,
+    chunks: Vec<ChunkIndex>,
+    next: usize,
+    /// The block being meshed and its tree, `None` where nothing of the tree reaches it.
+    block: Option<([u32; 3], Option<Node>)>,
+    seams: Seams,
+    scratch: Scratch,
+    meshes: Vec<(ChunkIndex, Mesh)>,
+}
+
+impl ChunkWork {
+    /// The work of meshing `chunks` at growth step `step`.
+    pub fn new(step: u32, chunks: Vec<ChunkIndex>) -> Self {
+        let mut order: Vec<[u32; 3]> = Vec::new();
+        let mut of_block: HashMap<[u32; 3], Vec<ChunkIndex>> = HashMap::new();
+        for chunk in chunks {
+            let block = block_of(chunk);
+            of_block
+                .entry(block)
+                .or_insert_with(|| {
+                    order.push(block);
+                    Vec::new()
+                })
+                .push(chunk);
+        }
+        let chunks = order
+            .iter()
+            .flat_map(|b| of_block.remove(b).unwrap_or_default())
+            .collect();
+        Self {
+            step,
+            chunks,
+            next: 0,
+            block: None,
+            seams: Seams::default(),
+            scratch: Scratch::default(),
+            meshes: Vec::new(),
+        }
+    }
+
+    /// Meshes chunks of `tree` on `grid` while `keep_going` allows (at least one); says
+    /// whether all are meshed.
+    pub fn work(&mut self, tree: &Node, grid: &Grid, keep_going: &mut dyn FnMut() -> bool) -> bool {
+        let mut first = true;
+        while self.next < self.chunks.len() && (first || keep_going()) {
+            first = false;
+            let chunk = self.chunks[self.next];
+            let block = block_of(chunk);
+            if self.block.as_ref().is_none_or(|(b, _)| *b != block) {
+                let mut region = Bounds::EMPTY;
+                for &c in self.chunks[self.next..]
+                    .iter()
+                    .take_while(|&&c| block_of(c) == block)
+                {
+                    region = region.union(&grid.region(c));
+                }
+                // As wide as the culls of its chunks reach (see `sample`).
+                let culled = tree.cull(&region.padded(grid.voxel), self.step);
+                self.block = Some((block, culled));
+            }
+            self.next += 1;
+            let Some((_, Some(tree))) = &self.block else {
+                continue;
+            };
+            let mesh = mesh_chunk(
+                tree,
+                grid,
+                chunk,
+                self.step,
+                &mut self.scratch,
+                Memory::Seams(&mut self.seams),
+            );
+            if !mesh.indices.is_empty() {
+                self.meshes.push((chunk, mesh));
+            }
+        }
+        self.is_done()
+    }
+
+    /// Whether every chunk is meshed.
+    pub fn is_done(&self) -> bool {
+        self.next >= self.chunks.len()
+    }
+
+    /// The meshes of the chunks that hold part of the surface, in the order they were meshed.
+    pub fn into_meshes(self) -> Vec<(ChunkIndex, Mesh)> {
+        self.meshes
+    }
 }
 
 #[cfg(test)]

@@ -3,15 +3,17 @@
 //! chunk's meshing, so that a frame's time budget can stop between any two; the chunks of one
 //! instance are shown together once all are meshed, so that what is on screen is always one
 //! closed surface. A chunk that no later instance reaches is final and moves to the permanent
-//! mesh; the others, still open to change, make up the transient edge mesh.
+//! mesh; the others, still open to change, make up the transient edge mesh. Finishing meshes
+//! every chunk not yet final once, as it ends up: those chunks are pieces that other threads
+//! may mesh apart ([`PieceMaker`]), joined in the order of their numbers.
 
 use super::whorl::{Whorl, whorl};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::polygonize::{
-    ChunkCache, ChunkIndex, Grid, Memory, Scratch, Seams, mesh_chunk, surface_box,
+    ChunkCache, ChunkIndex, ChunkWork, Grid, Memory, Scratch, block_of, mesh_chunk, surface_box,
 };
 use crate::mesh::{Bounds, Capacity, Mesh};
-use crate::shape::{GrowingShape, LineGrid, ShapeError};
+use crate::shape::{GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::form::implicit::ImplicitSpec;
 use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
@@ -20,10 +22,51 @@ use std::collections::BTreeMap;
 /// Voxels along the longest side when the shell's extent is estimated, for framing.
 const ESTIMATE_RESOLUTION: u32 = 32;
 
-/// The growing implicit shell.
-pub struct ImplicitMesh {
+/// What meshes the pieces of an implicit shell's growth apart from it: its tree and grid,
+/// built from the same spec. A piece is a chunk, numbered as [`Grid::linear`] numbers it.
+pub struct PieceMaker {
     tree: Node,
     grid: Grid,
+}
+
+impl PieceMaker {
+    /// The pieces of the shell of `spec` (see [`ImplicitMesh::new`]).
+    pub fn new(
+        spec: &ImplicitSpec,
+        pattern: &PatternSpec,
+        seed: u64,
+        rows: usize,
+    ) -> Result<Self, ShapeError> {
+        let tree = whorl(spec, pattern, seed, rows)?.tree;
+        let grid = Grid::new(&tree.bounds, spec.resolution);
+        Ok(Self { tree, grid })
+    }
+
+    /// The work of meshing the chunks numbered `ids` at growth step `step`.
+    pub fn start(&self, step: u32, ids: &[u32]) -> ChunkWork {
+        let chunks = ids
+            .iter()
+            .map(|&n| self.grid.chunk_at(n as usize))
+            .collect();
+        ChunkWork::new(step, chunks)
+    }
+
+    /// Meshes chunks of `work` while `keep_going` allows (at least one); says whether all are.
+    pub fn work(&self, work: &mut ChunkWork, keep_going: &mut dyn FnMut() -> bool) -> bool {
+        work.work(&self.tree, &self.grid, keep_going)
+    }
+
+    /// The meshes of the chunks of finished `work` that hold part of the surface, by number.
+    pub fn finished(&self, work: ChunkWork) -> Vec<(u32, Mesh)> {
+        (work.into_meshes().into_iter())
+            .map(|(chunk, mesh)| (self.grid.linear(chunk) as u32, mesh))
+            .collect()
+    }
+}
+
+/// The growing implicit shell.
+pub struct ImplicitMesh {
+    maker: PieceMaker,
     front: DVec3,
     bounds: Bounds,
     resolution: u32,
@@ -79,8 +122,7 @@ impl ImplicitMesh {
             instances.saturating_sub(1),
         );
         Ok(Self {
-            tree,
-            grid,
+            maker: PieceMaker { tree, grid },
             front,
             bounds,
             resolution: spec.resolution,
@@ -157,11 +199,11 @@ impl GrowingShape for ImplicitMesh {
         let Some(&(instance, chunk)) = self.jobs.get(self.done) else {
             return false;
         };
-        let linear = self.grid.linear(chunk);
+        let linear = self.maker.grid.linear(chunk);
         let mut cache = self.caches.remove(&linear).unwrap_or_default();
         let m = mesh_chunk(
-            &self.tree,
-            &self.grid,
+            &self.maker.tree,
+            &self.maker.grid,
             chunk,
             instance,
             &mut self.scratch,
@@ -184,31 +226,39 @@ impl GrowingShape for ImplicitMesh {
 
     /// Meshes every chunk not yet final once, as it ends up, skipping the stages between.
     fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
-        let Some(&(last, _)) = self.jobs.last() else {
-            return;
-        };
+        if let Some(pieces) = self.finish_apart(mesh, edge) {
+            // One work over all the blocks, so that they hand their faces on to each other too.
+            let mut work = self.maker.start(pieces.step, &pieces.groups.concat());
+            self.maker.work(&mut work, &mut || true);
+            pieces.join(mesh, self.maker.finished(work));
+        }
+    }
+
+    /// The chunks not yet final, grouped by the blocks their tree is culled to: each is meshed
+    /// once, as it ends up, at the last growth step.
+    fn finish_apart(&mut self, _mesh: &mut Mesh, edge: &mut Mesh) -> Option<Pieces> {
+        let &(last, _) = self.jobs.last()?;
         if self.done == self.jobs.len() {
-            return;
+            return None;
+        }
+        let mut groups: Vec<Vec<u32>> = Vec::new();
+        let mut group_of = BTreeMap::new();
+        for (linear, &reach) in self.last_reach.iter().enumerate() {
+            if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
+                let block = block_of(self.maker.grid.chunk_at(linear));
+                let n = *group_of.entry(block).or_insert_with(|| {
+                    groups.push(Vec::new());
+                    groups.len() - 1
+                });
+                groups[n].push(linear as u32);
+            }
         }
         self.pending.clear();
         self.live.clear();
         self.caches.clear();
-        let mut seams = Seams::default();
-        for (linear, &reach) in self.last_reach.iter().enumerate() {
-            if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
-                let chunk = self.grid.chunk_at(linear);
-                mesh.append(&mesh_chunk(
-                    &self.tree,
-                    &self.grid,
-                    chunk,
-                    last,
-                    &mut self.scratch,
-                    Memory::Seams(&mut seams),
-                ));
-            }
-        }
         edge.clear();
         self.shown = Some(last);
         self.done = self.jobs.len();
+        Some(Pieces { step: last, groups })
     }
 }

@@ -1,0 +1,283 @@
+//! The page's workers: a pool of Web Workers (`www/worker.js`, one per core but the page's own,
+//! at most eight; `workers=N` in the address's query sets another number, for tests and
+//! benchmarks), each running the core's host, with the core's [`Pool`] sharing requests out.
+//! Requests and replies cross as bytes in transferred `ArrayBuffer`s. A worker that throws, or
+//! keeps a request past its allowance, is terminated and replaced, and its jobs are sent again;
+//! the status line says so from the second time. Where workers cannot start (or with
+//! `workers=0`), one host runs on the page's own thread a frame's budget at a time, and the
+//! status line says so.
+//!
+//! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
+//! first request (see `www/worker.js`).
+
+use super::page::{now, set_text, signal};
+use crate::work::host::{Budget, Host};
+use crate::work::message::{Reply, Request, decode_reply, encode_request};
+use crate::work::pool::{Pool, SESSIONS, size_for};
+use js_sys::{Array, Uint8Array};
+use std::cell::RefCell;
+use std::rc::Rc;
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+use web_sys::{ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
+
+/// What a worker's events leave for the next frame: a reply's bytes, or its death.
+enum Event {
+    Reply(usize, u32, Vec<u8>),
+    Died(usize, u32, String),
+}
+
+type Inbox = Rc<RefCell<Vec<Event>>>;
+
+/// One Web Worker with its listeners, and its generation (replies of a worker since replaced
+/// are dropped).
+struct Slot {
+    worker: Worker,
+    generation: u32,
+    _on_message: Closure<dyn FnMut(MessageEvent)>,
+    _on_error: Closure<dyn FnMut(ErrorEvent)>,
+}
+
+impl Drop for Slot {
+    fn drop(&mut self) {
+        self.worker.set_onmessage(None);
+        self.worker.set_onerror(None);
+        self.worker.terminate();
+    }
+}
+
+/// Where requests are worked on.
+enum Backend {
+    Workers {
+        slots: Vec<Slot>,
+        inbox: Inbox,
+        /// Workers left to start that throw on their first request (test-only).
+        crashes_left: usize,
+    },
+    /// The page's own thread.
+    Local(Box<Host>),
+}
+
+/// What came back since the last frame.
+#[derive(Default)]
+pub struct Polled {
+    /// Replies with the requests they answer, in the order they came.
+    pub replies: Vec<(Request, Reply)>,
+    /// Whether the worker holding the sessions was replaced: its shells are gone with it,
+    /// and these of its requests were lost unanswered.
+    pub sessions_lost: Option<Vec<Request>>,
+}
+
+pub struct Workers {
+    pool: Pool,
+    backend: Backend,
+    /// Milliseconds of a frame the page's own thread may work, without workers.
+    budget_ms: f64,
+}
+
+/// The page address's query parameter `key`, as a number.
+fn query_number(key: &str) -> Option<usize> {
+    let search = web_sys::window()?.location().search().ok()?;
+    search
+        .trim_start_matches('?')
+        .split('&')
+        .find_map(|pair| pair.strip_prefix(key)?.strip_prefix('='))
+        .and_then(|v| v.parse().ok())
+}
+
+/// Starts a worker for slot `slot` in generation `generation`, its events going to `inbox`.
+fn spawn(slot: usize, generation: u32, inbox: &Inbox, throws: bool) -> Result<Slot, JsValue> {
+    let options = WorkerOptions::new();
+    options.set_type(WorkerType::Module);
+    if throws {
+        options.set_name("seashells-throw");
+    }
+    let worker = Worker::new_with_options("./worker.js", &options)?;
+    let to = Rc::clone(inbox);
+    let on_message = Closure::<dyn FnMut(MessageEvent)>::new(move |e: MessageEvent| {
+        let bytes = Uint8Array::new(&e.data()).to_vec();
+        to.borrow_mut().push(Event::Reply(slot, generation, bytes));
+    });
+    let to = Rc::clone(inbox);
+    let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(move |e: ErrorEvent| {
+        e.prevent_default();
+        to.borrow_mut()
+            .push(Event::Died(slot, generation, e.message()));
+    });
+    worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
+    worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
+    Ok(Slot {
+        worker,
+        generation,
+        _on_message: on_message,
+        _on_error: on_error,
+    })
+}
+
+impl Workers {
+    /// The pool this browser gets, or the page's own thread where workers cannot start.
+    pub fn start(budget_ms: f64) -> Self {
+        let cores = web_sys::window().map_or(1, |w| w.navigator().hardware_concurrency() as usize);
+        let size = query_number("workers")
+            .unwrap_or_else(|| size_for(cores))
+            .min(8);
+        let mut crashes_left = query_number("crash-workers").unwrap_or(0);
+        let local = |why: &str| {
+            signal("workers", "0");
+            set_text(
+                "workers-status",
+                &format!("Growing on the page's own thread: {why}."),
+            );
+            Self {
+                pool: Pool::new(1),
+                backend: Backend::Local(Box::default()),
+                budget_ms,
+            }
+        };
+        if size == 0 {
+            return local("workers are off (workers=0 in the address)");
+        }
+        let inbox: Inbox = Rc::default();
+        let mut slots = Vec::new();
+        for slot in 0..size {
+            let throws = crashes_left > 0;
+            match spawn(slot, 0, &inbox, throws) {
+                Ok(s) => slots.push(s),
+                Err(e) => {
+                    let why = e
+                        .as_string()
+                        .or_else(|| e.dyn_ref::<js_sys::Error>().map(|e| e.message().into()))
+                        .unwrap_or_else(|| "this browser cannot start workers".into());
+                    return local(&format!("workers could not start ({why})"));
+                }
+            }
+            crashes_left = crashes_left.saturating_sub(usize::from(throws));
+        }
+        signal("workers", &size.to_string());
+        set_text(
+            "workers-status",
+            &format!(
+                "Growing on {size} worker{}.",
+                if size == 1 { "" } else { "s" }
+            ),
+        );
+        Self {
+            pool: Pool::new(size),
+            backend: Backend::Workers {
+                slots,
+                inbox,
+                crashes_left,
+            },
+            budget_ms,
+        }
+    }
+
+    /// Asks for `request` (sent in the next [`Self::poll`]).
+    pub fn submit(&mut self, request: Request) {
+        self.pool.submit(request);
+    }
+
+    /// Drops the jobs not yet sent that `drop` picks.
+    pub fn cancel(&mut self, drop: impl FnMut(&Request) -> bool) {
+        self.pool.cancel(drop);
+    }
+
+    /// Sends what waits, replaces workers that died or hang, and returns what came back.
+    pub fn poll(&mut self) -> Polled {
+        let mut polled = Polled::default();
+        let sends = self.pool.dispatch(now());
+        let Self {
+            pool,
+            backend,
+            budget_ms,
+        } = self;
+        match backend {
+            Backend::Local(host) => {
+                for send in sends {
+                    host.push(send.ticket, send.request);
+                }
+                for (ticket, reply) in host.work(&now, Budget::Until(now() + *budget_ms)) {
+                    if let Some(request) = pool.answered(SESSIONS, ticket, now()) {
+                        polled.replies.push((request, reply));
+                    }
+                }
+            }
+            Backend::Workers {
+                slots,
+                inbox,
+                crashes_left,
+            } => {
+                for send in sends {
+                    let bytes = encode_request(send.ticket, &send.request);
+                    let buffer = Uint8Array::from(&bytes[..]).buffer();
+                    let transfer = Array::of1(&buffer);
+                    // A worker that cannot take a message is found out by its silence.
+                    let _ = slots[send.slot]
+                        .worker
+                        .post_message_with_transfer(&buffer, &transfer);
+                }
+                let events: Vec<Event> = std::mem::take(&mut *inbox.borrow_mut());
+                let mut dead = Vec::new();
+                for event in events {
+                    match event {
+                        Event::Reply(slot, generation, bytes) => {
+                            if slots[slot].generation != generation {
+                                continue;
+                            }
+                            let Ok((ticket, reply)) = decode_reply(&bytes) else {
+                                dead.push((slot, "its reply could not be read".to_string()));
+                                continue;
+                            };
+                            if let Some(request) = pool.answered(slot, ticket, now()) {
+                                polled.replies.push((request, reply));
+                            }
+                        }
+                        Event::Died(slot, generation, why) => {
+                            if slots[slot].generation == generation {
+                                dead.push((slot, why));
+                            }
+                        }
+                    }
+                }
+                if let Some(slot) = pool.overdue(now()) {
+                    dead.push((slot, "it did not answer in time".into()));
+                }
+                dead.dedup_by_key(|(slot, _)| *slot);
+                for (slot, why) in dead {
+                    let lost = pool.failed(slot);
+                    if slot == SESSIONS {
+                        polled.sessions_lost = Some(lost);
+                    }
+                    let generation = slots[slot].generation + 1;
+                    let throws = *crashes_left > 0;
+                    *crashes_left = crashes_left.saturating_sub(usize::from(throws));
+                    match spawn(slot, generation, inbox, throws) {
+                        Ok(fresh) => slots[slot] = fresh,
+                        Err(_) => continue,
+                    }
+                    signal("workerDeaths", &pool.deaths().to_string());
+                    if pool.deaths() >= 2 {
+                        set_text(
+                            "workers-status",
+                            &format!(
+                                "A worker stopped ({why}) for the {} time; it was replaced and \
+                                 its work done again.",
+                                ordinal(pool.deaths())
+                            ),
+                        );
+                    }
+                }
+            }
+        }
+        polled
+    }
+}
+
+/// "second", "third", … for the status line.
+fn ordinal(n: usize) -> String {
+    match n {
+        2 => "second".into(),
+        3 => "third".into(),
+        n => format!("{n}th"),
+    }
+}

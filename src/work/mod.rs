@@ -1,0 +1,14 @@
+//! Work off the page's thread: the protocol between the page and its Web Workers, in the pure
+//! core so that it is tested natively. The page sends [`message::Request`]s; each worker runs a
+//! [`host::Host`], which grows the shell of a session (sending back only what each request
+//! added), makes the pieces of a shell's growth apart, grows gallery pictures whole and
+//! computes the tiles of a parameter map; the page keeps its copy of the growing shell in a
+//! [`replica::Replica`], which joins pieces in a fixed order so that the number of workers
+//! cannot change a bit, and shares jobs out among its workers with a [`pool::Pool`], which
+//! also knows what to do again when a worker dies or hangs.
+
+pub mod host;
+pub mod message;
+pub mod pool;
+pub mod replica;
+pub mod wire;

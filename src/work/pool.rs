@@ -1,0 +1,271 @@
+//! How the page shares requests out among its workers: the requests of a session go to the
+//! worker that holds sessions (the first), jobs to whichever worker has fewest waiting (at most
+//! [`JOBS_PER_WORKER`] each, so every worker has its next job at hand when it finishes one,
+//! and a job can still be cancelled before it is sent). Every request sent is remembered until
+//! its reply comes, so that when a worker dies or hangs (no reply within the request's
+//! allowance) its jobs are sent again, and the session's owner learns what it lost.
+
+use super::message::Request;
+use std::collections::VecDeque;
+
+/// Jobs a worker holds at once.
+pub const JOBS_PER_WORKER: usize = 2;
+
+/// The size of the pool a machine with `cores` logical processors gets: one worker per core
+/// but the page's own, at least one and at most eight.
+pub fn size_for(cores: usize) -> usize {
+    cores.saturating_sub(1).clamp(1, 8)
+}
+
+/// A request sent and not yet answered.
+#[derive(Clone, Debug, PartialEq)]
+struct Sent {
+    ticket: u32,
+    request: Request,
+    at: f64,
+}
+
+/// One worker's requests in flight.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct Slot {
+    sent: Vec<Sent>,
+    /// When it last answered (or was given work while idle): a request's wait starts then.
+    quiet_since: f64,
+}
+
+impl Slot {
+    fn jobs(&self) -> usize {
+        self.sent.iter().filter(|s| !s.request.is_session()).count()
+    }
+}
+
+/// A request to send now: to worker `slot`, with its ticket.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Send {
+    pub slot: usize,
+    pub ticket: u32,
+    pub request: Request,
+}
+
+/// The requests of the pool's workers.
+#[derive(Clone, Debug)]
+pub struct Pool {
+    slots: Vec<Slot>,
+    /// Jobs waiting for a worker, with their tickets.
+    waiting: VecDeque<(u32, Request)>,
+    next_ticket: u32,
+    /// Workers that died or hung so far.
+    deaths: usize,
+}
+
+/// The worker that holds sessions.
+pub const SESSIONS: usize = 0;
+
+impl Pool {
+    /// A pool of `size` workers (at least one).
+    pub fn new(size: usize) -> Self {
+        Self {
+            slots: vec![Slot::default(); size.max(1)],
+            waiting: VecDeque::new(),
+            next_ticket: 1,
+            deaths: 0,
+        }
+    }
+
+    pub fn size(&self) -> usize {
+        self.slots.len()
+    }
+
+    /// Workers that died or hung so far.
+    pub fn deaths(&self) -> usize {
+        self.deaths
+    }
+
+    /// Takes a request: a session's is to be sent at once, a job when a worker is free (see
+    /// [`Self::dispatch`]).
+    pub fn submit(&mut self, request: Request) {
+        let ticket = self.next_ticket;
+        self.next_ticket = self.next_ticket.wrapping_add(1);
+        self.waiting.push_back((ticket, request));
+    }
+
+    /// Drops the jobs not yet sent that `drop` picks (work no longer wanted); replies to
+    /// those already sent still come, and their owner ignores them.
+    pub fn cancel(&mut self, mut drop: impl FnMut(&Request) -> bool) {
+        self.waiting.retain(|(_, r)| r.is_session() || !drop(r));
+    }
+
+    /// What to send now, at time `now` (milliseconds): every session request, in order, to
+    /// the sessions' worker; jobs, in order, to the workers with fewest in hand.
+    pub fn dispatch(&mut self, now: f64) -> Vec<Send> {
+        let mut out = Vec::new();
+        let mut kept = VecDeque::new();
+        while let Some((ticket, request)) = self.waiting.pop_front() {
+            let slot = if request.is_session() {
+                Some(SESSIONS)
+            } else {
+                (0..self.slots.len())
+                    .filter(|&s| self.slots[s].jobs() < JOBS_PER_WORKER)
+                    .min_by_key(|&s| (self.slots[s].sent.len(), s))
+            };
+            let Some(slot) = slot else {
+                kept.push_back((ticket, request));
+                continue;
+            };
+            let s = &mut self.slots[slot];
+            if s.sent.is_empty() {
+                s.quiet_since = now;
+            }
+            s.sent.push(Sent {
+                ticket,
+                request: request.clone(),
+                at: now,
+            });
+            out.push(Send {
+                slot,
+                ticket,
+                request,
+            });
+        }
+        self.waiting = kept;
+        out
+    }
+
+    /// Worker `slot` answered `ticket` at `now`: the request it answered, or `None` for a
+    /// ticket it was not given (a reply from before it was replaced).
+    pub fn answered(&mut self, slot: usize, ticket: u32, now: f64) -> Option<Request> {
+        let s = self.slots.get_mut(slot)?;
+        let at = s.sent.iter().position(|x| x.ticket == ticket)?;
+        s.quiet_since = now;
+        Some(s.sent.remove(at).request)
+    }
+
+    /// The first worker that has kept a request longer than its allowance, at `now`.
+    pub fn overdue(&self, now: f64) -> Option<usize> {
+        self.slots.iter().position(|s| {
+            s.sent.first().is_some_and(|first| {
+                now - s.quiet_since.max(first.at) > first.request.allowance_ms()
+            })
+        })
+    }
+
+    /// Jobs sent and not yet answered, by slot.
+    pub fn in_flight(&self) -> usize {
+        self.slots.iter().map(|s| s.sent.len()).sum()
+    }
+
+    /// Whether jobs wait or are in flight.
+    pub fn busy_with_jobs(&self) -> bool {
+        self.slots.iter().any(|s| s.jobs() > 0) || self.waiting.iter().any(|(_, r)| !r.is_session())
+    }
+
+    /// Worker `slot` died or hung and is replaced by a fresh one: its jobs wait again, first
+    /// in line, and the session requests it held are returned (its sessions are lost with it).
+    pub fn failed(&mut self, slot: usize) -> Vec<Request> {
+        self.deaths += 1;
+        let lost = std::mem::take(&mut self.slots[slot].sent);
+        let mut sessions = Vec::new();
+        for sent in lost.into_iter().rev() {
+            if sent.request.is_session() {
+                sessions.push(sent.request);
+            } else {
+                self.waiting.push_front((sent.ticket, sent.request));
+            }
+        }
+        sessions.reverse();
+        sessions
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tile(job: u32) -> Request {
+        Request::Tile {
+            job,
+            link: "v=1&preset=stripes".into(),
+            rows: 10,
+        }
+    }
+
+    #[test]
+    fn the_pool_is_one_worker_per_core_but_one_within_one_and_eight() {
+        assert_eq!(
+            [0, 1, 2, 3, 4, 9, 16, 64].map(size_for),
+            [1, 1, 1, 2, 3, 8, 8, 8]
+        );
+    }
+
+    #[test]
+    fn jobs_go_two_per_worker_to_the_least_busy_and_the_rest_wait() {
+        let mut pool = Pool::new(2);
+        pool.submit(Request::Grow {
+            session: 1,
+            rows: 1,
+            budget_ms: 12.0,
+        });
+        for job in 0..6 {
+            pool.submit(tile(job));
+        }
+        let sent = pool.dispatch(0.0);
+        let slots: Vec<usize> = sent.iter().map(|s| s.slot).collect();
+        assert_eq!(
+            slots,
+            [0, 1, 0, 1, 0],
+            "growth at 0, then jobs to the least busy"
+        );
+        assert_eq!(pool.dispatch(0.0), [], "two jobs a worker");
+        let first_job = sent[1].ticket;
+        assert_eq!(pool.answered(1, first_job, 5.0), Some(tile(0)));
+        let next = pool.dispatch(5.0);
+        assert_eq!(next.len(), 1);
+        assert_eq!((next[0].slot, &next[0].request), (1, &tile(4)));
+        pool.cancel(|r| matches!(r, Request::Tile { job: 5, .. }));
+        pool.answered(0, sent[2].ticket, 6.0);
+        assert_eq!(pool.dispatch(6.0), [], "job 5 was cancelled");
+        assert_eq!(pool.answered(0, 999, 6.0), None, "a ticket never given");
+    }
+
+    #[test]
+    fn a_dead_workers_jobs_are_sent_again_and_its_sessions_returned() {
+        let mut pool = Pool::new(2);
+        pool.submit(Request::Finish { session: 3 });
+        pool.submit(tile(0));
+        pool.submit(tile(1));
+        let sent = pool.dispatch(0.0);
+        assert_eq!(sent.iter().map(|s| s.slot).collect::<Vec<_>>(), [0, 1, 0]);
+        assert_eq!(pool.overdue(14_000.0), None);
+        assert_eq!(
+            pool.overdue(16_000.0),
+            Some(1),
+            "a tile is overdue before Finish"
+        );
+        assert!(pool.failed(1).is_empty());
+        let again = pool.dispatch(16_000.0);
+        assert_eq!(
+            again
+                .iter()
+                .map(|s| (s.slot, s.request.clone()))
+                .collect::<Vec<_>>(),
+            [(1, tile(0))],
+            "to the fresh worker"
+        );
+        assert_eq!(pool.failed(0), [Request::Finish { session: 3 }]);
+        assert_eq!(pool.deaths(), 2);
+        assert_eq!(pool.dispatch(16_000.0)[0].request, tile(1));
+        assert_eq!(pool.answered(0, sent[0].ticket, 1.0), None);
+    }
+
+    #[test]
+    fn a_wait_counts_from_the_last_answer() {
+        let mut pool = Pool::new(1);
+        for job in 0..2 {
+            pool.submit(tile(job));
+        }
+        let sent = pool.dispatch(0.0);
+        pool.answered(0, sent[0].ticket, 10_000.0);
+        assert_eq!(pool.overdue(20_000.0), None, "the second started at 10 s");
+        assert_eq!(pool.overdue(25_001.0), Some(0));
+    }
+}

@@ -1,0 +1,381 @@
+//! The page's work shared among workers, simulated natively: hosts (what each Web Worker
+//! runs) answer requests through the bytes that cross between threads, the pool shares jobs
+//! out, and the page's copy of the shell takes in what comes back in whatever order it comes.
+//! Whatever the number of workers, whoever dies on the way, and however growth was cut into
+//! requests and budgets, the shell, its pattern, the gallery's shells and the map's tiles are
+//! the same, bit for bit, as one thread growing them alone.
+#![cfg(not(target_arch = "wasm32"))]
+
+use seashells_core::generator::Generator;
+use seashells_core::presets::preset;
+use seashells_core::share::link;
+use seashells_core::share::parameter_map::{Axis, ParameterMap, SIDE};
+use seashells_core::spec::ShellSpec;
+use seashells_core::work::host::{Budget, Host};
+use seashells_core::work::message::{
+    Reply, Request, decode_reply, decode_request, encode_reply, encode_request,
+};
+use seashells_core::work::pool::Pool;
+use seashells_core::work::replica::Replica;
+use std::cell::Cell;
+
+/// A clock that moves on by a millisecond each time it is read, so that budgets run out
+/// after as many reads, the same way every run.
+fn clock() -> impl Fn() -> f64 {
+    let t = Cell::new(0.0);
+    move || {
+        t.set(t.get() + 1.0);
+        t.get()
+    }
+}
+
+/// A page with `size` workers: the pool, the hosts, and the replies not yet taken in.
+struct Page {
+    pool: Pool,
+    hosts: Vec<Host>,
+    /// Replies waiting, as bytes, with the worker they came from.
+    inbox: Vec<(usize, Vec<u8>)>,
+    /// How the hosts spend their time: all at once, or a few milliseconds a call.
+    budget: Option<f64>,
+    now: Box<dyn Fn() -> f64>,
+    /// Turns the order replies are taken in: a number that picks the next.
+    shuffle: usize,
+}
+
+impl Page {
+    fn new(size: usize, budget: Option<f64>, shuffle: usize) -> Self {
+        Self {
+            pool: Pool::new(size),
+            hosts: (0..size).map(|_| Host::default()).collect(),
+            inbox: Vec::new(),
+            budget,
+            now: Box::new(clock()),
+            shuffle,
+        }
+    }
+
+    /// Sends what the pool has to send, through the bytes, and lets each host work once.
+    fn run_hosts(&mut self) {
+        for send in self.pool.dispatch((self.now)()) {
+            let (ticket, request) =
+                decode_request(&encode_request(send.ticket, &send.request)).expect("reads back");
+            assert_eq!(request, send.request);
+            self.hosts[send.slot].push(ticket, request);
+        }
+        for (slot, host) in self.hosts.iter_mut().enumerate() {
+            let budget = match self.budget {
+                None => Budget::Unbounded,
+                Some(ms) => Budget::Until((self.now)() + ms),
+            };
+            for (ticket, reply) in host.work(&*self.now, budget) {
+                self.inbox.push((slot, encode_reply(ticket, &reply)));
+            }
+        }
+    }
+
+    /// The next reply, with the request it answers: each worker's replies come in the order
+    /// it sent them (as messages from a Web Worker do), and the shuffle picks which worker's
+    /// comes next. A reply from a worker since replaced is dropped, as the page drops it.
+    fn next_reply(&mut self) -> Option<(Request, Reply)> {
+        loop {
+            while self.inbox.is_empty() {
+                self.run_hosts();
+                if self.inbox.is_empty() && !self.hosts.iter().any(Host::busy) {
+                    return None;
+                }
+            }
+            let mut slots: Vec<usize> = self.inbox.iter().map(|(s, _)| *s).collect();
+            slots.sort_unstable();
+            slots.dedup();
+            let slot = slots[self.shuffle % slots.len()];
+            self.shuffle = self.shuffle.wrapping_mul(31).wrapping_add(7);
+            let at = self.inbox.iter().position(|(s, _)| *s == slot)?;
+            let (slot, bytes) = self.inbox.remove(at);
+            let (ticket, reply) = decode_reply(&bytes).expect("reads back");
+            if let Some(request) = self.pool.answered(slot, ticket, (self.now)()) {
+                return Some((request, reply));
+            }
+        }
+    }
+
+    /// Worker `slot` dies: what it was doing and what it had answered but not delivered are
+    /// lost, a fresh host takes its place; returns the session requests it held.
+    fn kill(&mut self, slot: usize) -> Vec<Request> {
+        self.hosts[slot] = Host::default();
+        self.inbox.retain(|(s, _)| *s != slot);
+        self.pool.failed(slot)
+    }
+}
+
+/// The link of `id` with `extra` values, as the page sends it.
+fn link_of(id: &str, extra: &str) -> (String, ShellSpec) {
+    let decoded = link::decode(&format!("v=1&preset={id}{extra}"));
+    assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+    (link::encode(decoded.preset, &decoded.spec), decoded.spec)
+}
+
+/// The page's copy of a shell grown in `grows` requests of `rows` rows each (with a budget
+/// of a few milliseconds), then finished apart by the pool; the worker holding the session
+/// dies after `kill_after` requests, and a job's worker once while pieces are made, if asked.
+fn grow_and_finish(
+    page: &mut Page,
+    link: &str,
+    grows: usize,
+    rows: u32,
+    kill_after: Option<usize>,
+    kill_a_job: bool,
+) -> Replica {
+    let session = 1;
+    page.pool.submit(Request::Load {
+        session,
+        link: link.into(),
+    });
+    let mut replica = Replica::new(session);
+    let mut grown = 0;
+    let mut finish_sent = false;
+    let mut killed_job = false;
+    loop {
+        if grown < grows && page.pool.in_flight() == 0 && replica.shell().is_some() {
+            if kill_after == Some(grown) {
+                let lost = page.kill(0);
+                assert!(lost.is_empty(), "nothing was in flight");
+                page.pool.submit(Request::Resume {
+                    session,
+                    link: link.into(),
+                    rows: replica.rows_done() as u32,
+                    steps: replica.steps_done() as u32,
+                });
+            }
+            page.pool.submit(Request::Grow {
+                session,
+                rows,
+                budget_ms: 4.0,
+            });
+            grown += 1;
+        } else if grown == grows && !finish_sent && page.pool.in_flight() == 0 {
+            page.pool.submit(Request::Finish { session });
+            finish_sent = true;
+        }
+        if kill_a_job && !killed_job && page.pool.busy_with_jobs() && page.pool.size() > 1 {
+            page.run_hosts();
+            assert!(page.kill(page.pool.size() - 1).is_empty());
+            killed_job = true;
+        }
+        let Some((request, reply)) = page.next_reply() else {
+            break;
+        };
+        match reply {
+            Reply::Loaded { shell, delta, .. } => {
+                replica.loaded(shell, delta).expect("in step");
+            }
+            Reply::Grew { delta, .. } => {
+                replica.apply(delta).expect("in step");
+            }
+            Reply::Resumed {
+                vertices, indices, ..
+            } => {
+                assert_eq!(vertices as usize, replica.mesh().vertices.len());
+                assert_eq!(indices as usize, replica.mesh().indices.len());
+            }
+            Reply::Apart {
+                delta,
+                pieces,
+                hash,
+                ..
+            } => {
+                for (group, ids) in pieces.groups.iter().enumerate() {
+                    page.pool.submit(Request::Pieces {
+                        job: group as u32,
+                        link: link.into(),
+                        step: pieces.step,
+                        ids: ids.clone(),
+                    });
+                }
+                replica.apart(delta, pieces, hash).expect("in step");
+            }
+            Reply::Made { job, meshes, hash } => {
+                let Request::Pieces { job: asked, .. } = request else {
+                    panic!("pieces answer a request for pieces");
+                };
+                assert_eq!(job, asked);
+                replica.made(job as usize, meshes, hash);
+            }
+            other => panic!("unexpected {other:?}"),
+        }
+    }
+    assert!(replica.is_done(), "the shell is grown");
+    replica
+}
+
+/// The shell of `spec` grown alone: `grows` calls of `rows` rows, then finished.
+fn alone(spec: &ShellSpec, grows: usize, rows: usize) -> Generator {
+    let mut generator = Generator::new(spec).unwrap();
+    for _ in 0..grows {
+        generator.advance(rows);
+    }
+    generator.finish();
+    generator
+}
+
+#[test]
+fn a_murex_finished_by_one_two_or_four_workers_is_the_same_bit_for_bit() {
+    let (link, spec) = link_of("murex-cabritii", "&form.resolution=40");
+    let reference = alone(&spec, 0, 0);
+    for size in [1, 2, 4] {
+        for (grows, budget) in [(0, None), (5, Some(3.0))] {
+            let mut page = Page::new(size, budget, size * 7 + grows);
+            let replica = grow_and_finish(&mut page, &link, grows, 40, None, false);
+            let what = format!("{size} workers, {grows} requests before Finish, budget {budget:?}");
+            assert_eq!(replica.mesh(), reference.mesh(), "{what}");
+            assert!(replica.edge().indices.is_empty(), "{what}");
+            assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()), "{what}");
+            assert_eq!(
+                replica.pattern_hash(),
+                reference.pattern().map(|p| p.hash()),
+                "{what}"
+            );
+            assert_eq!(
+                replica.rgba(),
+                reference.pattern().unwrap().rgba(),
+                "{what}"
+            );
+        }
+    }
+}
+
+#[test]
+fn grown_in_requests_the_shell_is_the_one_grown_alone() {
+    for (id, extra) in [
+        ("oliva-porphyria", ""),
+        ("kawaguchi-coral", ""),
+        ("implicit-whorl", "&form.resolution=48"),
+    ] {
+        let (link, spec) = link_of(id, extra);
+        let mut page = Page::new(2, Some(2.0), 3);
+        let replica = grow_and_finish(&mut page, &link, 30, 7, None, false);
+        let reference = alone(&spec, 30, 7);
+        assert_eq!(
+            replica.snapshot().content_hash(),
+            reference.snapshot().content_hash(),
+            "{id}"
+        );
+        assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()), "{id}");
+        assert_eq!(
+            replica.pattern_hash(),
+            reference.pattern().map(|p| p.hash()),
+            "{id}"
+        );
+    }
+}
+
+#[test]
+fn a_worker_that_dies_is_replaced_and_its_work_done_again_to_the_same_bits() {
+    let (link, spec) = link_of("murex-cabritii", "&form.resolution=40");
+    let reference = alone(&spec, 0, 0);
+    // The session's worker dies after a third of the growth; a job's worker while pieces are
+    // made.
+    let mut page = Page::new(3, Some(3.0), 5);
+    let replica = grow_and_finish(&mut page, &link, 12, 20, Some(4), true);
+    assert_eq!(page.pool.deaths(), 2);
+    assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()));
+    assert_eq!(
+        replica.snapshot().content_hash(),
+        reference.snapshot().content_hash()
+    );
+    assert_eq!(
+        replica.pattern_hash(),
+        reference.pattern().map(|p| p.hash())
+    );
+}
+
+#[test]
+fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
+    let mut page = Page::new(2, Some(5.0), 1);
+    // The implicit shell at a coarse polygonization, to keep the test short.
+    let ids = [
+        ("stripes", ""),
+        ("kawaguchi-horn", ""),
+        ("implicit-canal-whorl", "&form.resolution=32"),
+    ];
+    for (job, (id, extra)) in ids.iter().enumerate() {
+        let (link, _) = link_of(id, extra);
+        page.pool.submit(Request::Whole {
+            job: job as u32,
+            link,
+        });
+    }
+    let oliva = preset("oliva-porphyria").unwrap();
+    let axis = |key: &str, from, to| Axis::new(key, from, to, SIDE).unwrap();
+    let map = |page: Option<&mut Page>| {
+        let mut map = ParameterMap::new(
+            oliva,
+            &oliva.spec,
+            axis("pattern.model.d_a", 0.01, 0.03),
+            axis("pattern.model.rho", 0.05, 0.15),
+        );
+        let Some(page) = page else {
+            while !map.finished() {
+                map.work(|| true);
+            }
+            return map;
+        };
+        for index in map.to_compute() {
+            page.pool.submit(Request::Tile {
+                job: index as u32,
+                link: map.tiles()[index].link.clone(),
+                rows: map.rows as u32,
+            });
+        }
+        map
+    };
+    let mut shared = map(Some(&mut page));
+    let mut wholes = 0;
+    while let Some((_, reply)) = page.next_reply() {
+        match reply {
+            Reply::Grown { job, result } => {
+                let whole = result.expect("grows");
+                let (id, extra) = ids[job as usize];
+                let (_, spec) = link_of(id, extra);
+                let mut alone = Generator::new(&spec).unwrap();
+                alone.finish();
+                assert_eq!(whole.mesh.content_hash(), alone.mesh_hash(), "{id}");
+                assert_eq!(whole.shell.rows as usize, alone.rows());
+                wholes += 1;
+            }
+            Reply::Tiled { job, result } => shared.place(job as usize, result),
+            other => panic!("unexpected {other:?}"),
+        }
+    }
+    assert_eq!(wholes, ids.len());
+    assert!(shared.finished());
+    let single = map(None);
+    for (a, b) in shared.tiles().iter().zip(single.tiles()) {
+        assert_eq!(
+            (&a.picture, &a.failure),
+            (&b.picture, &b.failure),
+            "{}",
+            a.link
+        );
+    }
+}
+
+#[test]
+fn a_request_for_a_session_the_worker_does_not_hold_is_refused() {
+    let mut host = Host::default();
+    let (link, _) = link_of("stripes", "");
+    host.push(1, Request::Load { session: 2, link });
+    host.push(
+        2,
+        Request::Grow {
+            session: 9,
+            rows: 1,
+            budget_ms: 1.0,
+        },
+    );
+    host.push(3, Request::Finish { session: 9 });
+    let replies = host.work(&clock(), Budget::Unbounded);
+    assert!(matches!(replies[0], (1, Reply::Loaded { session: 2, .. })));
+    assert!(matches!(replies[1], (2, Reply::Refused { session: 9, .. })));
+    assert!(matches!(replies[2], (3, Reply::Refused { session: 9, .. })));
+    assert!(!host.busy());
+}
