@@ -29,7 +29,9 @@ use super::sections::Gathered;
 use super::varix::{edge_distance, outward};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
+use crate::blobtree::texture_blend::Look;
 use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec};
+use glam::DVec3;
 
 /// Voxels (of the spec's resolution) the wall the hollow leaves is at least thick; closer to
 /// the apex, where it would be thinner, the shell is solid.
@@ -58,6 +60,8 @@ pub(crate) fn opening(
     instances: &Instances,
     varices: &[(u32, Node)],
     voxel: f64,
+    shell: &Node,
+    look: Look,
     gathered: &mut Gathered,
 ) -> Option<Opening> {
     let o = &spec.opening;
@@ -191,19 +195,26 @@ pub(crate) fn opening(
     };
     Some(Opening {
         hollow,
-        wall: inside_wall(spec, instances, first, gathered),
+        wall: inside_wall(spec, instances, first, shell, look, gathered),
     })
 }
 
 /// B_inside_wall of eq 15: over the last `spec.opening.wall` generating surfaces at the
-/// growing edge, the body's points less the inside generating surface without its extension
-/// (and less the previous whorl's hollow, which the body's whorl overlaps a little): the
-/// body's own inner wall where the extension carved it away. Each generating surface's part
-/// lives from the growth step that places it to the step that moves the edge past the wall.
+/// growing edge, the shell itself within a ball about each one's centre, less the inside
+/// generating surface without its extension (and less the previous whorl's hollow, which
+/// the ball reaches into): the body's own inner wall where the extension carved it away.
+/// The ball reaches past the extension's far end by the extension's own width, so that its
+/// trailing end crosses the previous whorl's surface and never meets it tangentially (a
+/// ball just touching it would enclose slivers of hollow between the two). Taking the shell
+/// within it, rather than the body's points, keeps the wall's outer surface the shell's own.
+/// Each generating surface's part lives from the growth step that places it to the step that
+/// moves the edge past the wall.
 fn inside_wall(
     spec: &ImplicitSpec,
     instances: &Instances,
     first: u32,
+    shell: &Node,
+    look: Look,
     gathered: &mut Gathered,
 ) -> Option<Node> {
     let o = &spec.opening;
@@ -211,42 +222,61 @@ fn inside_wall(
     if n == 0 {
         return None;
     }
-    let points = GeneratorSpec {
-        points: spec.generator.points.clone(),
+    let reach = o
+        .extension
+        .iter()
+        .map(|c| DVec3::new(c[3], c[4], c[5]).length() + c[6].max(c[7]))
+        .chain(spec.generator.points.iter().map(|p| p[3]))
+        .fold(0.0, f64::max);
+    let ball = GeneratorSpec {
+        points: vec![[0.0, 0.0, 0.0, reach]],
         ..GeneratorSpec::default()
     };
-    let solid = generating_surface(&points, 0.0, f64::INFINITY)?;
+    let extended = GeneratorSpec {
+        cones: [o.inside.cones.as_slice(), o.extension.as_slice()].concat(),
+        ..o.inside.clone()
+    };
     let count = instances.count;
     let per_whorl = spec.sections * spec.surfaces;
     let time = |k: u32| instances.time(f64::from(k.min(count - 1)));
-    let inside = |k: u32| generating_surface(&o.inside, time(k), instances.whorl(f64::from(k)));
+    let surface =
+        |g: &GeneratorSpec, k: u32| generating_surface(g, time(k), instances.whorl(f64::from(k)));
     let at = |k: u32| instances.placement(f64::from(k));
-    let mut body = Vec::new();
+    let mut balls = Vec::new();
     let mut round = Vec::new();
     let mut previous = Vec::new();
     for k in first..count + o.ahead {
-        if k < count {
-            let placed = instances.placement(f64::from(k));
-            body.push(gathered.placed_living(placed, solid.clone(), k, k + n));
+        if k < count
+            && let Some(b) = surface(&ball, k)
+        {
+            balls.push(gathered.placed_living(at(k), b, k, k + n));
         }
         // The hollow of this wall reaches one generating surface behind it, and ahead.
-        if let Some(g) = inside(k) {
+        if let Some(g) = surface(&o.inside, k) {
             round.push(gathered.placed_living(at(k), g, k.saturating_sub(o.ahead), k + n + 1));
         }
-        // The previous whorl's hollow under the wall.
+        // The previous whorl's hollow, extension included, under the wall.
         if k + per_whorl < count
-            && let Some(g) = inside(k)
+            && let Some(g) = surface(&extended, k)
         {
             let (birth, death) = (k + per_whorl - OVERLAP, k + per_whorl + n + OVERLAP);
             previous.push(gathered.placed_living(at(k), g, birth, death));
         }
     }
-    if body.is_empty() {
+    if balls.is_empty() {
         return None;
     }
     let mut carved = vec![Node::blend(round)];
     if !previous.is_empty() {
         carved.push(Node::blend(previous));
     }
-    Some(Node::difference(Node::blend(body), Node::union(carved)))
+    // The wall looks like the body it is part of; the shell within it keeps its own looks.
+    let looking = |node: Node| match look {
+        Look::Pattern => node,
+        _ => node.looking(look),
+    };
+    Some(Node::difference(
+        Node::intersection(vec![looking(Node::blend(balls)), shell.clone()]),
+        looking(Node::union(carved)),
+    ))
 }

@@ -286,15 +286,19 @@ pub fn whorl(
         sections.into_iter().map(|s| s.1).collect(),
         parts,
     );
-    // Eqs 14 and 15: B_murex = (B_shell − B_opening) ∪ B_inside_wall, the inside wall
-    // looking like the body it is part of.
-    let tree = match opening(spec, &instances, &kept, voxel, &mut gathered) {
+    // Eqs 14 and 15: B_murex = (B_shell − B_opening) ∪ B_inside_wall.
+    let tree = match opening(
+        spec,
+        &instances,
+        &kept,
+        voxel,
+        &shell,
+        body_look,
+        &mut gathered,
+    ) {
         Some(Opening { hollow, wall }) => {
             let carved = Node::difference(shell, hollow);
             match wall {
-                Some(wall) if body_look != Look::Pattern => {
-                    Node::union(vec![carved, wall.looking(body_look)])
-                }
                 Some(wall) => Node::union(vec![carved, wall]),
                 None => carved,
             }

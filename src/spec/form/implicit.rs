@@ -35,9 +35,10 @@ pub struct ImplicitSpec {
     #[serde(default)]
     pub canal_spines: CanalSpinesSpec,
     /// The hollow inside carved out of the shell and the inside wall at the aperture (§3.3,
-    /// eqs 14–15); none when its generating surface is empty.
+    /// eqs 14–15); none when its generating surface is empty. Boxed, as the form's variants
+    /// should stay near one size.
     #[serde(default)]
-    pub opening: OpeningSpec,
+    pub opening: Box<OpeningSpec>,
     /// How the four parts are coloured and blended (§3.4, fig 12); boxed, as the form's
     /// variants should stay near one size.
     #[serde(default)]

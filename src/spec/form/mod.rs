@@ -19,9 +19,6 @@ use sweep::SweepSpec;
 /// The model that builds the shell's surface.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
-// A spec holds one form, never an array of them: the implicit form's size costs nothing, and
-// boxing it would only add indirection to every match.
-#[allow(clippy::large_enum_variant)]
 pub enum Form {
     /// A generating curve swept along a helico-spiral (Fowler et al. 1992, §2).
     Sweep(SweepSpec),
