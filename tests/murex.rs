@@ -452,6 +452,18 @@ fn bad_values_get_messages_that_name_the_key() {
             "form.opening.ahead",
             Box::new(|s| implicit(s).opening.ahead = 100),
         ),
+        (
+            "form.opening.extension",
+            Box::new(|s| implicit(s).opening.extension[0][7] = f64::NAN),
+        ),
+        (
+            "form.opening.extension",
+            Box::new(|s| implicit(s).opening.extension[1][3] = 1e300),
+        ),
+        (
+            "form.opening.wall",
+            Box::new(|s| implicit(s).opening.wall = 65),
+        ),
         // Sizes that once made the shell grow to nothing, without a word.
         (
             "form.spiral.r0",

@@ -4,8 +4,8 @@
 //! blend (eq 6), the bend warp, and affine transforms. Every node knows the box outside which
 //! its field is zero, so evaluation skips every subtree a point misses, and [`Node::cull`] cuts
 //! a tree down to the few primitives near a region before it is sampled there. Every node also
-//! carries the growth step it is born at, so one tree describes the shape at every stage of
-//! its growth.
+//! carries the growth steps it lives through (born at one, gone at another, or never), so one
+//! tree describes the shape at every stage of its growth.
 
 use super::bend::Bend;
 use super::falloff::ISO;
@@ -86,6 +86,8 @@ pub struct Node {
     pub bounds: Bounds,
     /// The growth step at which the node appears.
     pub birth: u32,
+    /// The growth step from which it is gone (`u32::MAX`: never).
+    pub death: u32,
 }
 
 fn fold(children: &[Node], f: impl Fn(&Node) -> f64, g: fn(f64, f64) -> f64, zero: f64) -> f64 {
@@ -94,29 +96,37 @@ fn fold(children: &[Node], f: impl Fn(&Node) -> f64, g: fn(f64, f64) -> f64, zer
 
 impl Node {
     fn new(op: Op) -> Self {
-        let (bounds, birth) = match &op {
-            Op::Leaf(p, _) => (p.bounds(), 0),
+        let (bounds, (birth, death)) = match &op {
+            Op::Leaf(p, _) => (p.bounds(), (0, u32::MAX)),
             Op::Blend(c) | Op::Superelliptic(_, c) | Op::Union(c) | Op::Controlled(c, _) => {
-                (union_bounds(c), first_birth(c))
+                (union_bounds(c), lifetime(c))
             }
             Op::Intersection(c) => (
                 c.iter()
                     .map(|n| n.bounds)
                     .reduce(|a, b| a.intersection(&b))
                     .unwrap_or(Bounds::EMPTY),
-                c.iter().map(|n| n.birth).max().unwrap_or(0),
+                (
+                    c.iter().map(|n| n.birth).max().unwrap_or(0),
+                    c.iter().map(|n| n.death).min().unwrap_or(u32::MAX),
+                ),
             ),
-            Op::Difference(a, _) => (a.bounds, a.birth),
-            Op::Warp(bend, child) => (bend.bounds(&child.bounds), child.birth),
+            Op::Difference(a, _) => (a.bounds, (a.birth, a.death)),
+            Op::Warp(bend, child) => (bend.bounds(&child.bounds), (child.birth, child.death)),
             Op::Transform(affine, child) => {
                 let mut b = Bounds::EMPTY;
                 for corner in child.bounds.corners() {
                     b.include(affine.forward.transform_point3(corner));
                 }
-                (b, child.birth)
+                (b, (child.birth, child.death))
             }
         };
-        Self { op, bounds, birth }
+        Self {
+            op,
+            bounds,
+            birth,
+            death,
+        }
     }
 
     pub fn leaf(primitive: Primitive, texture: Texture) -> Self {
@@ -184,7 +194,7 @@ impl Node {
     /// point is a point), and transforms meet in one, so that evaluation does not pass through
     /// a chain of maps.
     pub fn transform(forward: DAffine3, child: Node) -> Self {
-        let birth = child.birth;
+        let (birth, death) = (child.birth, child.death);
         let moved = match child.op {
             Op::Transform(inner, grandchild) => Self::new(Op::Transform(
                 Rc::new(Affine::new(forward * inner.forward)),
@@ -198,12 +208,23 @@ impl Node {
                 )),
             },
         };
-        Node { birth, ..moved }
+        Node {
+            birth,
+            death,
+            ..moved
+        }
     }
 
-    /// The same subtree, appearing at growth step `step` (every node in it).
-    pub fn born_at(mut self, step: u32) -> Self {
-        self.birth = step;
+    /// The same subtree, appearing at growth step `step` (every node in it), for good.
+    pub fn born_at(self, step: u32) -> Self {
+        self.living(step, u32::MAX)
+    }
+
+    /// The same subtree, appearing at growth step `birth` and gone from step `death` on (every
+    /// node in it): a part of a shell that only its growing edge has.
+    pub fn living(mut self, birth: u32, death: u32) -> Self {
+        self.birth = birth;
+        self.death = death;
         match &mut self.op {
             Op::Leaf(..) => {}
             Op::Blend(c)
@@ -212,18 +233,24 @@ impl Node {
             | Op::Superelliptic(_, c)
             | Op::Controlled(c, _) => {
                 for child in c.iter_mut() {
-                    *child = std::mem::replace(child, placeholder()).born_at(step);
+                    *child = std::mem::replace(child, placeholder()).living(birth, death);
                 }
             }
             Op::Difference(a, b) => {
-                **a = std::mem::replace(&mut **a, placeholder()).born_at(step);
-                **b = std::mem::replace(&mut **b, placeholder()).born_at(step);
+                **a = std::mem::replace(&mut **a, placeholder()).living(birth, death);
+                **b = std::mem::replace(&mut **b, placeholder()).living(birth, death);
             }
             Op::Warp(_, c) | Op::Transform(_, c) => {
-                **c = std::mem::replace(&mut **c, placeholder()).born_at(step);
+                **c = std::mem::replace(&mut **c, placeholder()).living(birth, death);
             }
         }
         self
+    }
+
+    /// Whether the node is there at growth step `step` (a node that never goes is there at
+    /// every step from its birth, `u32::MAX` included).
+    pub fn alive(&self, step: u32) -> bool {
+        self.birth <= step && (step < self.death || self.death == u32::MAX)
     }
 
     /// The field at `p`. The test of the box and the leaves are inlined into the operators
@@ -431,10 +458,10 @@ impl Node {
     }
 
     /// The part of the tree that matters inside `region` at growth step `step`: subtrees born
-    /// later or whose boxes miss the region are dropped, and so are operators left with one
-    /// child. `None` when the field is zero throughout the region.
+    /// later, gone already, or whose boxes miss the region are dropped, and so are operators
+    /// left with one child. `None` when the field is zero throughout the region.
     pub fn cull(&self, region: &Bounds, step: u32) -> Option<Node> {
-        if self.birth > step || !self.bounds.intersects(region) {
+        if !self.alive(step) || !self.bounds.intersects(region) {
             return None;
         }
         let many = |c: &[Node], make: &dyn Fn(Vec<Node>) -> Node| {
@@ -598,6 +625,7 @@ fn placeholder() -> Node {
         op: Op::Blend(Vec::new()),
         bounds: Bounds::EMPTY,
         birth: 0,
+        death: u32::MAX,
     }
 }
 
@@ -607,8 +635,12 @@ fn union_bounds(children: &[Node]) -> Bounds {
         .fold(Bounds::EMPTY, |b, n| b.union(&n.bounds))
 }
 
-fn first_birth(children: &[Node]) -> u32 {
-    children.iter().map(|n| n.birth).min().unwrap_or(0)
+/// The steps some child lives through: from the first birth to the last death.
+fn lifetime(children: &[Node]) -> (u32, u32) {
+    (
+        children.iter().map(|n| n.birth).min().unwrap_or(0),
+        children.iter().map(|n| n.death).max().unwrap_or(u32::MAX),
+    )
 }
 
 /// The child whose field wins the comparison `better`.

@@ -329,6 +329,8 @@ pub const IMPLICIT: &[Field] = &[
     f("form.opening.inside.tori", Opening, "", "hollow: tori (u,v,w,major radius,radius)", Kind::List { width: 5, integer: false }),
     f("form.opening.inside.exponent", Opening, "n", "hollow: blending exponent (eq 4)", log(1.0, 400.0)),
     f("form.opening.inside.pairs", Opening, "", "hollow: only these pairs blend (eq 6)", Kind::List { width: 2, integer: true }),
+    f("form.opening.extension", Opening, "", "hollow: cones extending its inner edge to the previous whorl (eq 14)", Kind::List { width: 10, integer: false }),
+    f("form.opening.wall", Opening, "", "generating surfaces of inside wall at the aperture (eq 15)", int(0, 64)),
     f("form.opening.ahead", Opening, "", "generating surfaces the hollow reaches beyond the edge", int(0, 16)),
     f("form.textures.body.look", Textures, "", "body whorl: texture", Kind::Choice(&["pattern", "ramp"])),
     f("form.textures.body.base", Textures, "", "body whorl: ramp colour at the base", Kind::Colour),

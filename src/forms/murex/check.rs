@@ -89,6 +89,16 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
     if parts(&o.inside) > 0 {
         check_generator(&o.inside, "form.opening.inside")?;
     }
+    check_cones(&o.extension, "form.opening.extension")?;
+    if o.wall > MAX_WALL {
+        return Err(ShapeError::new(
+            "form.opening.wall",
+            format!(
+                "the inside wall may stand over at most {MAX_WALL} generating surfaces, not {}",
+                o.wall
+            ),
+        ));
+    }
     check_textures(&spec.textures)
 }
 
@@ -106,6 +116,8 @@ pub const MIN_PART: f64 = 1e-4;
 pub const MAX_SPINES: usize = 1024;
 /// Most sets of bumps between two varices.
 pub const MAX_BUMP_SETS: u32 = 16;
+/// Most generating surfaces the inside wall of eq 15 stands over at the aperture.
+pub const MAX_WALL: u32 = 64;
 /// Most generating surfaces the hollow reaches ahead of the growing edge.
 pub const MAX_AHEAD: u32 = 16;
 
@@ -312,6 +324,37 @@ fn check_canal_spines(spec: &ImplicitSpec) -> Result<(), ShapeError> {
     )
 }
 
+/// Checks cones given as a generating surface's are (positions, radii, bend, from whorl),
+/// under the key `key`.
+fn check_cones(cones: &[[f64; 10]], key: &str) -> Result<(), ShapeError> {
+    for c in cones {
+        part_position(key, &c[..6])?;
+        part_radius(key, c[6], "a cone's radius")?;
+        part_radius(key, c[7], "a cone's radius")?;
+        let length = DVec3::new(c[3] - c[0], c[4] - c[1], c[5] - c[2]).length();
+        positive(key, length, "a cone's length")?;
+        if c[8].abs() > MAX_BEND_DEGREES {
+            return Err(ShapeError::new(
+                key.to_string(),
+                format!(
+                    "a cone may bend by at most {MAX_BEND_DEGREES}°, not {}°",
+                    c[8]
+                ),
+            ));
+        }
+        if support_of(c[6].max(c[7])) * c[8].abs().to_radians() >= length {
+            return Err(ShapeError::new(
+                key.to_string(),
+                format!(
+                    "a cone of length {length} bent by {}° is too thick for its bend: its field would fold over the centre of curvature",
+                    c[8]
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Checks the generating surface `g`, whose keys start with `prefix`.
 fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), ShapeError> {
     let parts = parts(g);
@@ -326,31 +369,7 @@ fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), ShapeError> {
         part_position(&key("points"), &p[..3])?;
         part_radius(&key("points"), p[3], "a point's radius")?;
     }
-    for c in &g.cones {
-        part_position(&key("cones"), &c[..6])?;
-        part_radius(&key("cones"), c[6], "a cone's radius")?;
-        part_radius(&key("cones"), c[7], "a cone's radius")?;
-        let length = DVec3::new(c[3] - c[0], c[4] - c[1], c[5] - c[2]).length();
-        positive(&key("cones"), length, "a cone's length")?;
-        if c[8].abs() > MAX_BEND_DEGREES {
-            return Err(ShapeError::new(
-                key("cones"),
-                format!(
-                    "a cone may bend by at most {MAX_BEND_DEGREES}°, not {}°",
-                    c[8]
-                ),
-            ));
-        }
-        if support_of(c[6].max(c[7])) * c[8].abs().to_radians() >= length {
-            return Err(ShapeError::new(
-                key("cones"),
-                format!(
-                    "a cone of length {length} bent by {}° is too thick for its bend: its field would fold over the centre of curvature",
-                    c[8]
-                ),
-            ));
-        }
-    }
+    check_cones(&g.cones, &key("cones"))?;
     for t in &g.tori {
         part_position(&key("tori"), &t[..3])?;
         part_radius(&key("tori"), t[3], "a torus's major radius")?;

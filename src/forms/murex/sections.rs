@@ -9,7 +9,7 @@ use crate::mesh::Bounds;
 use crate::spec::form::implicit::{Blending, GeneratorSpec};
 use glam::{DAffine3, DVec3};
 
-/// A BlobTree being gathered, with the box of what each growth step adds.
+/// A BlobTree being gathered, with the box of what each growth step adds or takes away.
 pub(crate) struct Gathered {
     pub(crate) reach: Vec<Bounds>,
 }
@@ -17,9 +17,23 @@ pub(crate) struct Gathered {
 impl Gathered {
     /// `node`, placed at instance `at` and born at growth step `birth`.
     pub(crate) fn placed(&mut self, at: DAffine3, node: Node, birth: u32) -> Node {
-        let node = Node::transform(at, node).born_at(birth);
-        if let Some(b) = self.reach.get_mut(birth as usize) {
-            *b = b.union(&node.bounds);
+        self.placed_living(at, node, birth, u32::MAX)
+    }
+
+    /// `node`, placed at instance `at`, born at growth step `birth` and gone from step
+    /// `death` on: both steps change the shell where it stands.
+    pub(crate) fn placed_living(
+        &mut self,
+        at: DAffine3,
+        node: Node,
+        birth: u32,
+        death: u32,
+    ) -> Node {
+        let node = Node::transform(at, node).living(birth, death);
+        for step in [birth, death] {
+            if let Some(b) = self.reach.get_mut(step as usize) {
+                *b = b.union(&node.bounds);
+            }
         }
         node
     }

@@ -4,14 +4,14 @@
 //! neighbours only (eq 10). Each instance is one growth step.
 //!
 //! The helix is in `helix.rs`, the generating surface in `generating_surface.rs`, sections in
-//! `sections.rs`, the hollow in `opening.rs`; this module places the varices, their spines,
+//! `sections.rs`, the opening in `opening.rs`; this module places the varices, their spines,
 //! the bumps and the canal spines, and joins it all.
 
 use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
 use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
 use super::check::check;
 use super::helix::Instances;
-use super::opening::inside;
+use super::opening::{Opening, opening};
 use super::rd_placement::{activator_at, bumps_of, free, peaks, spines_of};
 use super::sections::{Gathered, joined, sections};
 use super::textures::look;
@@ -154,6 +154,9 @@ pub fn whorl(
             free(&body, &Node::blend(own), at, standing, reach)
         };
     let mut parts = Vec::new();
+    // Each varix's spines and ridge with the instance it closes, for the opening to leave
+    // intact.
+    let mut kept: Vec<(u32, Node)> = Vec::new();
     let mut varices = Vec::new();
     let mut bump_noise = Noise::new(seed, BUMP_STREAM);
     let mut canal_noise = Noise::new(seed, CANAL_STREAM);
@@ -182,6 +185,9 @@ pub fn whorl(
         )
         .into_iter()
         .collect();
+        if let Some(spines) = members.first() {
+            kept.push((k, spines.clone()));
+        }
         let from_opening = varix_rows.len() - i;
         let mut canal = Vec::new();
         if from_opening <= CANAL_VARICES {
@@ -280,8 +286,23 @@ pub fn whorl(
         sections.into_iter().map(|s| s.1).collect(),
         parts,
     );
-    let tree = match inside(spec, &instances, voxel, &mut gathered) {
-        Some(inside) => Node::difference(shell, inside),
+    // Eqs 14 and 15: B_murex = (B_shell − B_opening) ∪ B_inside_wall.
+    let tree = match opening(
+        spec,
+        &instances,
+        &kept,
+        voxel,
+        &shell,
+        body_look,
+        &mut gathered,
+    ) {
+        Some(Opening { hollow, wall }) => {
+            let carved = Node::difference(shell, hollow);
+            match wall {
+                Some(wall) => Node::union(vec![carved, wall]),
+                None => carved,
+            }
+        }
         None => shell,
     };
     Ok(Whorl {

@@ -34,10 +34,11 @@ pub struct ImplicitSpec {
     /// The axial rows of spines on the canal below the last three varices (§3.2, table 2).
     #[serde(default)]
     pub canal_spines: CanalSpinesSpec,
-    /// The hollow inside carved out of the shell (§3.3, eq 14); none when its generating
-    /// surface is empty.
+    /// The hollow inside carved out of the shell and the inside wall at the aperture (§3.3,
+    /// eqs 14–15); none when its generating surface is empty. Boxed, as the form's variants
+    /// should stay near one size.
     #[serde(default)]
-    pub opening: OpeningSpec,
+    pub opening: Box<OpeningSpec>,
     /// How the four parts are coloured and blended (§3.4, fig 12); boxed, as the form's
     /// variants should stay near one size.
     #[serde(default)]
@@ -147,12 +148,24 @@ impl Default for CanalSpinesSpec {
     }
 }
 
-/// The opening (eq 14): a whorl of a smaller generating surface subtracted from the shell.
+/// The opening (eqs 14–15): B_murex = (B_shell − B_opening) ∪ B_inside_wall, where
+/// B_opening = B_inside − B_{w−1} is a whorl of a smaller generating surface, its inner edge
+/// extended to the previous whorl, less that previous whorl.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct OpeningSpec {
-    /// The generating surface of the hollow inside; empty for a solid shell.
+    /// The generating surface of the hollow inside: slightly smaller than the body's, with
+    /// its inner canal; empty for a solid shell.
     pub inside: GeneratorSpec,
+    /// Cones (as the generating surface's) blended into the inside generating surface that
+    /// extend its inner edge to the edge of the previous whorl (§3.3): the previous whorl,
+    /// subtracted from the hollow (eq 14), then bounds it, so the wall between two whorls is
+    /// the previous whorl's own.
+    pub extension: Vec<[f64; 10]>,
+    /// Generating surfaces at the growing edge over which the inside wall of eq 15 stands:
+    /// the body's own inner wall, put back where the extension carved it, so that the
+    /// opening is roughly round; 0 for none.
+    pub wall: u32,
     /// Generating surfaces the hollow reaches beyond the growing edge, so the aperture stays
     /// open at every stage.
     pub ahead: u32,
@@ -163,6 +176,8 @@ impl Default for OpeningSpec {
     fn default() -> Self {
         Self {
             inside: GeneratorSpec::default(),
+            extension: Vec::new(),
+            wall: 0,
             ahead: 3,
         }
     }

@@ -1,0 +1,195 @@
+//! The Murex's opening as Galbraith, Prusinkiewicz & Wyvill carve it (§3.3, eqs 14 and 15):
+//! the previous whorl subtracted from the inside generating surface, so that the wall between
+//! two whorls is single; the aperture, seen head-on, an open and roughly round hole bounded by
+//! the previous whorl.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use common::implicit;
+use glam::{DAffine3, DVec3};
+use seashells_core::blobtree::blob_tree::Node;
+use seashells_core::blobtree::falloff::ISO;
+use seashells_core::forms::murex::helix::Instances;
+use seashells_core::forms::murex::varix::outward;
+use seashells_core::forms::murex::whorl::{Whorl, whorl};
+use seashells_core::presets;
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::form::implicit::Placement;
+
+const PRESETS: [&str; 3] = ["murex-cabritii", "murex-pecten", "murex-rd-spines"];
+
+/// A preset's shell without its spines (whose tips a ray may cross), whether the table or the
+/// pattern places them, and its instances.
+fn body_of(id: &str) -> (ShellSpec, Whorl, Instances) {
+    let mut spec = presets::preset(id).expect(id).spec.clone();
+    let i = implicit(&mut spec);
+    i.varices.placement = Placement::Table;
+    i.varices.spines.clear();
+    i.canal_spines.spines.clear();
+    let rows = spec.growth.rows as usize;
+    let instances = Instances::new(implicit(&mut spec), rows);
+    let (pattern, seed) = (spec.pattern.clone(), spec.seed);
+    let shell = whorl(implicit(&mut spec), &pattern, seed, rows).expect(id);
+    (spec, shell, instances)
+}
+
+/// The solid stretches (from, to) along `from + t·direction` for t in 0…`length`, sampled
+/// every `step`.
+fn solid_stretches(
+    tree: &Node,
+    from: DVec3,
+    direction: DVec3,
+    length: f64,
+    step: f64,
+) -> Vec<(f64, f64)> {
+    let mut stretches = Vec::new();
+    let mut start = None;
+    let n = (length / step).ceil() as usize;
+    for i in 0..=n {
+        let t = i as f64 * step;
+        let inside = tree.field(from + direction * t) >= ISO;
+        match (inside, start) {
+            (true, None) => start = Some(t),
+            (false, Some(s)) => {
+                stretches.push((s, t));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        stretches.push((s, length));
+    }
+    stretches
+}
+
+/// The centre of generating surface `k`.
+fn centre(instances: &Instances, k: u32) -> DVec3 {
+    instances.placement(f64::from(k)).translation
+}
+
+#[test]
+fn a_ray_from_the_axis_outward_crosses_one_wall_per_whorl() {
+    // The centres of the generating surfaces at one azimuth, a whorl apart, lie on a line
+    // from the apex (the helico-spiral is self-similar). Along it, from the centre of the
+    // whorl two before the last to beyond the last, the shell is one wall between two
+    // whorls' hollows: the previous whorl's own, no thicker than it was before the last whorl
+    // grew over it (a hollow that stopped at its own inside surface would leave two walls,
+    // its own inner one on the previous whorl's outer one), and still there (the hollow did
+    // not eat through it).
+    for id in PRESETS {
+        let (mut spec, shell, instances) = body_of(id);
+        let i = implicit(&mut spec);
+        let (per_whorl, ahead) = (i.sections * i.surfaces, i.opening.ahead);
+        let last = shell.instances - 1;
+        for back in [2 * per_whorl / 3, per_whorl / 2, per_whorl / 3] {
+            let k = last - back;
+            let d = instances.size(f64::from(k));
+            let centres = [k - 2 * per_whorl, k - per_whorl, k].map(|k| centre(&instances, k));
+            let out = (centres[2] - centres[0]).normalize();
+            let length = (centres[2] - centres[0]).length() + 1.5 * d;
+            let along = |c: DVec3| (c - centres[0]).dot(out);
+            let now = solid_stretches(&shell.tree, centres[0], out, length, d / 400.0);
+            // The shell before the last whorl's hollow reached this azimuth.
+            let before = shell
+                .tree
+                .cull(&shell.tree.bounds, k - ahead - 1)
+                .expect("grown");
+            let then = solid_stretches(&before, centres[0], out, length, d / 400.0);
+            for (n, pair) in centres.windows(2).enumerate() {
+                let (a, b) = (along(pair[0]), along(pair[1]));
+                let between = |s: &[(f64, f64)]| -> Vec<(f64, f64)> {
+                    s.iter().copied().filter(|&(x, y)| x > a && y < b).collect()
+                };
+                let (walls, own) = (between(&now), between(&then));
+                assert_eq!(
+                    walls.len(),
+                    1,
+                    "{id} at {k}: walls between whorls {n} and {}: {walls:?} (D = {d})",
+                    n + 1
+                );
+                assert_eq!(
+                    own.len(),
+                    1,
+                    "{id} at {k}: the previous whorl's outer wall {own:?}"
+                );
+                let (wall, own) = (walls[0].1 - walls[0].0, own[0].1 - own[0].0);
+                assert!(
+                    wall <= own * 1.02 && wall >= own * 0.5,
+                    "{id} at {k}: the wall between whorls {n} and {} is {wall}, the previous whorl's own {own}",
+                    n + 1
+                );
+            }
+        }
+    }
+}
+
+/// How far from the centre of the generating surface placed by `at`, along `direction` (in
+/// its coordinates, units of D), the hollow reaches before `tree` is solid; 3 D when it does
+/// not end there.
+fn hollow_reach(tree: &Node, at: &DAffine3, direction: DVec3) -> f64 {
+    let mut r = 0.0;
+    while r < 3.0 && tree.field(at.transform_point3(direction * r)) < ISO {
+        r += 0.005;
+    }
+    r
+}
+
+#[test]
+fn the_aperture_head_on_is_an_open_round_hole_bounded_by_the_previous_whorl() {
+    for id in PRESETS {
+        let (mut spec, shell, instances) = body_of(id);
+        let i = implicit(&mut spec);
+        let (wall, ahead) = (i.opening.wall, i.opening.ahead);
+        let last = shell.instances - 1;
+        let at = instances.placement(f64::from(last));
+        // Rays along the aperture's normal (the direction of growth) through its centre region,
+        // from a generating surface's size in front of it to a third of one behind, meet nothing.
+        for a in (0..360).step_by(30) {
+            for r in [0.0, 0.25, 0.5] {
+                let across = outward(f64::from(a)) * r;
+                for n in 0..=26 {
+                    let z = 1.0 - f64::from(n) * 0.05;
+                    let p = at.transform_point3(across + DVec3::Z * z);
+                    let f = shell.tree.field(p);
+                    assert!(
+                        f < ISO,
+                        "{id}: a head-on ray {r} D out at {a}° meets the shell {z} D before the aperture ({f})"
+                    );
+                }
+            }
+        }
+        // Roughly round: away from the canal (which runs on as an open groove between 180°
+        // and 270°, towards the axis and down), the hole's radius varies by less than a third.
+        let radii: Vec<f64> = (0..360)
+            .step_by(15)
+            .filter(|a| !(181..270).contains(a))
+            .map(|a| hollow_reach(&shell.tree, &at, outward(f64::from(a))))
+            .collect();
+        let (least, most) = radii
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(l, m), &r| (l.min(r), m.max(r)));
+        assert!(
+            least > 0.5 && most / least < 4.0 / 3.0,
+            "{id}: the aperture's radii {radii:.2?}"
+        );
+        // Bounded by the previous whorl: towards the previous whorl's centre (up and in),
+        // the rim lies on the shell that was there before the growing edge came.
+        let per_whorl = i.sections * i.surfaces;
+        let previous = at
+            .inverse()
+            .transform_point3(centre(&instances, last - per_whorl));
+        let towards = DVec3::new(previous.x, previous.y, 0.0).normalize();
+        let rim = hollow_reach(&shell.tree, &at, towards);
+        let before = shell
+            .tree
+            .cull(&shell.tree.bounds, last - wall - ahead - 1)
+            .expect("grown");
+        let behind = at.transform_point3(towards * (rim + 0.05));
+        assert!(
+            before.field(behind) >= ISO,
+            "{id}: the aperture's rim towards the previous whorl ({towards:.2?}, {rim} D out) is not on it"
+        );
+    }
+}
