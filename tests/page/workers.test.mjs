@@ -100,7 +100,11 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       const edited = await waitForState(page, ['grown', 'error'], 180_000);
       assert.equal(edited.state, 'grown');
       const link = await page.evaluate(() => location.hash.slice(1));
-      // A value changed on the grown shell: it is remeshed whole at once, no End pressed.
+      // A value changed on the grown shell, growth paused: it is remeshed whole at once, with
+      // no End pressed (grown again from its apex, it would wait at its first rows).
+      await page.locator('#shell').click();
+      await page.keyboard.press('Space');
+      await page.waitForFunction(() => document.body.dataset.playing === 'false');
       await number.fill('44');
       await number.press('Enter');
       await page.waitForFunction(() => location.hash.includes('form.resolution=44'));
