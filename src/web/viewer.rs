@@ -680,7 +680,9 @@ impl Viewer {
             let settled = self.growing.as_ref().is_some_and(Growing::settled);
             if settled && self.owed > 0 {
                 let rows = std::mem::take(&mut self.owed);
-                self.grow(rows, growth_budget(budget_ms, now() - self.last_frame));
+                let frame = growth_budget(budget_ms, now() - self.last_frame);
+                let budget = self.workers.borrow().growth_budget(frame);
+                self.grow(rows, budget);
             }
         } else {
             self.owed = 0;

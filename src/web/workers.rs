@@ -103,7 +103,16 @@ pub struct Workers {
     backend: Backend,
     /// Milliseconds of a frame the page's own thread may work, without workers.
     budget_ms: f64,
+    /// Least milliseconds a worker is given to grow the shell per request (`grow-budget=N` in
+    /// the query sets another, for benchmarks).
+    worker_growth_ms: f64,
 }
+
+/// Least milliseconds a worker grows the shell per request: off the page's thread a request
+/// may take longer than the page's own frame budget, for fewer round trips, while a change of
+/// value still waits at most this long behind the growth under way (see the README's "Who runs
+/// where" for the measurement).
+const WORKER_GROWTH_MS: f64 = 12.0;
 
 /// The page address's query parameter `key`, as a number.
 fn query_number(key: &str) -> Option<usize> {
@@ -165,6 +174,7 @@ impl Workers {
                 pool: Pool::new(1),
                 backend: Backend::Local(Box::default()),
                 budget_ms,
+                worker_growth_ms: budget_ms,
             }
         };
         if size == 0 {
@@ -200,6 +210,16 @@ impl Workers {
                 faults,
             },
             budget_ms,
+            worker_growth_ms: query_number("grow-budget").map_or(WORKER_GROWTH_MS, |ms| ms as f64),
+        }
+    }
+
+    /// Milliseconds to grow the shell for in one request, where the page's own thread would
+    /// take `frame_ms`: as much on the page's thread, at least [`WORKER_GROWTH_MS`] on a worker.
+    pub fn growth_budget(&self, frame_ms: f64) -> f64 {
+        match self.backend {
+            Backend::Local(_) => frame_ms,
+            Backend::Workers { .. } => frame_ms.max(self.worker_growth_ms),
         }
     }
 
@@ -221,6 +241,7 @@ impl Workers {
             pool,
             backend,
             budget_ms,
+            ..
         } = self;
         match backend {
             Backend::Local(host) => {
