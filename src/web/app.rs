@@ -598,6 +598,14 @@ impl App {
 
     /// One animation frame.
     pub fn frame(&mut self) -> Result<(), String> {
+        let outcome = self.work_and_draw();
+        // What this frame asked goes out now, to be worked on before the next frame.
+        self.workers.borrow_mut().send();
+        outcome
+    }
+
+    /// What a frame does: takes in the workers' replies, grows, draws.
+    fn work_and_draw(&mut self) -> Result<(), String> {
         if !self.survive()? {
             return Ok(());
         }

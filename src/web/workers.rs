@@ -233,32 +233,17 @@ impl Workers {
         self.pool.cancel(drop);
     }
 
-    /// Sends what waits, replaces workers that died or hang, and returns what came back.
-    pub fn poll(&mut self) -> Polled {
-        let mut polled = Polled::default();
+    /// Sends what waits: called at the end of each frame, so that a request asked in a frame
+    /// is worked on while the page waits for the next, not a frame later.
+    pub fn send(&mut self) {
         let sends = self.pool.dispatch(now());
-        let Self {
-            pool,
-            backend,
-            budget_ms,
-            ..
-        } = self;
-        match backend {
+        match &mut self.backend {
             Backend::Local(host) => {
                 for send in sends {
                     host.push(send.ticket, send.request);
                 }
-                for (ticket, reply) in host.work(&now, Budget::Until(now() + *budget_ms)) {
-                    if let Some(request) = pool.answered(SESSIONS, ticket, now()) {
-                        polled.replies.push((request, reply));
-                    }
-                }
             }
-            Backend::Workers {
-                slots,
-                inbox,
-                faults,
-            } => {
+            Backend::Workers { slots, .. } => {
                 for send in sends {
                     let fill = matches!(send.request, Request::Fill { .. });
                     let bytes = if fill && debug::crash_on_fill_asked() {
@@ -274,6 +259,33 @@ impl Workers {
                         .worker
                         .post_message_with_transfer(&buffer, &transfer);
                 }
+            }
+        }
+    }
+
+    /// Sends what waits, replaces workers that died or hang, and returns what came back.
+    pub fn poll(&mut self) -> Polled {
+        let mut polled = Polled::default();
+        self.send();
+        let Self {
+            pool,
+            backend,
+            budget_ms,
+            ..
+        } = self;
+        match backend {
+            Backend::Local(host) => {
+                for (ticket, reply) in host.work(&now, Budget::Until(now() + *budget_ms)) {
+                    if let Some(request) = pool.answered(SESSIONS, ticket, now()) {
+                        polled.replies.push((request, reply));
+                    }
+                }
+            }
+            Backend::Workers {
+                slots,
+                inbox,
+                faults,
+            } => {
                 let events: Vec<Event> = std::mem::take(&mut *inbox.borrow_mut());
                 let mut dead = Vec::new();
                 for event in events {
