@@ -112,7 +112,7 @@ pub struct Workers {
 /// may take longer than the page's own frame budget, for fewer round trips, while a change of
 /// value still waits at most this long behind the growth under way (see the README's "Who runs
 /// where" for the measurement).
-const WORKER_GROWTH_MS: f64 = 12.0;
+const WORKER_GROWTH_MS: f64 = 24.0;
 
 /// The page address's query parameter `key`, as a number.
 fn query_number(key: &str) -> Option<usize> {
