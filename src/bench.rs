@@ -7,6 +7,7 @@
 //! a second each, printed with its spread, so that a browser's coarse clock cannot quantise
 //! it; frame times are the distribution of single frames, as a user sees them.
 
+use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
 use crate::blobtree::polygonize::{Grid, polygonize};
 use crate::export::MeshFormat;
@@ -209,16 +210,7 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
         spread: Some(spread),
     });
     for resolution in [128, 256] {
-        let grid = Grid::new(&tree.bounds, resolution);
-        let (ms, spread) = timed(now, || {
-            std::hint::black_box(polygonize(tree, &grid, last));
-        });
-        figures.push(Figure {
-            what: format!("{id} polygonized at {resolution}³"),
-            value: ms,
-            unit: "ms",
-            spread: Some(spread),
-        });
+        figures.push(polygonized(now, id, tree, last, resolution));
     }
     if let Ok(mut generator) = Generator::new(&preset.spec) {
         let rows = preset.spec.growth.speed.ceil() as usize;
@@ -246,6 +238,54 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
                 spread: None,
             });
         }
+    }
+    figures
+}
+
+/// The time to polygonize the whole `tree` of preset `id` (its instances to `last`) at
+/// `resolution`³ on one thread.
+fn polygonized(now: &dyn Fn() -> f64, id: &str, tree: &Node, last: u32, resolution: u32) -> Figure {
+    let grid = Grid::new(&tree.bounds, resolution);
+    let (ms, spread) = timed(now, || {
+        std::hint::black_box(polygonize(tree, &grid, last));
+    });
+    Figure {
+        what: format!("{id} polygonized at {resolution}³"),
+        value: ms,
+        unit: "ms",
+        spread: Some(spread),
+    }
+}
+
+/// The presets whose pattern rates [`one_core`] measures: one per model.
+const ONE_CORE_PATTERNS: [&str; 4] = [
+    "stripes",
+    "oliva-porphyria",
+    "conus-marmoreus",
+    "ca-conus-princeps",
+];
+
+/// What one core does, to compare a worker's thread with the page's (`make bench` runs it on
+/// both in the same browser): the pattern rates of one preset per model, and the Murex
+/// polygonized whole at 128³.
+pub fn one_core(now: &dyn Fn() -> f64) -> Vec<Figure> {
+    let mut figures: Vec<Figure> = ONE_CORE_PATTERNS
+        .iter()
+        .filter_map(|id| presets().iter().find(|p| p.id == *id))
+        .filter_map(|preset| pattern_rows(now, preset))
+        .collect();
+    let murex = presets().iter().find(|p| p.id == "murex-cabritii");
+    if let Some(preset) = murex
+        && let Form::Implicit(spec) = &preset.spec.form
+        && let Ok(shell) = whorl(
+            spec,
+            &preset.spec.pattern,
+            preset.spec.seed,
+            preset.spec.growth.rows as usize,
+        )
+    {
+        let last = shell.instances - 1;
+        figures.push(polygonized(now, preset.id, &shell.tree, last, 128));
     }
     figures
 }

@@ -6,6 +6,10 @@
 //! the same, bit for bit, as one thread growing them alone.
 #![cfg(not(target_arch = "wasm32"))]
 
+use seashells_core::export::MeshFormat;
+use seashells_core::export::job::Export;
+use seashells_core::export::print_size::PrintSize;
+use seashells_core::export::shell::Shell;
 use seashells_core::generator::Generator;
 use seashells_core::presets::preset;
 use seashells_core::share::link;
@@ -240,6 +244,37 @@ fn a_murex_finished_by_one_two_or_four_workers_is_the_same_bit_for_bit() {
                 "{what}"
             );
         }
+    }
+}
+
+/// Every mesh file of the shell `shell` gives, written as the page writes it.
+fn files(shell: impl Fn() -> Shell) -> Vec<Vec<u8>> {
+    MeshFormat::ALL
+        .iter()
+        .map(|&format| {
+            let mut export = Export::new(format, shell()).unwrap();
+            loop {
+                if let Some(bytes) = export.work(|| true).unwrap() {
+                    break bytes;
+                }
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn the_murexs_files_from_one_two_or_four_workers_are_the_command_lines_bit_for_bit() {
+    let (link, spec) = link_of("murex-cabritii", "&form.resolution=40");
+    let preset = preset("murex-cabritii").unwrap();
+    let size = PrintSize::default;
+    let reference = alone(&spec, 0, 0);
+    let expected = files(|| Shell::new(&reference, &spec, preset, size()).unwrap());
+    for workers in [1, 2, 4] {
+        let mut page = Page::new(workers, Some(2.0), workers);
+        let replica = grow_and_finish(&mut page, &link, 0, 0, None, false);
+        let made =
+            files(|| Shell::of(replica.for_export().unwrap(), &spec, preset, size()).unwrap());
+        assert!(made == expected, "the files made with {workers} workers");
     }
 }
 

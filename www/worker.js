@@ -5,19 +5,27 @@
 //
 // Test-only: a worker the page names `seashells-throw` (the page's `crash-workers=N` debug
 // switch in its address, used by tests/page/workers.test.mjs) throws on its first request,
-// as a worker that fails would.
+// as a worker that fails would; one named `seashells-hang` (`hang-workers=N`) spins forever on
+// its first request without answering, as a worker caught in an endless loop would, until the
+// page finds it out and terminates it.
 import init, { WorkerHost } from './pkg/seashells.js';
 
 const early = [];
 self.onmessage = (event) => early.push(event.data);
 await init();
 const host = new WorkerHost();
-let throwOnFirst = self.name === 'seashells-throw';
+let failOnFirst = self.name;
 const answer = (data) => {
-  if (throwOnFirst) {
-    throwOnFirst = false;
+  if (failOnFirst === 'seashells-throw') {
+    failOnFirst = '';
     throw new Error('this worker was made to throw (test-only crash-workers switch)');
   }
+  if (failOnFirst === 'seashells-hang') {
+    for (;;) {
+      // Never answers (test-only hang-workers switch).
+    }
+  }
+  failOnFirst = '';
   for (const reply of host.handle(new Uint8Array(data))) {
     self.postMessage(reply, [reply]);
   }

@@ -34,6 +34,7 @@ use crate::share::link::{self, Decoded};
 use crate::share::presentation::{Layout, Presentation};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{SHELL, Section};
+use crate::spec::form::Form;
 use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
@@ -192,12 +193,23 @@ impl App {
         page::document().set_title(&title);
     }
 
+    /// Shows `spec`, grown from its apex; an implicit shell that was grown whole when one of
+    /// its values changed is remeshed whole at once instead, its chunks shared by the pool.
     fn load(&mut self, preset: &'static Preset, spec: ShellSpec) {
         self.stop_recording("the shell was changed");
         signal("state", "loading");
         signal("patternHash", "");
         signal("mesh", "");
+        let remesh = matches!(spec.form, Form::Implicit(_))
+            && self
+                .current
+                .as_ref()
+                .is_some_and(|(p, _)| p.id == preset.id)
+            && self.viewer.growing().is_some_and(|g| g.replica.is_done());
         self.viewer.load(preset, &spec);
+        if remesh {
+            self.viewer.finish();
+        }
         set_text("title", &preset.name);
         set_text("source", &preset.source);
         page::document().set_title(&format!("{} — Seashells", preset.name));
@@ -586,10 +598,18 @@ impl App {
 
     /// One animation frame.
     pub fn frame(&mut self) -> Result<(), String> {
+        let outcome = self.work_and_draw();
+        // What this frame asked goes out now, to be worked on before the next frame.
+        self.workers.borrow_mut().send();
+        outcome
+    }
+
+    /// What a frame does: takes in the workers' replies, grows, draws.
+    fn work_and_draw(&mut self) -> Result<(), String> {
         if !self.survive()? {
             return Ok(());
         }
-        self.downloads.work();
+        self.downloads.work(&mut self.viewer, self.current.as_ref());
         self.take_replies();
         if self.recording.is_some() {
             self.record_frame();

@@ -1,7 +1,8 @@
 //! Test-only hooks, exported from the wasm module for the page tests
-//! (`tests/page/survive.test.mjs`) to force what a user's machine does rarely: a destroyed
-//! graphics device and a panic. They are not part of the page's interface; calling one does to
-//! the page what the event itself would, and the page must survive it.
+//! (`tests/page/survive.test.mjs`, `tests/page/workers.test.mjs`) to force what a user's
+//! machine does rarely: a destroyed graphics device, a panic, a worker that throws. They are
+//! not part of the page's interface; calling one does to the page what the event itself would,
+//! and the page must survive it.
 
 use std::cell::{Cell, RefCell};
 use wasm_bindgen::prelude::*;
@@ -12,6 +13,7 @@ pub type Destroy = Box<dyn Fn() -> Result<(), String>>;
 thread_local! {
     static DESTROY: RefCell<Option<Destroy>> = const { RefCell::new(None) };
     static PANIC_WHILE_GROWING: Cell<bool> = const { Cell::new(false) };
+    static CRASH_ON_FILL: Cell<bool> = const { Cell::new(false) };
 }
 
 /// Remembers how to reach the page's devices, for [`debug_destroy_device`].
@@ -41,4 +43,17 @@ pub fn panic_if_asked() {
     if PANIC_WHILE_GROWING.with(|p| p.replace(false)) {
         panic!("a panic forced by the page tests' hook (debug_panic_while_growing)");
     }
+}
+
+/// Test-only: makes the worker holding the sessions throw when it is next asked for rows of a
+/// previewed pattern (`Fill`), as a worker that fails mid-preview would
+/// (`tests/page/workers.test.mjs`).
+#[wasm_bindgen]
+pub fn debug_crash_worker_on_fill() {
+    CRASH_ON_FILL.with(|c| c.set(true));
+}
+
+/// Whether a test asked with [`debug_crash_worker_on_fill`] (once).
+pub fn crash_on_fill_asked() -> bool {
+    CRASH_ON_FILL.with(|c| c.replace(false))
 }

@@ -4,19 +4,22 @@
 //! budget at a time, so that the page never freezes, with a progress bar while it takes
 //! longer than a frame; then it is offered as a download. What cannot be exported (nothing
 //! grown yet, a shell that stopped, an open surface as 3MF, a height out of bounds) is said
-//! in words. `<body data-download>`: writing, offered, refused (empty before any).
+//! in words. A mesh of an implicit shell still growing is of the whole shell: the page first
+//! finishes it, its chunks shared by the pool of workers as the Finish control shares them,
+//! then writes it (`finishing` until then). `<body data-download>`: finishing, writing,
+//! offered, refused (empty before any).
 
 use super::page::{self, element, set_text, show_message, signal};
 use super::viewer::{Viewer, now};
 use crate::export::Download;
 use crate::export::estimate::{Counts, Size};
 use crate::export::job::Export;
-use crate::export::paint::PatternImage;
 use crate::export::print_size::PrintSize;
-use crate::export::shell::{Grown, Shell};
+use crate::export::shell::Shell;
 use crate::generator::within;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
+use crate::spec::form::Form;
 use wasm_bindgen::JsCast;
 use web_sys::{
     Blob, BlobPropertyBag, HtmlAnchorElement, HtmlButtonElement, HtmlInputElement,
@@ -40,10 +43,17 @@ struct Job {
     longest: f64,
 }
 
+/// A download waiting for the shell of session `session` to be finished.
+struct AfterFinish {
+    what: Download,
+    session: u32,
+}
+
 /// The download menu and the file under way.
 #[derive(Default)]
 pub struct Downloads {
     job: Option<Job>,
+    after_finish: Option<AfterFinish>,
     /// The counts the sizes shown were estimated from, and when.
     shown: Option<(Counts, f64)>,
 }
@@ -57,7 +67,20 @@ impl Downloads {
         viewer: &mut Viewer,
         current: Option<&(&'static Preset, ShellSpec)>,
     ) {
-        if self.job.is_some() {
+        if self.job.is_some() || self.after_finish.is_some() {
+            return;
+        }
+        let implicit = current.is_some_and(|(_, spec)| matches!(spec.form, Form::Implicit(_)));
+        let growing_implicit = viewer
+            .growing()
+            .filter(|g| implicit && g.replica.shell().is_some() && !g.replica.is_done());
+        if let (Download::Mesh(_), Some(g)) = (what, growing_implicit) {
+            let session = g.replica.session();
+            viewer.finish();
+            self.after_finish = Some(AfterFinish { what, session });
+            signal("download", "finishing");
+            set_buttons_enabled(false);
+            page::hide_message();
             return;
         }
         if let Err(e) = self.begin(what, viewer, current) {
@@ -97,19 +120,7 @@ impl Downloads {
                 } else {
                     PrintSize::default()
                 };
-                let r = &g.replica;
-                let info = r.shell().ok_or("the shell is not built yet")?;
-                let pattern = (r.cells() > 0).then(|| PatternImage {
-                    cells: r.cells(),
-                    rows: r.rgba().len() / (r.cells() * 4),
-                    rgba: r.rgba(),
-                });
-                let grown = Grown {
-                    mesh: r.snapshot(),
-                    failure: r.failure(),
-                    front: info.front,
-                    pattern,
-                };
+                let grown = g.replica.for_export().ok_or("the shell is not built yet")?;
                 let shell = Shell::of(grown, spec, preset, size).map_err(|e| e.to_string())?;
                 let export = Export::new(format, shell).map_err(|e| e.to_string())?;
                 (export, format.mime())
@@ -128,8 +139,31 @@ impl Downloads {
         Ok(())
     }
 
-    /// Writes the file under way for this frame's budget; offers it once it is whole.
-    pub fn work(&mut self) {
+    /// Writes the file under way for this frame's budget; offers it once it is whole. A
+    /// download waiting for its shell to be finished starts once it is (and is dropped, with
+    /// a message, when another shell took its place).
+    pub fn work(&mut self, viewer: &mut Viewer, current: Option<&(&'static Preset, ShellSpec)>) {
+        if let Some(waiting) = &self.after_finish {
+            let replica = viewer.growing().map(|g| &g.replica);
+            match replica {
+                Some(r) if r.session() == waiting.session && !r.is_done() => return,
+                Some(r) if r.session() == waiting.session => {
+                    let what = waiting.what;
+                    self.after_finish = None;
+                    set_buttons_enabled(true);
+                    self.start(what, viewer, current);
+                }
+                _ => {
+                    self.after_finish = None;
+                    set_buttons_enabled(true);
+                    signal("download", "refused");
+                    show_message(
+                        "The download could not be made: the shell was changed before it was \
+                         grown whole.",
+                    );
+                }
+            }
+        }
         let Some(job) = &mut self.job else {
             return;
         };

@@ -99,6 +99,8 @@ impl Growing {
 /// and whether rows were asked for and not yet sent.
 struct Previewing {
     session: u32,
+    /// The link of the values previewed, to ask again of a fresh worker.
+    link: String,
     state: PreviewState,
     pending: bool,
 }
@@ -378,11 +380,21 @@ impl Viewer {
     }
 
     /// The worker holding the shell was replaced, losing `lost` unanswered: the shell is grown
-    /// again on the fresh one to where the page's copy stands, and what was lost asked again.
+    /// again on the fresh one to where the page's copy stands, a pattern being previewed is
+    /// previewed again from its first row, and what was lost asked again.
     pub fn resume(&mut self, lost: Vec<Request>) {
         let Some(g) = &mut self.growing else { return };
         let session = g.replica.session();
         let mut workers = self.workers.borrow_mut();
+        if let Some(p) = &mut g.preview
+            && p.state == PreviewState::Filling
+        {
+            workers.submit(Request::Preview {
+                session: p.session,
+                link: p.link.clone(),
+            });
+            p.pending = true;
+        }
         g.pending = 0;
         if g.replica.shell().is_none() {
             workers.submit(Request::Load {
@@ -428,12 +440,14 @@ impl Viewer {
     pub fn preview(&mut self, spec: &ShellSpec) {
         let Some(g) = &mut self.growing else { return };
         self.session = self.session.wrapping_add(1);
+        let link = link::encode(g.preset, spec);
         self.workers.borrow_mut().submit(Request::Preview {
             session: self.session,
-            link: link::encode(g.preset, spec),
+            link: link.clone(),
         });
         g.preview = Some(Previewing {
             session: self.session,
+            link,
             state: PreviewState::Filling,
             pending: true,
         });
@@ -666,7 +680,9 @@ impl Viewer {
             let settled = self.growing.as_ref().is_some_and(Growing::settled);
             if settled && self.owed > 0 {
                 let rows = std::mem::take(&mut self.owed);
-                self.grow(rows, growth_budget(budget_ms, now() - self.last_frame));
+                let frame = growth_budget(budget_ms, now() - self.last_frame);
+                let budget = self.workers.borrow().growth_budget(frame);
+                self.grow(rows, budget);
             }
         } else {
             self.owed = 0;

@@ -9,13 +9,20 @@ use js_sys::{Array, Uint8Array};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-/// The worker's clock, in milliseconds (a worker has no `window`).
-fn now() -> f64 {
-    js_sys::global()
-        .dyn_into::<web_sys::WorkerGlobalScope>()
+/// The clock of the thread it is called on, in milliseconds: the global scope's `performance`,
+/// a worker's (which has no `window`) or the page's.
+pub(crate) fn now() -> f64 {
+    js_sys::Reflect::get(&js_sys::global(), &JsValue::from_str("performance"))
         .ok()
-        .and_then(|scope| scope.performance())
+        .and_then(|p| p.dyn_into::<web_sys::Performance>().ok())
         .map_or(0.0, |p| p.now())
+}
+
+/// The benchmark's figures of one core (`crate::bench::one_core`), as text: run by `make
+/// bench` on a worker and on the page's thread of the same browser, to compare them.
+#[wasm_bindgen]
+pub fn benchmark_one_core() -> String {
+    crate::bench::report(&crate::bench::one_core(&now))
 }
 
 /// What a worker holds: its host.

@@ -8,8 +8,13 @@
 //! status line says so.
 //!
 //! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
-//! first request (see `www/worker.js`).
+//! first request, and `hang-workers=N` the next N spin forever on theirs without answering (see
+//! `www/worker.js`); with `hang-workers` a worker is held to hang after a fifth of each
+//! request's allowance (3 s for a step or a job, 12 s for building or regrowing a shell), so
+//! that a page test finds it out in seconds. `debug_crash_worker_on_fill` (`debug.rs`) makes
+//! the worker holding the sessions throw when next asked for rows of a previewed pattern.
 
+use super::debug;
 use super::page::{now, set_text, signal};
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
@@ -46,13 +51,38 @@ impl Drop for Slot {
     }
 }
 
+/// Workers left to start that fail on their first request (test-only): first those that
+/// throw, then those that hang.
+#[derive(Clone, Copy, Default)]
+struct Faults {
+    throws: usize,
+    hangs: usize,
+}
+
+impl Faults {
+    /// The name of the next worker to start: one `www/worker.js` makes fail, or its own.
+    fn next_name(&mut self) -> &'static str {
+        if self.throws > 0 {
+            self.throws -= 1;
+            "seashells-throw"
+        } else if self.hangs > 0 {
+            self.hangs -= 1;
+            "seashells-hang"
+        } else {
+            "seashells"
+        }
+    }
+}
+
+/// The share of each request's allowance a worker gets under the `hang-workers` switch.
+const TEST_PATIENCE: f64 = 0.2;
+
 /// Where requests are worked on.
 enum Backend {
     Workers {
         slots: Vec<Slot>,
         inbox: Inbox,
-        /// Workers left to start that throw on their first request (test-only).
-        crashes_left: usize,
+        faults: Faults,
     },
     /// The page's own thread.
     Local(Box<Host>),
@@ -73,7 +103,16 @@ pub struct Workers {
     backend: Backend,
     /// Milliseconds of a frame the page's own thread may work, without workers.
     budget_ms: f64,
+    /// Least milliseconds a worker is given to grow the shell per request (`grow-budget=N` in
+    /// the query sets another, for benchmarks).
+    worker_growth_ms: f64,
 }
+
+/// Least milliseconds a worker grows the shell per request: off the page's thread a request
+/// may take longer than the page's own frame budget, for fewer round trips, while a change of
+/// value still waits at most this long behind the growth under way (see the README's "Who runs
+/// where" for the measurement).
+const WORKER_GROWTH_MS: f64 = 24.0;
 
 /// The page address's query parameter `key`, as a number.
 fn query_number(key: &str) -> Option<usize> {
@@ -85,13 +124,12 @@ fn query_number(key: &str) -> Option<usize> {
         .and_then(|v| v.parse().ok())
 }
 
-/// Starts a worker for slot `slot` in generation `generation`, its events going to `inbox`.
-fn spawn(slot: usize, generation: u32, inbox: &Inbox, throws: bool) -> Result<Slot, JsValue> {
+/// Starts a worker named `name` for slot `slot` in generation `generation`, its events going
+/// to `inbox`.
+fn spawn(slot: usize, generation: u32, inbox: &Inbox, name: &str) -> Result<Slot, JsValue> {
     let options = WorkerOptions::new();
     options.set_type(WorkerType::Module);
-    if throws {
-        options.set_name("seashells-throw");
-    }
+    options.set_name(name);
     let worker = Worker::new_with_options("./worker.js", &options)?;
     let to = Rc::clone(inbox);
     let on_message = Closure::<dyn FnMut(MessageEvent)>::new(move |e: MessageEvent| {
@@ -121,7 +159,11 @@ impl Workers {
         let size = query_number("workers")
             .unwrap_or_else(|| size_for(cores))
             .min(8);
-        let mut crashes_left = query_number("crash-workers").unwrap_or(0);
+        let mut faults = Faults {
+            throws: query_number("crash-workers").unwrap_or(0),
+            hangs: query_number("hang-workers").unwrap_or(0),
+        };
+        let patience = if faults.hangs > 0 { TEST_PATIENCE } else { 1.0 };
         let local = |why: &str| {
             signal("workers", "0");
             set_text(
@@ -132,6 +174,7 @@ impl Workers {
                 pool: Pool::new(1),
                 backend: Backend::Local(Box::default()),
                 budget_ms,
+                worker_growth_ms: budget_ms,
             }
         };
         if size == 0 {
@@ -140,8 +183,7 @@ impl Workers {
         let inbox: Inbox = Rc::default();
         let mut slots = Vec::new();
         for slot in 0..size {
-            let throws = crashes_left > 0;
-            match spawn(slot, 0, &inbox, throws) {
+            match spawn(slot, 0, &inbox, faults.next_name()) {
                 Ok(s) => slots.push(s),
                 Err(e) => {
                     let why = e
@@ -151,7 +193,6 @@ impl Workers {
                     return local(&format!("workers could not start ({why})"));
                 }
             }
-            crashes_left = crashes_left.saturating_sub(usize::from(throws));
         }
         signal("workers", &size.to_string());
         set_text(
@@ -162,13 +203,23 @@ impl Workers {
             ),
         );
         Self {
-            pool: Pool::new(size),
+            pool: Pool::new(size).with_patience(patience),
             backend: Backend::Workers {
                 slots,
                 inbox,
-                crashes_left,
+                faults,
             },
             budget_ms,
+            worker_growth_ms: query_number("grow-budget").map_or(WORKER_GROWTH_MS, |ms| ms as f64),
+        }
+    }
+
+    /// Milliseconds to grow the shell for in one request, where the page's own thread would
+    /// take `frame_ms`: as much on the page's thread, at least [`WORKER_GROWTH_MS`] on a worker.
+    pub fn growth_budget(&self, frame_ms: f64) -> f64 {
+        match self.backend {
+            Backend::Local(_) => frame_ms,
+            Backend::Workers { .. } => frame_ms.max(self.worker_growth_ms),
         }
     }
 
@@ -182,20 +233,48 @@ impl Workers {
         self.pool.cancel(drop);
     }
 
-    /// Sends what waits, replaces workers that died or hang, and returns what came back.
-    pub fn poll(&mut self) -> Polled {
-        let mut polled = Polled::default();
+    /// Sends what waits: called at the end of each frame, so that a request asked in a frame
+    /// is worked on while the page waits for the next, not a frame later.
+    pub fn send(&mut self) {
         let sends = self.pool.dispatch(now());
-        let Self {
-            pool,
-            backend,
-            budget_ms,
-        } = self;
-        match backend {
+        match &mut self.backend {
             Backend::Local(host) => {
                 for send in sends {
                     host.push(send.ticket, send.request);
                 }
+            }
+            Backend::Workers { slots, .. } => {
+                for send in sends {
+                    let fill = matches!(send.request, Request::Fill { .. });
+                    let bytes = if fill && debug::crash_on_fill_asked() {
+                        // Bytes no worker can read: it throws, as a worker that fails would.
+                        Vec::new()
+                    } else {
+                        encode_request(send.ticket, &send.request)
+                    };
+                    let buffer = Uint8Array::from(&bytes[..]).buffer();
+                    let transfer = Array::of1(&buffer);
+                    // A worker that cannot take a message is found out by its silence.
+                    let _ = slots[send.slot]
+                        .worker
+                        .post_message_with_transfer(&buffer, &transfer);
+                }
+            }
+        }
+    }
+
+    /// Sends what waits, replaces workers that died or hang, and returns what came back.
+    pub fn poll(&mut self) -> Polled {
+        let mut polled = Polled::default();
+        self.send();
+        let Self {
+            pool,
+            backend,
+            budget_ms,
+            ..
+        } = self;
+        match backend {
+            Backend::Local(host) => {
                 for (ticket, reply) in host.work(&now, Budget::Until(now() + *budget_ms)) {
                     if let Some(request) = pool.answered(SESSIONS, ticket, now()) {
                         polled.replies.push((request, reply));
@@ -205,17 +284,8 @@ impl Workers {
             Backend::Workers {
                 slots,
                 inbox,
-                crashes_left,
+                faults,
             } => {
-                for send in sends {
-                    let bytes = encode_request(send.ticket, &send.request);
-                    let buffer = Uint8Array::from(&bytes[..]).buffer();
-                    let transfer = Array::of1(&buffer);
-                    // A worker that cannot take a message is found out by its silence.
-                    let _ = slots[send.slot]
-                        .worker
-                        .post_message_with_transfer(&buffer, &transfer);
-                }
                 let events: Vec<Event> = std::mem::take(&mut *inbox.borrow_mut());
                 let mut dead = Vec::new();
                 for event in events {
@@ -249,9 +319,7 @@ impl Workers {
                         polled.sessions_lost = Some(lost);
                     }
                     let generation = slots[slot].generation + 1;
-                    let throws = *crashes_left > 0;
-                    *crashes_left = crashes_left.saturating_sub(usize::from(throws));
-                    match spawn(slot, generation, inbox, throws) {
+                    match spawn(slot, generation, inbox, faults.next_name()) {
                         Ok(fresh) => slots[slot] = fresh,
                         Err(_) => continue,
                     }

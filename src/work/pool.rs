@@ -56,6 +56,10 @@ pub struct Pool {
     next_ticket: u32,
     /// Workers that died or hung so far.
     deaths: usize,
+    /// The share of each request's allowance a worker is given before it is held to hang: 1
+    /// in the product; less under the page tests' `hang-workers` switch, so that a hang is
+    /// found out in seconds.
+    patience: f64,
 }
 
 /// The worker that holds sessions.
@@ -69,7 +73,14 @@ impl Pool {
             waiting: VecDeque::new(),
             next_ticket: 1,
             deaths: 0,
+            patience: 1.0,
         }
+    }
+
+    /// The same pool giving each request `patience` times its allowance (see
+    /// [`Request::allowance_ms`]).
+    pub fn with_patience(self, patience: f64) -> Self {
+        Self { patience, ..self }
     }
 
     pub fn size(&self) -> usize {
@@ -144,7 +155,7 @@ impl Pool {
     pub fn overdue(&self, now: f64) -> Option<usize> {
         self.slots.iter().position(|s| {
             s.sent.first().is_some_and(|first| {
-                now - s.quiet_since.max(first.at) > first.request.allowance_ms()
+                now - s.quiet_since.max(first.at) > first.request.allowance_ms() * self.patience
             })
         })
     }
@@ -267,5 +278,22 @@ mod tests {
         pool.answered(0, sent[0].ticket, 10_000.0);
         assert_eq!(pool.overdue(20_000.0), None, "the second started at 10 s");
         assert_eq!(pool.overdue(25_001.0), Some(0));
+    }
+
+    #[test]
+    fn less_patience_holds_a_worker_to_hang_sooner() {
+        let mut pool = Pool::new(1).with_patience(0.2);
+        pool.submit(Request::Load {
+            session: 1,
+            link: "v=1&preset=stripes".into(),
+        });
+        pool.submit(tile(0));
+        pool.dispatch(0.0);
+        assert_eq!(
+            pool.overdue(11_999.0),
+            None,
+            "a fifth of the minute to build"
+        );
+        assert_eq!(pool.overdue(12_001.0), Some(0));
     }
 }

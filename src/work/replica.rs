@@ -6,6 +6,8 @@
 //! thread finishing the shell would have made, bit for bit, whatever the number of workers.
 
 use super::message::{Delta, Progress, ShellInfo, WholeShell};
+use crate::export::paint::PatternImage;
+use crate::export::shell::Grown;
 use crate::generator::Advance;
 use crate::mesh::{Bounds, Mesh};
 use crate::shape::Pieces;
@@ -218,6 +220,21 @@ impl Replica {
         let mut mesh = self.mesh.clone();
         mesh.append(&self.edge);
         mesh
+    }
+
+    /// The shell as it stands, for an export to read, once its worker has built it.
+    pub fn for_export(&self) -> Option<Grown<'_>> {
+        let shell = self.shell.as_ref()?;
+        Some(Grown {
+            mesh: self.snapshot(),
+            failure: self.failure(),
+            front: shell.front,
+            pattern: (self.cells() > 0).then(|| PatternImage {
+                cells: self.cells(),
+                rows: self.rgba.len() / (self.cells() * 4),
+                rgba: &self.rgba,
+            }),
+        })
     }
 
     /// Bounds of what has grown, edge included.

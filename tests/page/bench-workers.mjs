@@ -1,21 +1,25 @@
 // Benchmarks of growth off the page's thread (issue 30), each beside its baseline in the same
-// run: the page's own script time per frame while the Murex grows (99th percentile; the page
-// on its own thread, `workers=0`, is how the page worked before), the Murex finished at 256³
-// with 1 and W workers, and every gallery picture with 1 and W workers. W is the pool this
+// run: what one core does (the pattern solvers' rates, one preset per model, and the Murex
+// polygonized whole at 128³) on a worker's thread and on the page's; the page's own script
+// time per frame while the Murex grows (50th and 99th percentiles over at least 200 frames
+// of growth; the page on its own thread, `workers=0`, is how the page worked before); the
+// Murex finished at 256³ with 1 and W workers; and every gallery picture on the page's thread
+// and with 1 and W workers. W is the pool this
 // machine gets (`navigator.hardwareConcurrency − 1`, at least 1) and 2 besides, so that the
 // sharing shows even on a 2-core machine. Prints figures; asserts nothing.
 import { open, session, waitForState } from './browser.mjs';
 
-/** Wraps requestAnimationFrame before the page loads, to time each frame's callback. */
+/** Wraps requestAnimationFrame before the page loads, to time each frame's callback while the shell grows. */
 function timeFrames() {
   window.__frameMs = [];
   const raf = window.requestAnimationFrame.bind(window);
   window.requestAnimationFrame = (callback) => raf((t) => {
+    const growing = document.body.dataset.state === 'growing';
     const start = performance.now();
     try {
       callback(t);
     } finally {
-      window.__frameMs.push(performance.now() - start);
+      if (growing) window.__frameMs.push(performance.now() - start);
     }
   });
 }
@@ -25,18 +29,63 @@ const percentile = (xs, p) => {
   return sorted[Math.min(sorted.length - 1, Math.floor((p / 100) * sorted.length))];
 };
 
-/** Script milliseconds per frame (p50, p99) while the Murex grows for `seconds`. */
-async function frameScript(browser, base, workers, seconds = 20) {
-  const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
-  await page.addInitScript(timeFrames);
-  await page.goto(`${base}?workers=${workers}#v=1&preset=murex-cabritii`);
-  await waitForState(page, ['growing'], 300_000);
-  await page.evaluate(() => { window.__frameMs = []; });
-  await page.waitForTimeout(seconds * 1000);
-  const ms = await page.evaluate(() => window.__frameMs);
-  const rows = await page.evaluate(() => document.body.dataset.rows);
+/**
+ * Script milliseconds per frame (p50, p99) while the Murex grows: at least `least` frames
+ * timed while `data-state` says growing (the shell is opened again if it is grown before), at
+ * most `seconds` of growth in all.
+ */
+async function frameScript(browser, base, workers, least = 200, seconds = 600) {
+  const ms = [];
+  let rows = 0;
+  const started = Date.now();
+  while (ms.length < least && Date.now() - started < seconds * 1000) {
+    const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
+    await page.addInitScript(timeFrames);
+    await page.goto(`${base}?workers=${workers}#v=1&preset=murex-cabritii`);
+    await waitForState(page, ['growing'], 300_000);
+    await page.evaluate(() => { window.__frameMs = []; });
+    await page.waitForFunction((n) => document.body.dataset.state !== 'growing' || window.__frameMs.length >= n,
+      least - ms.length, { timeout: seconds * 1000, polling: 500 }).catch(() => {});
+    ms.push(...(await page.evaluate(() => window.__frameMs)));
+    rows += Number(await page.evaluate(() => document.body.dataset.rows));
+    await page.close();
+  }
+  return { frames: ms.length, p50: percentile(ms, 50), p99: percentile(ms, 99), rows, seconds: (Date.now() - started) / 1000 };
+}
+
+/** The benchmark's figures of one core (pattern rates, the Murex polygonized) on the page's thread and on a worker. */
+async function oneCore(browser, base) {
+  const page = await browser.newPage();
+  await page.goto(`${base}bench.html`);
+  const parse = (text) => new Map(text.trim().split('\n').map((line) => {
+    const m = line.match(/^(.*?)\s{2,}([\d.]+) (\S.*?)(?:\s+\(spread ([\d.]+) %\))?$/);
+    return [m[1], { value: Number(m[2]), unit: m[3], spread: m[4] }];
+  }));
+  const [thread, worker] = await page.evaluate(async () => {
+    const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
+    await module.default();
+    const onThread = module.benchmark_one_core();
+    const onWorker = await new Promise((resolve, reject) => {
+      const w = new Worker(new URL('bench-worker.js', document.baseURI), { type: 'module' });
+      w.onmessage = (e) => { resolve(e.data); w.terminate(); };
+      w.onerror = (e) => reject(new Error(e.message));
+    });
+    return [onThread, onWorker];
+  });
   await page.close();
-  return { frames: ms.length, p50: percentile(ms, 50), p99: percentile(ms, 99), rows };
+  return { thread: parse(thread), worker: parse(worker) };
+}
+
+/** Seconds from the Murex's first row to its last, grown at its own speed with `query`. */
+async function murexGrowth(browser, base, query) {
+  const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
+  await page.goto(`${base}?${query}#v=1&preset=murex-cabritii&growth.speed=200`);
+  await waitForState(page, ['growing'], 300_000);
+  const start = Date.now();
+  await waitForState(page, ['grown'], 900_000);
+  const seconds = (Date.now() - start) / 1000;
+  await page.close();
+  return seconds;
 }
 
 /** Seconds from End to the Murex grown whole at 256³ (`data-growth` done). */
@@ -79,9 +128,25 @@ export async function benchWorkers() {
     const pool = Math.min(8, Math.max(1, cores - 1));
     const sizes = [...new Set([1, pool, 2])];
     console.log(`workers (Chromium ${browser.version()}, ${cores} logical processors, pool of ${pool})`);
+    const one = await oneCore(browser, base);
+    for (const [what, t] of one.thread) {
+      const w = one.worker.get(what);
+      const spread = (x) => (x.spread ? ` (spread ${x.spread} %)` : '');
+      // A time (ms) is better lower, a rate higher: the worker's speed over the page's thread.
+      const speed = t.unit === 'ms' ? t.value / w.value : w.value / t.value;
+      console.log(`one core, ${what}: page's thread ${t.value} ${t.unit}${spread(t)}, a worker ${w.value} ${w.unit}${spread(w)} (the worker at × ${speed.toFixed(2)} the page's thread's speed)`);
+    }
     for (const workers of [0, 1]) {
       const f = await frameScript(browser, base, workers);
-      console.log(`Murex growing, page script per frame, workers=${workers}: p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms over ${f.frames} frames (row ${f.rows} after 20 s)`);
+      console.log(`Murex growing, page script per frame, workers=${workers}: p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms over ${f.frames} frames (${f.rows} rows grown in ${f.seconds.toFixed(0)} s)`);
+    }
+    // The worker's growth budget per request (`grow-budget=N`): fewer round trips against a
+    // change of value waiting behind the growth under way for as long.
+    const page0 = await murexGrowth(browser, base, 'workers=0');
+    console.log(`Murex grown at full speed on the page's thread: ${page0.toFixed(2)} s`);
+    for (const budget of [12, 24, 48]) {
+      const seconds = await murexGrowth(browser, base, `workers=1&grow-budget=${budget}`);
+      console.log(`Murex grown at full speed on one worker, ${budget} ms a request: ${seconds.toFixed(2)} s (× ${(page0 / seconds).toFixed(2)} of the page's thread)`);
     }
     const finish = {};
     for (const workers of sizes) {
