@@ -1,15 +1,24 @@
 // Pictures to look at, not a test: grows the shell of a link to its end in headless Chromium
-// (WebGL2) and photographs the canvas alone from four sides, dragging the camera round between.
+// (WebGL2) and photographs the canvas alone from four sides, a quarter turn apart (a drag across
+// half the view's height turns the camera by 90°, src/view/camera.rs `orbit`), starting from
+// the side the opening faces (the shape's `front`); then puts the four into one picture,
+// `four-sides.png`.
 //
-//     node tests/page/views.mjs 'v=1&preset=murex-cabritii' DIR   (make screenshots)
-import { mkdirSync } from 'node:fs';
+//     node tests/page/views.mjs 'v=1&preset=murex-cabritii' DIR [TITLE]   (make screenshots)
+import { mkdirSync, readFileSync } from 'node:fs';
 import { session, open, waitForState } from './browser.mjs';
 
-const [link = 'v=1&preset=murex-cabritii', dir = 'tests/page/screenshots/views'] = process.argv.slice(2);
+const [link = 'v=1&preset=murex-cabritii', dir = 'tests/page/screenshots/views', title = link] =
+  process.argv.slice(2);
 mkdirSync(dir, { recursive: true });
+const names = ['facing the opening', 'a quarter turn', 'from behind', 'three quarters'];
 const s = await session('WebGL2');
 try {
-  const { page, errors } = await open(s.browser, `${s.base}#${link}&growth.speed=400`, { width: 700, height: 700 });
+  const { page, errors } = await open(s.browser, `${s.base}#${link}`, { width: 700, height: 700 });
+  // End grows it whole at once (the Finish control), its chunks shared by the workers.
+  if ((await waitForState(page, ['growing', 'grown', 'error'], 300_000)).state === 'growing') {
+    await page.click('#finish');
+  }
   const state = await waitForState(page, ['grown', 'error'], 600_000);
   if (state.state !== 'grown') throw new Error(`the shell did not grow: ${await page.textContent('#message')}`);
   const canvas = page.locator('#shell');
@@ -19,17 +28,35 @@ try {
     for (const e of document.querySelectorAll('body *')) e.style.visibility = 'hidden';
     document.getElementById('shell').style.visibility = 'visible';
   });
+  const files = [];
   for (let side = 0; side < 4; side++) {
     await page.waitForTimeout(400);
     const file = `${dir}/side-${side}.png`;
     await canvas.screenshot({ path: file });
+    files.push(file);
     console.log(file);
     await page.mouse.move(x, y);
     await page.mouse.down();
-    await page.mouse.move(x + 90, y, { steps: 10 });
+    await page.mouse.move(x + box.height / 2, y, { steps: 10 });
     await page.mouse.up();
   }
   if (errors.length) throw new Error(errors.join('\n'));
+  const cells = files
+    .map((f, i) => `<figure><img src="data:image/png;base64,${readFileSync(f).toString('base64')}">
+      <figcaption>${names[i]}</figcaption></figure>`)
+    .join('');
+  // A blank page of its own: the shell's page forbids inline styles.
+  const sheet = await s.browser.newPage({ viewport: { width: 720, height: 760 } });
+  await sheet.setContent(`<style>
+      body { margin: 0; background: #fff; font: 15px sans-serif; width: 720px; }
+      h1 { font-size: 16px; margin: 8px 10px 4px; }
+      main { display: grid; grid-template-columns: 1fr 1fr; }
+      figure { margin: 0; text-align: center; } img { width: 350px; height: 350px; }
+      figcaption { margin-bottom: 4px; }
+    </style><h1>${title}</h1><main>${cells}</main>`);
+  const file = `${dir}/four-sides.png`;
+  await sheet.screenshot({ path: file, fullPage: true });
+  console.log(file);
 } finally {
   await s.close();
 }
