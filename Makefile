@@ -93,7 +93,7 @@ bench: build deps-browser
 	cargo build --release --bin seashells
 	node tests/page/bench.mjs
 
-## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…'
+## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…' [TURN=20]
 
 screenshots: build deps-browser
-	node tests/page/views.mjs '$(or $(LINK),v=1&preset=murex-cabritii)' tests/page/screenshots/views
+	node tests/page/views.mjs '$(or $(LINK),v=1&preset=murex-cabritii)' tests/page/screenshots/views '$(or $(LINK),v=1&preset=murex-cabritii)' '$(or $(TURN),0)'

@@ -1,14 +1,18 @@
 // Pictures to look at, not a test: grows the shell of a link to its end in headless Chromium
 // (WebGL2) and photographs the canvas alone from four sides, a quarter turn apart (a drag across
-// half the view's height turns the camera by 90°, src/view/camera.rs `orbit`), starting from
-// the side the opening faces (the shape's `front`); then puts the four into one picture,
-// `four-sides.png`.
+// half the view's height turns the camera by 90°, src/view/camera.rs `orbit`) with the camera
+// level (the page's first view looks down a little, `DEFAULT_PITCH`), starting from the side
+// the opening faces (the shape's `front`), so that the opening is seen head-on; then puts the
+// four into one picture, `four-sides.png`. TURN (degrees added to the camera's yaw, 0 unless
+// given) turns the first view further: the camera looks at the shell's centre in perspective,
+// so an opening off to one side of it is seen head-on a little to that side of `front` (about
+// 20° for the Murex presets at 700 px).
 //
-//     node tests/page/views.mjs 'v=1&preset=murex-cabritii' DIR [TITLE]   (make screenshots)
+//     node tests/page/views.mjs 'v=1&preset=murex-cabritii' DIR [TITLE] [TURN]   (make screenshots)
 import { mkdirSync, readFileSync } from 'node:fs';
 import { session, open, waitForState } from './browser.mjs';
 
-const [link = 'v=1&preset=murex-cabritii', dir = 'tests/page/screenshots/views', title = link] =
+const [link = 'v=1&preset=murex-cabritii', dir = 'tests/page/screenshots/views', title = link, turn = '0'] =
   process.argv.slice(2);
 mkdirSync(dir, { recursive: true });
 const names = ['facing the opening', 'a quarter turn', 'from behind', 'three quarters'];
@@ -28,6 +32,12 @@ try {
     for (const e of document.querySelectorAll('body *')) e.style.visibility = 'hidden';
     document.getElementById('shell').style.visibility = 'visible';
   });
+  // Level: a drag up by a fraction f of the view's height lowers the camera by f·π radians;
+  // the first view is raised by 0.2 (src/view/camera.rs `DEFAULT_PITCH`).
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x - (Number(turn) / 180) * box.height, y - (0.2 / Math.PI) * box.height, { steps: 4 });
+  await page.mouse.up();
   const files = [];
   for (let side = 0; side < 4; side++) {
     await page.waitForTimeout(400);
@@ -46,14 +56,15 @@ try {
       <figcaption>${names[i]}</figcaption></figure>`)
     .join('');
   // A blank page of its own: the shell's page forbids inline styles.
-  const sheet = await s.browser.newPage({ viewport: { width: 720, height: 760 } });
+  const sheet = await s.browser.newPage({ viewport: { width: 720, height: 600 } });
   await sheet.setContent(`<style>
       body { margin: 0; background: #fff; font: 15px sans-serif; width: 720px; }
       h1 { font-size: 16px; margin: 8px 10px 4px; }
       main { display: grid; grid-template-columns: 1fr 1fr; }
-      figure { margin: 0; text-align: center; } img { width: 350px; height: 350px; }
+      figure { margin: 0; text-align: center; } img { width: 350px; height: auto; }
       figcaption { margin-bottom: 4px; }
     </style><h1>${title}</h1><main>${cells}</main>`);
+  await sheet.bringToFront();
   const file = `${dir}/four-sides.png`;
   await sheet.screenshot({ path: file, fullPage: true });
   console.log(file);
