@@ -10,7 +10,6 @@ use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::ShellSpec;
-use crate::spec::form::Form;
 use crate::work::message::{Request, WholeShell};
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
@@ -68,17 +67,9 @@ pub struct Pictures {
 /// Milliseconds within which the browser is taken to report a lost device.
 const LOSS_NOTICE_MS: f64 = 2000.0;
 
-/// Voxels along the longest side of an implicit shell in a gallery picture: enough for its
-/// size, and quick to grow.
-const PICTURE_RESOLUTION: u32 = 64;
-
-/// The spec of a preset's picture.
+/// The spec of a preset's picture: its mesh as fine as a picture shows.
 fn picture_spec(preset: &Preset) -> ShellSpec {
-    let mut spec = preset.spec.clone();
-    if let Form::Implicit(implicit) = &mut spec.form {
-        implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
-    }
-    spec
+    crate::view::picture::picture_spec(&preset.spec)
 }
 
 /// The link a preset's picture is grown from.
