@@ -130,8 +130,8 @@ impl Pictures {
         }
     }
 
-    /// Keeps the pictures' graphics device and draws the shells waiting for it. After a loss,
-    /// the pictures drawn just before it are grown and drawn again on the next device.
+    /// Keeps the pictures' graphics device and draws the next shell waiting for it. After a
+    /// loss, the pictures drawn just before it are grown and drawn again on the next device.
     pub fn work(&mut self, workers: &mut Workers) {
         if self.viewer.survive() != Device::Ready {
             while let Some((preset, _)) = self.lately.pop_front() {
@@ -143,27 +143,30 @@ impl Pictures {
         while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
             self.lately.pop_front();
         }
-        while let Some((preset, whole)) = self.waiting.pop() {
-            self.viewer.show_whole(preset, &picture_spec(preset), whole);
-            let picture = self.viewer.picture();
-            if self.viewer.survive() != Device::Ready {
-                // Lost while drawing: the picture may be blank; it is drawn on the next device.
-                self.ask_again(preset, workers);
-                return;
-            }
-            let Ok(url) = picture else {
-                continue;
-            };
-            self.lately.push_back((preset, now()));
-            let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
-            let image = super::page::document()
-                .query_selector(&selector)
-                .ok()
-                .flatten()
-                .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
-            if let Some(img) = image {
-                img.set_src(&url);
-            }
+        // One picture a frame: reading a picture back waits for the GPU to draw it, and the
+        // page answers the user between two.
+        let Some((preset, whole)) = self.waiting.pop() else {
+            return;
+        };
+        self.viewer.show_whole(preset, &picture_spec(preset), whole);
+        let picture = self.viewer.picture();
+        if self.viewer.survive() != Device::Ready {
+            // Lost while drawing: the picture may be blank; it is drawn on the next device.
+            self.ask_again(preset, workers);
+            return;
+        }
+        let Ok(url) = picture else {
+            return;
+        };
+        self.lately.push_back((preset, now()));
+        let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
+        let image = super::page::document()
+            .query_selector(&selector)
+            .ok()
+            .flatten()
+            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+        if let Some(img) = image {
+            img.set_src(&url);
         }
     }
 
