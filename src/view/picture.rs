@@ -1,8 +1,8 @@
 //! The spec a gallery picture is grown from: the preset's own, with a mesh no finer than a
 //! 256-pixel picture can show. Drawing a picture costs the browser in proportion to its
-//! triangles (SwiftShader on a busy 2-core machine: about a second per 200 000), while the pattern is
-//! sampled per pixel from its texture whatever the mesh: so the picture keeps every pattern
-//! row and cell, every rib, the shape and the seed, and only the mesh is coarser.
+//! triangles (SwiftShader on a busy 2-core machine: about a second per 200 000), while the
+//! pattern is sampled per pixel from its texture whatever the mesh: so the picture keeps every
+//! pattern row and cell, every rib, the shape and the seed, and only the mesh is coarser.
 
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;
