@@ -10,7 +10,6 @@ use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::ShellSpec;
-use crate::spec::form::Form;
 use crate::work::message::{Request, WholeShell};
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
@@ -68,17 +67,9 @@ pub struct Pictures {
 /// Milliseconds within which the browser is taken to report a lost device.
 const LOSS_NOTICE_MS: f64 = 2000.0;
 
-/// Voxels along the longest side of an implicit shell in a gallery picture: enough for its
-/// size, and quick to grow.
-const PICTURE_RESOLUTION: u32 = 64;
-
-/// The spec of a preset's picture.
+/// The spec of a preset's picture: its mesh as fine as a picture shows.
 fn picture_spec(preset: &Preset) -> ShellSpec {
-    let mut spec = preset.spec.clone();
-    if let Form::Implicit(implicit) = &mut spec.form {
-        implicit.resolution = implicit.resolution.min(PICTURE_RESOLUTION);
-    }
-    spec
+    crate::view::picture::picture_spec(&preset.spec)
 }
 
 /// The link a preset's picture is grown from.
@@ -139,8 +130,8 @@ impl Pictures {
         }
     }
 
-    /// Keeps the pictures' graphics device and draws the shells waiting for it. After a loss,
-    /// the pictures drawn just before it are grown and drawn again on the next device.
+    /// Keeps the pictures' graphics device and draws the next shell waiting for it. After a
+    /// loss, the pictures drawn just before it are grown and drawn again on the next device.
     pub fn work(&mut self, workers: &mut Workers) {
         if self.viewer.survive() != Device::Ready {
             while let Some((preset, _)) = self.lately.pop_front() {
@@ -152,27 +143,30 @@ impl Pictures {
         while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
             self.lately.pop_front();
         }
-        while let Some((preset, whole)) = self.waiting.pop() {
-            self.viewer.show_whole(preset, &picture_spec(preset), whole);
-            let picture = self.viewer.picture();
-            if self.viewer.survive() != Device::Ready {
-                // Lost while drawing: the picture may be blank; it is drawn on the next device.
-                self.ask_again(preset, workers);
-                return;
-            }
-            let Ok(url) = picture else {
-                continue;
-            };
-            self.lately.push_back((preset, now()));
-            let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
-            let image = super::page::document()
-                .query_selector(&selector)
-                .ok()
-                .flatten()
-                .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
-            if let Some(img) = image {
-                img.set_src(&url);
-            }
+        // One picture a frame: reading a picture back waits for the GPU to draw it, and the
+        // page answers the user between two.
+        let Some((preset, whole)) = self.waiting.pop() else {
+            return;
+        };
+        self.viewer.show_whole(preset, &picture_spec(preset), whole);
+        let picture = self.viewer.picture();
+        if self.viewer.survive() != Device::Ready {
+            // Lost while drawing: the picture may be blank; it is drawn on the next device.
+            self.ask_again(preset, workers);
+            return;
+        }
+        let Ok(url) = picture else {
+            return;
+        };
+        self.lately.push_back((preset, now()));
+        let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
+        let image = super::page::document()
+            .query_selector(&selector)
+            .ok()
+            .flatten()
+            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+        if let Some(img) = image {
+            img.set_src(&url);
         }
     }
 

@@ -7,7 +7,12 @@
 // and with 1 and W workers. W is the pool this
 // machine gets (`navigator.hardwareConcurrency − 1`, at least 1) and 2 besides, so that the
 // sharing shows even on a 2-core machine. Prints figures; asserts nothing.
-import { open, session, waitForState } from './browser.mjs';
+//
+// `node tests/page/bench-workers.mjs gallery [BASELINE_WWW]` times the gallery alone, on the
+// page's thread, with 1 worker and with the default pool, beside the same on another build's
+// www (say main's) served alongside, alternately in the same run.
+import { launch, open, session, waitForState } from './browser.mjs';
+import { serve } from './serve.mjs';
 
 /** Wraps requestAnimationFrame before the page loads, to time each frame's callback while the shell grows. */
 function timeFrames() {
@@ -108,11 +113,14 @@ async function murexFinish(browser, base, workers) {
   return seconds;
 }
 
-/** Seconds from opening the gallery to every picture drawn. */
+/**
+ * Seconds from opening the gallery to every picture drawn and the page saying so (with
+ * `workers` undefined, the default pool).
+ */
 async function gallery(browser, base, workers) {
   const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
   const start = Date.now();
-  await page.goto(`${base}?workers=${workers}`);
+  await page.goto(workers === undefined ? base : `${base}?workers=${workers}`);
   await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 600_000 });
   const seconds = (Date.now() - start) / 1000;
   await page.close();
@@ -165,6 +173,32 @@ export async function benchWorkers() {
   }
 }
 
+/** The gallery's figures of this build's www beside those of `baseline` (a www directory). */
+export async function benchGallery(baseline) {
+  const roots = { this: new URL('../../www/', import.meta.url).pathname };
+  if (baseline) roots.baseline = baseline;
+  const servers = await Promise.all(Object.values(roots).map((root) => serve(root)));
+  const bases = servers.map((s) => `http://127.0.0.1:${s.address().port}/`);
+  const browser = await launch('WebGL2');
+  try {
+    console.log(`gallery (Chromium ${browser.version()})`);
+    for (const [label, workers] of [["page's thread", 0], ['1 worker', 1], ['default pool', undefined]]) {
+      const figures = [];
+      for (const [i, name] of Object.keys(roots).entries()) {
+        figures.push(`${name} ${(await gallery(browser, bases[i], workers)).toFixed(1)} s`);
+      }
+      console.log(`all gallery pictures, ${label}: ${figures.join(', ')}`);
+    }
+  } finally {
+    await browser.close();
+    servers.forEach((s) => s.close());
+  }
+}
+
 if (import.meta.url === `file://${process.argv[1]}`) {
-  await benchWorkers();
+  if (process.argv[2] === 'gallery') {
+    await benchGallery(process.argv[3]);
+  } else {
+    await benchWorkers();
+  }
 }
