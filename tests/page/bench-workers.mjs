@@ -12,7 +12,7 @@
 // `node tests/page/bench-workers.mjs frames [DIR …]` gives only the frame figures, for each
 // directory holding a built page (`www` unless given; say, another commit's `www` beside
 // this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
-// frames, 100 unless set, each) in one browser.
+// frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser.
 import { launch, open, session, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
@@ -222,7 +222,7 @@ export async function benchWorkers() {
  * the same browser: on a shared machine the load changes within minutes, and turns spread it
  * over every build alike.
  */
-export async function benchFrames(roots, rounds = 2, least = 100) {
+export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]) {
   const servers = await Promise.all(roots.map((root) => serve(root)));
   const browser = await launch('WebGL2');
   try {
@@ -230,7 +230,7 @@ export async function benchFrames(roots, rounds = 2, least = 100) {
     const all = new Map();
     for (let round = 0; round < rounds; round += 1) {
       for (const [i, server] of servers.entries()) {
-        for (const workers of [0, 1]) {
+        for (const workers of sizes) {
           const f = await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, workers, least);
           console.log(`round ${round + 1}, ${roots[i]}, workers=${workers}: ${frameLine(f)}`);
           const key = `${roots[i]}, workers=${workers}`;
@@ -253,7 +253,8 @@ if (import.meta.url === `file://${process.argv[1]}`) {
   if (process.argv[2] === 'frames') {
     const roots = process.argv.slice(3);
     await benchFrames(roots.length > 0 ? roots : [new URL('../../www/', import.meta.url).pathname],
-      Number(process.env.ROUNDS ?? 2), Number(process.env.FRAMES ?? 100));
+      Number(process.env.ROUNDS ?? 2), Number(process.env.FRAMES ?? 100),
+      (process.env.WORKERS ?? '0,1').split(',').map(Number));
   } else {
     await benchWorkers();
   }
