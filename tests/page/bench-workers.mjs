@@ -90,6 +90,8 @@ async function frameScript(browser, base, workers, least = 200, seconds = 600) {
     await page.close();
   }
   return {
+    wall: ms,
+    thread,
     frames: ms.length,
     p50: percentile(ms, 50),
     p99: percentile(ms, 99),
@@ -239,9 +241,11 @@ export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]
       }
     }
     for (const [key, fs] of all) {
-      const mean = (k) => fs.reduce((a, f) => a + f[k], 0) / fs.length;
-      console.log(`${key}: mean over rounds p50 ${mean('p50').toFixed(2)} / p99 ${mean('p99').toFixed(2)} ms wall, `
-        + `p50 ${mean('thread50').toFixed(2)} / p99 ${mean('thread99').toFixed(2)} ms on the thread`);
+      const wall = fs.flatMap((f) => f.wall);
+      const thread = fs.flatMap((f) => f.thread);
+      console.log(`${key}, the rounds' ${wall.length} frames together: p50 ${percentile(wall, 50).toFixed(2)} / `
+        + `p99 ${percentile(wall, 99).toFixed(2)} ms wall, p50 ${percentile(thread, 50).toFixed(2)} / `
+        + `p99 ${percentile(thread, 99).toFixed(2)} ms on the thread`);
     }
   } finally {
     await browser.close();
