@@ -49,6 +49,9 @@ pub struct Advance {
     pub indices: Range<usize>,
     /// Whether the transient edge mesh was rewritten.
     pub edge_changed: bool,
+    /// Of a rewritten edge, the vertices and indices at its start that stayed as they were:
+    /// the GPU keeps them and takes only the rest. (0, 0) when the whole edge is new.
+    pub edge_kept: (usize, usize),
     /// The pattern rows added (their RGBA is [`PatternRun::rgba`] over this range).
     pub rows: Range<usize>,
 }
@@ -240,6 +243,7 @@ impl Generator {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
             edge_changed,
+            edge_kept: (0, 0),
             rows: r0..self.rows_done,
         }
     }
@@ -250,6 +254,7 @@ impl Generator {
             vertices: 0..self.mesh.vertices.len(),
             indices: 0..self.mesh.indices.len(),
             edge_changed: true,
+            edge_kept: (0, 0),
             rows: 0..self.rows_done,
         }
     }
@@ -277,6 +282,7 @@ impl Generator {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
             edge_changed,
+            edge_kept: (0, 0),
             rows: r0..self.rows_done,
         }
     }

@@ -11,13 +11,15 @@ use seashells_core::export::job::Export;
 use seashells_core::export::print_size::PrintSize;
 use seashells_core::export::shell::Shell;
 use seashells_core::generator::Generator;
+use seashells_core::mesh::{Bounds, Surface, Vertex};
 use seashells_core::presets::preset;
 use seashells_core::share::link;
 use seashells_core::share::parameter_map::{Axis, ParameterMap, SIDE};
 use seashells_core::spec::ShellSpec;
 use seashells_core::work::host::{Budget, Host};
 use seashells_core::work::message::{
-    Reply, Request, decode_reply, decode_request, encode_reply, encode_request,
+    Delta, EdgeTail, Progress, Reply, Request, decode_reply, decode_request, encode_reply,
+    encode_request,
 };
 use seashells_core::work::pool::Pool;
 use seashells_core::work::replica::Replica;
@@ -413,4 +415,123 @@ fn a_request_for_a_session_the_worker_does_not_hold_is_refused() {
     assert!(matches!(replies[1], (2, Reply::Refused { session: 9, .. })));
     assert!(matches!(replies[2], (3, Reply::Refused { session: 9, .. })));
     assert!(!host.busy());
+}
+
+/// The bytes of a mesh's vertices and indices, to compare meshes bit for bit.
+fn mesh_bytes(mesh: &seashells_core::mesh::Mesh) -> (Vec<u8>, Vec<u32>) {
+    (
+        bytemuck::cast_slice(&mesh.vertices).to_vec(),
+        mesh.indices.clone(),
+    )
+}
+
+#[test]
+fn an_edge_crossing_as_its_changed_rest_is_the_edge_grown_alone() {
+    // An implicit shell re-meshes a few chunks a step: its edge crosses as the start the page
+    // holds and what follows, and the page's copy is the generator's edge at every step.
+    let (link, spec) = link_of("implicit-whorl", "&form.resolution=48");
+    let mut host = Host::default();
+    host.push(1, Request::Load { session: 1, link });
+    let mut replica = Replica::new(1);
+    let (mut changes, mut kept) = (0, 0);
+    while !replica.is_done() {
+        for (ticket, reply) in host.work(&clock(), Budget::Unbounded) {
+            let (_, reply) = decode_reply(&encode_reply(ticket, &reply)).expect("reads back");
+            let advance = match reply {
+                Reply::Loaded { shell, delta, .. } => replica.loaded(shell, delta),
+                Reply::Grew { delta, .. } => replica.apply(delta),
+                other => panic!("unexpected {other:?}"),
+            }
+            .expect("in step");
+            if advance.edge_changed {
+                changes += 1;
+                kept += usize::from(advance.edge_kept.0 > 0);
+                let mut alone = Generator::new(&spec).unwrap();
+                alone.catch_up(replica.rows_done(), replica.steps_done());
+                assert_eq!(
+                    mesh_bytes(replica.edge()),
+                    mesh_bytes(alone.edge()),
+                    "row {}",
+                    replica.rows_done()
+                );
+            }
+        }
+        host.push(
+            2,
+            Request::Grow {
+                session: 1,
+                rows: 9,
+                budget_ms: 1e9,
+            },
+        );
+    }
+    assert!(changes >= 4, "{changes} edges");
+    assert!(kept >= 1, "no edge kept its start ({changes} edges)");
+}
+
+/// A delta that sets the edge to `tail` and adds nothing else.
+fn edge_delta(tail: EdgeTail) -> Delta {
+    Delta {
+        rows: 0..0,
+        rgba: Vec::new(),
+        first_vertex: 0,
+        vertices: Vec::new(),
+        first_index: 0,
+        indices: Vec::new(),
+        edge: Some(tail),
+        grown: Bounds::EMPTY,
+        progress: Progress::default(),
+    }
+}
+
+#[test]
+fn an_edge_rest_that_does_not_fit_what_the_page_holds_is_refused_by_its_key() {
+    let vertex = Vertex::new(
+        glam::DVec3::ZERO,
+        glam::DVec3::Z,
+        [0.0, 0.0],
+        Surface::Outer,
+    );
+    let triangle = EdgeTail {
+        vertices: vec![vertex; 3],
+        indices: vec![0, 1, 2],
+        ..EdgeTail::default()
+    };
+    // Indices beyond the whole edge's vertices cannot be read.
+    let beyond = EdgeTail {
+        kept_vertices: 1,
+        indices: vec![0, 1, 4],
+        ..triangle.clone()
+    };
+    let bytes = encode_reply(
+        1,
+        &Reply::Grew {
+            session: 1,
+            delta: edge_delta(beyond),
+        },
+    );
+    assert_eq!(decode_reply(&bytes).unwrap_err().key, "edge indices");
+    // A start kept that the page does not hold is out of step, and changes nothing.
+    let mut replica = Replica::new(1);
+    let ahead = EdgeTail {
+        kept_vertices: 5,
+        ..triangle.clone()
+    };
+    assert_eq!(
+        replica.apply(edge_delta(ahead)).unwrap_err().key,
+        "edge vertices"
+    );
+    assert!(replica.edge().vertices.is_empty());
+    // What fits is taken: the kept start, then the rest.
+    replica.apply(edge_delta(triangle)).expect("in step");
+    let rest = EdgeTail {
+        kept_vertices: 3,
+        kept_indices: 3,
+        vertices: vec![vertex],
+        indices: vec![1, 2, 3],
+    };
+    let advance = replica.apply(edge_delta(rest)).expect("in step");
+    assert_eq!(advance.edge_kept, (3, 3));
+    assert_eq!(replica.edge().vertices.len(), 4);
+    assert_eq!(replica.edge().indices, vec![0, 1, 2, 1, 2, 3]);
 }

@@ -314,8 +314,8 @@ impl Renderer {
         });
     }
 
-    /// Uploads what the generator just added: new mesh ranges, the edge, new pattern rows
-    /// (`rgba` holds the rows of `advance.rows`).
+    /// Uploads what the generator just added: new mesh ranges, the edge from the start it kept,
+    /// new pattern rows (`rgba` holds the rows of `advance.rows`).
     pub fn upload(&mut self, mesh: &Mesh, edge: &Mesh, advance: &Advance, rgba: &[u8]) {
         let Some(shell) = self.shell.as_mut() else {
             return;
@@ -328,7 +328,9 @@ impl Renderer {
             advance.indices.clone(),
         );
         if advance.edge_changed {
-            shell.edge.replace(&self.gpu.device, &self.gpu.queue, edge);
+            shell
+                .edge
+                .rewrite_from(&self.gpu.device, &self.gpu.queue, edge, advance.edge_kept);
         }
         if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
             pattern.write_rows(&self.gpu.queue, advance.rows.start as u32, rgba);

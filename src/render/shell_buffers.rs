@@ -1,4 +1,5 @@
-//! GPU buffers sized once for the fully grown shell; each frame writes only what it adds. Where
+//! GPU buffers sized once for the fully grown shell; each frame writes only what it adds (of a
+//! rewritten edge, what follows the start it kept). Where
 //! a shape could only estimate its final size (an implicit surface), the buffers are
 //! reallocated, half as large again as needed, the first time a mesh outgrows them.
 
@@ -80,14 +81,26 @@ impl MeshBuffers {
         }
     }
 
-    /// Replaces the whole content (for the transient edge mesh).
+    /// Replaces the whole content (for the ground's quad).
     pub fn replace(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, mesh: &Mesh) {
+        self.rewrite_from(device, queue, mesh, (0, 0));
+    }
+
+    /// Takes `mesh` as the whole content, the first `kept` (vertices, indices) being as the
+    /// buffers hold them already: only the rest is written (for the transient edge mesh).
+    pub fn rewrite_from(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        mesh: &Mesh,
+        kept: (usize, usize),
+    ) {
         self.write(
             device,
             queue,
             mesh,
-            0..mesh.vertices.len(),
-            0..mesh.indices.len(),
+            kept.0..mesh.vertices.len(),
+            kept.1..mesh.indices.len(),
         );
         self.index_count = mesh.indices.len() as u32;
     }

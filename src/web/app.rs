@@ -67,6 +67,8 @@ pub struct App {
     support: Rc<RefCell<Support>>,
     /// A video being recorded.
     recording: Option<Recording>,
+    /// The rows done and in all that the progress bar and its text show.
+    progress_shown: (usize, usize),
 }
 
 fn say(problems: &[Problem]) {
@@ -112,6 +114,7 @@ impl App {
             in_gallery: false,
             url_due: None,
             recoveries: 0,
+            progress_shown: (0, 0),
             support: Rc::new(RefCell::new(Support::Checking)),
             recording: None,
         }
@@ -653,13 +656,16 @@ impl App {
         signal("rows", &done.to_string());
         let whole = replica.is_done() && g.settled();
         signal("growth", if whole { "done" } else { "growing" });
-        if let Some(bar) =
-            element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
-        {
-            bar.set_max(total as f64);
-            bar.set_value(done as f64);
+        if self.progress_shown != (done, total) {
+            self.progress_shown = (done, total);
+            if let Some(bar) =
+                element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
+            {
+                bar.set_max(total as f64);
+                bar.set_value(done as f64);
+            }
+            set_text("progress-text", &format!("{done} of {total} rows"));
         }
-        set_text("progress-text", &format!("{done} of {total} rows"));
         self.downloads.show_sizes(&self.viewer);
         if let Some(failure) = replica.failure() {
             show_message(failure);

@@ -1,6 +1,8 @@
 //! The page around the canvas: status text, messages in words, and the data attributes on
 //! <body> that tests and scripts read (`data-state`, `data-backend`, `data-rows`).
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use wasm_bindgen::JsCast;
 use web_sys::{Document, HtmlElement};
 
@@ -23,12 +25,23 @@ pub fn element(id: &str) -> Option<HtmlElement> {
     document().get_element_by_id(id)?.dyn_into().ok()
 }
 
+thread_local! {
+    /// What each `data-<key>` was last set to by [`signal`] (only it writes them).
+    static SIGNALLED: RefCell<HashMap<String, String>> = RefCell::default();
+}
+
 /// Sets `data-<key>` on <body>; `key` is in the dataset's camelCase (`patternHash` sets
-/// `data-pattern-hash`).
+/// `data-pattern-hash`). A value the attribute has already is not written again: most are set
+/// every frame, and each write is a call into the page and a change of the document.
 pub fn signal(key: &str, value: &str) {
+    let unchanged = SIGNALLED.with_borrow(|s| s.get(key).is_some_and(|v| v == value));
+    if unchanged {
+        return;
+    }
     if let Some(body) = document().body() {
         // A dataset write fails only for keys with a hyphen, which this page never uses.
         let _ = body.dataset().set(key, value);
+        SIGNALLED.with_borrow_mut(|s| s.insert(key.to_string(), value.to_string()));
     }
 }
 

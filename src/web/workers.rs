@@ -19,6 +19,7 @@ use super::page::{now, set_text, signal};
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
 use crate::work::pool::{Pool, SESSIONS, size_for};
+use crate::work::wire::WireError;
 use js_sys::{Array, Uint8Array};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -26,9 +27,10 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
-/// What a worker's events leave for the next frame: a reply's bytes, or its death.
+/// What a worker's events leave for the next frame: a reply, read from its bytes when it came
+/// (in the message's own task, not in the frame), or its death.
 enum Event {
-    Reply(usize, u32, Vec<u8>),
+    Reply(usize, u32, Box<Result<(u32, Reply), WireError>>),
     Died(usize, u32, String),
 }
 
@@ -133,8 +135,8 @@ fn spawn(slot: usize, generation: u32, inbox: &Inbox, name: &str) -> Result<Slot
     let worker = Worker::new_with_options("./worker.js", &options)?;
     let to = Rc::clone(inbox);
     let on_message = Closure::<dyn FnMut(MessageEvent)>::new(move |e: MessageEvent| {
-        let bytes = Uint8Array::new(&e.data()).to_vec();
-        to.borrow_mut().push(Event::Reply(slot, generation, bytes));
+        let reply = Box::new(decode_reply(&Uint8Array::new(&e.data()).to_vec()));
+        to.borrow_mut().push(Event::Reply(slot, generation, reply));
     });
     let to = Rc::clone(inbox);
     let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(move |e: ErrorEvent| {
@@ -290,11 +292,11 @@ impl Workers {
                 let mut dead = Vec::new();
                 for event in events {
                     match event {
-                        Event::Reply(slot, generation, bytes) => {
+                        Event::Reply(slot, generation, reply) => {
                             if slots[slot].generation != generation {
                                 continue;
                             }
-                            let Ok((ticket, reply)) = decode_reply(&bytes) else {
+                            let Ok((ticket, reply)) = *reply else {
                                 dead.push((slot, "its reply could not be read".to_string()));
                                 continue;
                             };

@@ -4,7 +4,7 @@
 //! once. The same host runs in each Web Worker, and on the page's own thread where workers
 //! cannot start, where it works a frame's budget at a time; natively, the tests run it.
 
-use super::message::{Delta, Progress, Reply, Request, ShellInfo, WholeShell};
+use super::message::{Delta, EdgeTail, Progress, Reply, Request, ShellInfo, WholeShell};
 use crate::blobtree::polygonize::ChunkWork;
 use crate::forms::{PieceMaker, piece_maker};
 use crate::generator::{Advance, Generator, within};
@@ -33,6 +33,9 @@ struct Growth {
     grown: Bounds,
     /// The longest growth step lately (see [`within`]).
     longest: f64,
+    /// The edge as the page holds it from this host's replies (empty before the first, and on
+    /// a host that regrew the shell: its first edge then crosses whole).
+    sent_edge: Mesh,
 }
 
 /// A job under way, kept between calls when the budget runs out.
@@ -98,10 +101,13 @@ impl Growth {
         let mesh = generator.mesh();
         self.grown
             .include_vertices(&mesh.vertices[advance.vertices.clone()]);
-        let edge = advance.edge_changed.then(|| generator.edge().clone());
-        if let Some(edge) = &edge {
+        let edge = advance.edge_changed.then(|| {
+            let edge = generator.edge();
             self.grown.include_vertices(&edge.vertices);
-        }
+            let tail = EdgeTail::between(&self.sent_edge, edge);
+            self.sent_edge.clone_from(edge);
+            tail
+        });
         let rgba = generator.pattern().map_or(Vec::new(), |p| {
             let row = p.cells() * 4;
             p.rgba()[advance.rows.start * row..advance.rows.end * row].to_vec()
@@ -179,6 +185,7 @@ impl Host {
                         generator,
                         grown: Bounds::EMPTY,
                         longest: 0.0,
+                        sent_edge: Mesh::default(),
                     };
                     let delta = growth.delta(&growth.generator.grown());
                     let shell = shell_info(&growth.generator);
@@ -225,6 +232,7 @@ impl Host {
                         vertices: v0..g.generator.mesh().vertices.len(),
                         indices: i0..g.generator.mesh().indices.len(),
                         edge_changed: true,
+                        edge_kept: (0, 0),
                         rows: r0..g.generator.rows_done(),
                     };
                     let mut delta = g.delta(&advance);
@@ -265,6 +273,7 @@ impl Host {
                         generator,
                         grown,
                         longest: 0.0,
+                        sent_edge: Mesh::default(),
                     });
                     reply
                 }

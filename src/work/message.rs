@@ -96,11 +96,51 @@ pub struct Delta {
     /// The indices added to the permanent mesh, the first at `first_index`.
     pub first_index: u32,
     pub indices: Vec<u32>,
-    /// The new transient edge mesh, when it changed.
-    pub edge: Option<Mesh>,
+    /// The new transient edge mesh, when it changed: what differs from the edge sent before.
+    pub edge: Option<EdgeTail>,
     /// Bounds of everything grown so far, edge included.
     pub grown: Bounds,
     pub progress: Progress,
+}
+
+/// A new transient edge mesh as the start of the one sent before and a new rest: an implicit
+/// shell re-meshes a few of its chunks at a time and keeps the others as they were, so that
+/// only what follows the first chunk that changed crosses to the page and goes to the GPU.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct EdgeTail {
+    /// Vertices at the start of the edge sent before that stay as they were.
+    pub kept_vertices: u32,
+    /// Indices at the start of the edge sent before that stay as they were.
+    pub kept_indices: u32,
+    /// The vertices that follow them.
+    pub vertices: Vec<Vertex>,
+    /// The indices that follow them (numbering the vertices of the whole edge).
+    pub indices: Vec<u32>,
+}
+
+impl EdgeTail {
+    /// `edge` as what differs from `before`: the longest start the two share, and the rest.
+    pub fn between(before: &Mesh, edge: &Mesh) -> Self {
+        let same = |a: &Vertex, b: &Vertex| bytemuck::bytes_of(a) == bytemuck::bytes_of(b);
+        let kept_vertices = before
+            .vertices
+            .iter()
+            .zip(&edge.vertices)
+            .take_while(|(a, b)| same(a, b))
+            .count();
+        let kept_indices = before
+            .indices
+            .iter()
+            .zip(&edge.indices)
+            .take_while(|(a, b)| a == b)
+            .count();
+        Self {
+            kept_vertices: kept_vertices as u32,
+            kept_indices: kept_indices as u32,
+            vertices: edge.vertices[kept_vertices..].to_vec(),
+            indices: edge.indices[kept_indices..].to_vec(),
+        }
+    }
 }
 
 /// A shell grown whole: its mesh (edge included), its pattern, and what it is.
@@ -399,7 +439,10 @@ fn write_delta(w: &mut Writer, d: &Delta) {
     w.u32s(&d.indices);
     w.bool(d.edge.is_some());
     if let Some(edge) = &d.edge {
-        w.mesh(edge);
+        w.u32(edge.kept_vertices);
+        w.u32(edge.kept_indices);
+        w.vertices(&edge.vertices);
+        w.u32s(&edge.indices);
     }
     w.bounds(&d.grown);
     let p = &d.progress;
@@ -421,7 +464,7 @@ fn read_delta(r: &mut Reader) -> Result<Delta, WireError> {
         first_index: r.u32("first index")?,
         indices: r.u32s("indices")?,
         edge: if r.bool("edge")? {
-            Some(r.mesh("edge")?)
+            Some(read_edge_tail(r)?)
         } else {
             None
         },
@@ -435,6 +478,28 @@ fn read_delta(r: &mut Reader) -> Result<Delta, WireError> {
             pattern_hash: read_option_u64(r, "pattern hash")?,
             mesh_hash: read_option_u64(r, "mesh hash")?,
         },
+    })
+}
+
+/// An edge's new rest, whose indices all name a vertex of the whole edge.
+fn read_edge_tail(r: &mut Reader) -> Result<EdgeTail, WireError> {
+    let kept_vertices = r.u32("edge kept vertices")?;
+    let kept_indices = r.u32("edge kept indices")?;
+    let vertices = r.vertices("edge vertices")?;
+    let at = r.at();
+    let indices = r.u32s("edge indices")?;
+    let count = kept_vertices as usize + vertices.len();
+    if indices.iter().any(|&i| i as usize >= count) {
+        return Err(WireError {
+            key: "edge indices",
+            at,
+        });
+    }
+    Ok(EdgeTail {
+        kept_vertices,
+        kept_indices,
+        vertices,
+        indices,
     })
 }
 

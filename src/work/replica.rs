@@ -131,14 +131,40 @@ impl Replica {
         check("vertices", self.mesh.vertices.len(), delta.first_vertex)?;
         check("indices", self.mesh.indices.len(), delta.first_index)?;
         check("pattern rows", self.rows_grown, delta.rows.start)?;
+        // An edge's kept start is one the page holds.
+        if let Some(tail) = &delta.edge {
+            let within = |key, held: usize, kept: u32| {
+                if kept as usize <= held {
+                    Ok(())
+                } else {
+                    Err(OutOfStep {
+                        key,
+                        expected: held,
+                        got: kept as usize,
+                    })
+                }
+            };
+            within(
+                "edge vertices",
+                self.edge.vertices.len(),
+                tail.kept_vertices,
+            )?;
+            within("edge indices", self.edge.indices.len(), tail.kept_indices)?;
+        }
         let (v0, i0) = (self.mesh.vertices.len(), self.mesh.indices.len());
         self.mesh.vertices.extend_from_slice(&delta.vertices);
         self.mesh.indices.extend_from_slice(&delta.indices);
         self.rgba.extend_from_slice(&delta.rgba);
         self.rows_grown = delta.rows.end as usize;
         let edge_changed = delta.edge.is_some();
-        if let Some(edge) = delta.edge {
-            self.edge = edge;
+        let mut edge_kept = (0, 0);
+        if let Some(tail) = delta.edge {
+            let kept = (tail.kept_vertices as usize, tail.kept_indices as usize);
+            self.edge.vertices.truncate(kept.0);
+            self.edge.indices.truncate(kept.1);
+            self.edge.vertices.extend_from_slice(&tail.vertices);
+            self.edge.indices.extend_from_slice(&tail.indices);
+            edge_kept = kept;
         }
         self.grown = delta.grown;
         self.progress = delta.progress;
@@ -146,6 +172,7 @@ impl Replica {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
             edge_changed,
+            edge_kept,
             rows: delta.rows.start as usize..delta.rows.end as usize,
         })
     }
@@ -191,6 +218,7 @@ impl Replica {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
             edge_changed: false,
+            edge_kept: (0, 0),
             rows: self.rows_grown..self.rows_grown,
         })
     }
@@ -201,6 +229,7 @@ impl Replica {
             vertices: 0..self.mesh.vertices.len(),
             indices: 0..self.mesh.indices.len(),
             edge_changed: true,
+            edge_kept: (0, 0),
             rows: 0..self.rows_grown,
         }
     }

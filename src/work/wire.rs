@@ -112,6 +112,11 @@ impl<'a> Reader<'a> {
         Self { bytes, at: 0 }
     }
 
+    /// The byte the next read starts at.
+    pub fn at(&self) -> usize {
+        self.at
+    }
+
     /// Fails unless every byte was read: a message has nothing after its end.
     pub fn end(&self) -> Result<(), WireError> {
         if self.at == self.bytes.len() {

@@ -2,7 +2,8 @@
 // run: what one core does (the pattern solvers' rates, one preset per model, and the Murex
 // polygonized whole at 128³) on a worker's thread and on the page's; the page's own script
 // time per frame while the Murex grows (50th and 99th percentiles over at least 200 frames
-// of growth; the page on its own thread, `workers=0`, is how the page worked before); the
+// of growth, each frame's wall time and its thread's processor time from a trace; the page on
+// its own thread, `workers=0`, is how the page worked before); the
 // Murex finished at 256³ with 1 and W workers; and every gallery picture on the page's thread
 // and with 1 and W workers. W is the pool this
 // machine gets (`navigator.hardwareConcurrency − 1`, at least 1) and 2 besides, so that the
@@ -11,6 +12,10 @@
 // `node tests/page/bench-workers.mjs gallery [BASELINE_WWW]` times the gallery alone, on the
 // page's thread, with 1 worker and with the default pool, beside the same on another build's
 // www (say main's) served alongside, alternately in the same run.
+// `node tests/page/bench-workers.mjs frames [DIR …]` gives only the frame figures, for each
+// directory holding a built page (`www` unless given; say, another commit's `www` beside
+// this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
+// frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser.
 import { launch, open, session, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
@@ -35,12 +40,39 @@ const percentile = (xs, p) => {
 };
 
 /**
- * Script milliseconds per frame (p50, p99) while the Murex grows: at least `least` frames
- * timed while `data-state` says growing (the shell is opened again if it is grown before), at
- * most `seconds` of growth in all.
+ * The page's main-thread frames while the Murex grows, from a trace of `page`: each
+ * `requestAnimationFrame` callback's wall time and the time its thread was on a processor
+ * (the trace's thread clock), in milliseconds. Wall time also counts the waits when the
+ * processor went to another process (on two cores: the worker, the GPU process's software
+ * rendering, other programs) and any wait for the GPU process; thread time is the script's own.
+ */
+async function traceFrames(page, during) {
+  const cdp = await page.context().newCDPSession(page);
+  const events = [];
+  cdp.on('Tracing.dataCollected', (e) => events.push(...e.value));
+  const complete = new Promise((resolve) => cdp.once('Tracing.tracingComplete', resolve));
+  await cdp.send('Tracing.start', {
+    traceConfig: { includedCategories: ['devtools.timeline'], recordMode: 'recordAsMuchAsPossible' },
+    transferMode: 'ReportEvents',
+  });
+  await during();
+  await cdp.send('Tracing.end');
+  await complete;
+  await cdp.detach();
+  return events
+    .filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined)
+    .map((e) => ({ wall: e.dur / 1000, thread: e.tdur / 1000 }));
+}
+
+/**
+ * Script milliseconds per frame (p50, p99) while the Murex grows, served from `base`: at least
+ * `least` frames timed while `data-state` says growing (the shell is opened again if it is
+ * grown before), at most `seconds` of growth in all. `wall` is each callback's wall time as a
+ * wrapper in the page times it; `thread` is its thread's processor time from a trace.
  */
 async function frameScript(browser, base, workers, least = 200, seconds = 600) {
   const ms = [];
+  const thread = [];
   let rows = 0;
   const started = Date.now();
   while (ms.length < least && Date.now() - started < seconds * 1000) {
@@ -48,15 +80,34 @@ async function frameScript(browser, base, workers, least = 200, seconds = 600) {
     await page.addInitScript(timeFrames);
     await page.goto(`${base}?workers=${workers}#v=1&preset=murex-cabritii`);
     await waitForState(page, ['growing'], 300_000);
-    await page.evaluate(() => { window.__frameMs = []; });
-    await page.waitForFunction((n) => document.body.dataset.state !== 'growing' || window.__frameMs.length >= n,
-      least - ms.length, { timeout: seconds * 1000, polling: 500 }).catch(() => {});
-    ms.push(...(await page.evaluate(() => window.__frameMs)));
+    const traced = await traceFrames(page, async () => {
+      await page.evaluate(() => { window.__frameMs = []; });
+      await page.waitForFunction((n) => document.body.dataset.state !== 'growing' || window.__frameMs.length >= n,
+        least - ms.length, { timeout: seconds * 1000, polling: 500 }).catch(() => {});
+    });
+    const timed = await page.evaluate(() => window.__frameMs);
+    ms.push(...timed);
+    // The trace's last frames, as many as the wrapper timed while the shell grew.
+    thread.push(...traced.slice(-timed.length).map((f) => f.thread));
     rows += Number(await page.evaluate(() => document.body.dataset.rows));
     await page.close();
   }
-  return { frames: ms.length, p50: percentile(ms, 50), p99: percentile(ms, 99), rows, seconds: (Date.now() - started) / 1000 };
+  return {
+    wall: ms,
+    thread,
+    frames: ms.length,
+    p50: percentile(ms, 50),
+    p99: percentile(ms, 99),
+    thread50: percentile(thread, 50),
+    thread99: percentile(thread, 99),
+    rows,
+    seconds: (Date.now() - started) / 1000,
+  };
 }
+
+const frameLine = (f) => `p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms wall; `
+  + `p50 ${f.thread50.toFixed(2)} ms, p99 ${f.thread99.toFixed(2)} ms on the thread, over ${f.frames} frames `
+  + `(${f.rows} rows grown in ${f.seconds.toFixed(0)} s)`;
 
 /** The benchmark's figures of one core (pattern rates, the Murex polygonized) on the page's thread and on a worker. */
 async function oneCore(browser, base) {
@@ -147,7 +198,7 @@ export async function benchWorkers() {
     }
     for (const workers of [0, 1]) {
       const f = await frameScript(browser, base, workers);
-      console.log(`Murex growing, page script per frame, workers=${workers}: p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms over ${f.frames} frames (${f.rows} rows grown in ${f.seconds.toFixed(0)} s)`);
+      console.log(`Murex growing, page script per frame, workers=${workers}: ${frameLine(f)}`);
     }
     // The worker's growth budget per request (`grow-budget=N`): fewer round trips against a
     // change of value waiting behind the growth under way for as long.
@@ -195,9 +246,49 @@ export async function benchGallery(baseline) {
   }
 }
 
+/**
+ * Only the frame figures, for each of `roots` (directories holding a built page: `www` and,
+ * say, another commit's build) served side by side and measured in turn, `rounds` times, in
+ * the same browser: on a shared machine the load changes within minutes, and turns spread it
+ * over every build alike.
+ */
+export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]) {
+  const servers = await Promise.all(roots.map((root) => serve(root)));
+  const browser = await launch('WebGL2');
+  try {
+    console.log(`frames (Chromium ${browser.version()}), ${rounds} rounds of ${least} frames`);
+    const all = new Map();
+    for (let round = 0; round < rounds; round += 1) {
+      for (const [i, server] of servers.entries()) {
+        for (const workers of sizes) {
+          const f = await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, workers, least);
+          console.log(`round ${round + 1}, ${roots[i]}, workers=${workers}: ${frameLine(f)}`);
+          const key = `${roots[i]}, workers=${workers}`;
+          all.set(key, [...(all.get(key) ?? []), f]);
+        }
+      }
+    }
+    for (const [key, fs] of all) {
+      const wall = fs.flatMap((f) => f.wall);
+      const thread = fs.flatMap((f) => f.thread);
+      console.log(`${key}, the rounds' ${wall.length} frames together: p50 ${percentile(wall, 50).toFixed(2)} / `
+        + `p99 ${percentile(wall, 99).toFixed(2)} ms wall, p50 ${percentile(thread, 50).toFixed(2)} / `
+        + `p99 ${percentile(thread, 99).toFixed(2)} ms on the thread`);
+    }
+  } finally {
+    await browser.close();
+    for (const server of servers) server.close();
+  }
+}
+
 if (import.meta.url === `file://${process.argv[1]}`) {
   if (process.argv[2] === 'gallery') {
     await benchGallery(process.argv[3]);
+  } else if (process.argv[2] === 'frames') {
+    const roots = process.argv.slice(3);
+    await benchFrames(roots.length > 0 ? roots : [new URL('../../www/', import.meta.url).pathname],
+      Number(process.env.ROUNDS ?? 2), Number(process.env.FRAMES ?? 100),
+      (process.env.WORKERS ?? '0,1').split(',').map(Number));
   } else {
     await benchWorkers();
   }
