@@ -32,6 +32,15 @@ try {
     for (const e of document.querySelectorAll('body *')) e.style.visibility = 'hidden';
     document.getElementById('shell').style.visibility = 'visible';
   });
+  // The view may still change after `grown` (the finished shell's last reply, the camera
+  // settling on its framing): wait for two pictures alike before turning it.
+  let last;
+  for (let i = 0; i < 40; i++) {
+    const now = await canvas.screenshot();
+    if (last && now.equals(last)) break;
+    last = now;
+    await page.waitForTimeout(500);
+  }
   // Level: a drag up by a fraction f of the view's height lowers the camera by f·π radians;
   // the first view is raised by 0.2 (src/view/camera.rs `DEFAULT_PITCH`).
   await page.mouse.move(x, y);
@@ -66,7 +75,16 @@ try {
     </style><h1>${title}</h1><main>${cells}</main>`);
   await sheet.bringToFront();
   const file = `${dir}/four-sides.png`;
-  await sheet.screenshot({ path: file, fullPage: true });
+  // A second page of a busy headless browser is at times not painted yet: try again.
+  for (let attempt = 1; ; attempt++) {
+    try {
+      await sheet.screenshot({ path: file, fullPage: true });
+      break;
+    } catch (e) {
+      if (attempt === 5) throw e;
+      await sheet.waitForTimeout(1000);
+    }
+  }
   console.log(file);
 } finally {
   await s.close();
