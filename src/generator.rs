@@ -47,11 +47,10 @@ pub struct Advance {
     pub vertices: Range<usize>,
     /// New indices of the permanent mesh.
     pub indices: Range<usize>,
-    /// Whether the transient edge mesh was rewritten.
-    pub edge_changed: bool,
-    /// Of a rewritten edge, the vertices and indices at its start that stayed as they were:
-    /// the GPU keeps them and takes only the rest. (0, 0) when the whole edge is new.
-    pub edge_kept: (usize, usize),
+    /// When the transient edge mesh was rewritten: the vertices and indices at its start that
+    /// stayed as they were (the GPU keeps them and takes only the rest); (0, 0) when the whole
+    /// edge is new.
+    pub edge: Option<(usize, usize)>,
     /// The pattern rows added (their RGBA is [`PatternRun::rgba`] over this range).
     pub rows: Range<usize>,
 }
@@ -242,8 +241,7 @@ impl Generator {
         Advance {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
-            edge_changed,
-            edge_kept: (0, 0),
+            edge: edge_changed.then_some((0, 0)),
             rows: r0..self.rows_done,
         }
     }
@@ -253,8 +251,7 @@ impl Generator {
         Advance {
             vertices: 0..self.mesh.vertices.len(),
             indices: 0..self.mesh.indices.len(),
-            edge_changed: true,
-            edge_kept: (0, 0),
+            edge: Some((0, 0)),
             rows: 0..self.rows_done,
         }
     }
@@ -281,8 +278,7 @@ impl Generator {
         Advance {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
-            edge_changed,
-            edge_kept: (0, 0),
+            edge: edge_changed.then_some((0, 0)),
             rows: r0..self.rows_done,
         }
     }

@@ -207,8 +207,7 @@ async fn the_renderer_paints_the_pattern_in_the_colours_the_exporters_give() {
     let advance = Advance {
         vertices: 0..4,
         indices: 0..6,
-        edge_changed: false,
-        edge_kept: (0, 0),
+        edge: None,
         rows: 0..rows,
     };
     // Drawn with the pattern, or with no pattern and the exporters' colour as its ground.

@@ -84,7 +84,7 @@ fn every_implicit_preset_grows_closed_and_ends_as_it_would_all_at_once() {
         let mut checks = 0;
         while !stepwise.is_done() {
             let advance = stepwise.advance(spec.growth.rows as usize / 5);
-            if advance.edge_changed {
+            if advance.edge.is_some() {
                 closed(stepwise.mesh(), stepwise.edge(), preset.id);
                 checks += 1;
             }

@@ -443,9 +443,9 @@ fn an_edge_crossing_as_its_changed_rest_is_the_edge_grown_alone() {
                 other => panic!("unexpected {other:?}"),
             }
             .expect("in step");
-            if advance.edge_changed {
+            if let Some(edge_kept) = advance.edge {
                 changes += 1;
-                kept += usize::from(advance.edge_kept.0 > 0);
+                kept += usize::from(edge_kept.0 > 0);
                 let mut alone = Generator::new(&spec).unwrap();
                 alone.catch_up(replica.rows_done(), replica.steps_done());
                 assert_eq!(
@@ -531,7 +531,7 @@ fn an_edge_rest_that_does_not_fit_what_the_page_holds_is_refused_by_its_key() {
         indices: vec![1, 2, 3],
     };
     let advance = replica.apply(edge_delta(rest)).expect("in step");
-    assert_eq!(advance.edge_kept, (3, 3));
+    assert_eq!(advance.edge, Some((3, 3)));
     assert_eq!(replica.edge().vertices.len(), 4);
     assert_eq!(replica.edge().indices, vec![0, 1, 2, 1, 2, 3]);
 }

@@ -327,10 +327,10 @@ impl Renderer {
             advance.vertices.clone(),
             advance.indices.clone(),
         );
-        if advance.edge_changed {
+        if let Some(kept) = advance.edge {
             shell
                 .edge
-                .rewrite_from(&self.gpu.device, &self.gpu.queue, edge, advance.edge_kept);
+                .rewrite_from(&self.gpu.device, &self.gpu.queue, edge, kept);
         }
         if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
             pattern.write_rows(&self.gpu.queue, advance.rows.start as u32, rgba);

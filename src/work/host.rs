@@ -101,7 +101,7 @@ impl Growth {
         let mesh = generator.mesh();
         self.grown
             .include_vertices(&mesh.vertices[advance.vertices.clone()]);
-        let edge = advance.edge_changed.then(|| {
+        let edge = advance.edge.map(|_| {
             let edge = generator.edge();
             self.grown.include_vertices(&edge.vertices);
             let tail = EdgeTail::between(&self.sent_edge, edge);
@@ -231,8 +231,7 @@ impl Host {
                     let advance = Advance {
                         vertices: v0..g.generator.mesh().vertices.len(),
                         indices: i0..g.generator.mesh().indices.len(),
-                        edge_changed: true,
-                        edge_kept: (0, 0),
+                        edge: Some((0, 0)),
                         rows: r0..g.generator.rows_done(),
                     };
                     let mut delta = g.delta(&advance);

@@ -156,23 +156,20 @@ impl Replica {
         self.mesh.indices.extend_from_slice(&delta.indices);
         self.rgba.extend_from_slice(&delta.rgba);
         self.rows_grown = delta.rows.end as usize;
-        let edge_changed = delta.edge.is_some();
-        let mut edge_kept = (0, 0);
-        if let Some(tail) = delta.edge {
+        let edge = delta.edge.map(|tail| {
             let kept = (tail.kept_vertices as usize, tail.kept_indices as usize);
             self.edge.vertices.truncate(kept.0);
             self.edge.indices.truncate(kept.1);
             self.edge.vertices.extend_from_slice(&tail.vertices);
             self.edge.indices.extend_from_slice(&tail.indices);
-            edge_kept = kept;
-        }
+            kept
+        });
         self.grown = delta.grown;
         self.progress = delta.progress;
         Ok(Advance {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
-            edge_changed,
-            edge_kept,
+            edge,
             rows: delta.rows.start as usize..delta.rows.end as usize,
         })
     }
@@ -217,8 +214,7 @@ impl Replica {
         Some(Advance {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
-            edge_changed: false,
-            edge_kept: (0, 0),
+            edge: None,
             rows: self.rows_grown..self.rows_grown,
         })
     }
@@ -228,8 +224,7 @@ impl Replica {
         Advance {
             vertices: 0..self.mesh.vertices.len(),
             indices: 0..self.mesh.indices.len(),
-            edge_changed: true,
-            edge_kept: (0, 0),
+            edge: Some((0, 0)),
             rows: 0..self.rows_grown,
         }
     }
