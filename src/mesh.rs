@@ -75,6 +75,13 @@ impl Mesh {
         }
     }
 
+    /// Makes room for `capacity` in all, what the mesh holds included.
+    pub fn reserve_total(&mut self, capacity: Capacity) {
+        let (v, i) = (self.vertices.len(), self.indices.len());
+        self.vertices.reserve(capacity.vertices.saturating_sub(v));
+        self.indices.reserve(capacity.indices.saturating_sub(i));
+    }
+
     /// Index the next pushed vertex will get.
     pub fn next_index(&self) -> u32 {
         self.vertices.len() as u32

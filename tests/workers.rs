@@ -172,7 +172,13 @@ fn grow_and_finish(
         };
         match reply {
             Reply::Loaded { shell, delta, .. } => {
+                let room = shell.capacity;
                 replica.loaded(shell, delta).expect("in step");
+                // The page's copy takes the room the shape expects at once: no frame of
+                // growth copies the whole mesh into a larger one.
+                assert!(replica.mesh().vertices.capacity() >= room.0.vertices);
+                assert!(replica.mesh().indices.capacity() >= room.0.indices);
+                assert!(replica.edge().vertices.capacity() >= room.1.vertices);
             }
             Reply::Grew { delta, .. } => {
                 replica.apply(delta).expect("in step");

@@ -109,8 +109,12 @@ impl Replica {
         self.shell.as_ref()
     }
 
-    /// The shell is built: what it is, and its first delta.
+    /// The shell is built: what it is, and its first delta. The copy's meshes take the room
+    /// the shape expects at once, as the generator's do, so that no frame stops to move the
+    /// whole mesh grown so far into a larger one.
     pub fn loaded(&mut self, shell: ShellInfo, delta: Delta) -> Result<Advance, OutOfStep> {
+        self.mesh.reserve_total(shell.capacity.0);
+        self.edge.reserve_total(shell.capacity.1);
         self.shell = Some(shell);
         self.apply(delta)
     }
