@@ -69,10 +69,9 @@ pub struct Mesh {
 
 impl Mesh {
     pub fn with_capacity(capacity: Capacity) -> Self {
-        Self {
-            vertices: Vec::with_capacity(capacity.vertices),
-            indices: Vec::with_capacity(capacity.indices),
-        }
+        let mut mesh = Self::default();
+        mesh.reserve_total(capacity);
+        mesh
     }
 
     /// Makes room for `capacity` in all, what the mesh holds included.

@@ -16,7 +16,7 @@
 // directory holding a built page (`www` unless given; say, another commit's `www` beside
 // this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
 // frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser.
-import { launch, open, session, waitForState } from './browser.mjs';
+import { launch, open, session, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
 /** Wraps requestAnimationFrame before the page loads, to time each frame's callback while the shell grows. */
@@ -47,19 +47,7 @@ const percentile = (xs, p) => {
  * rendering, other programs) and any wait for the GPU process; thread time is the script's own.
  */
 async function traceFrames(page, during) {
-  const cdp = await page.context().newCDPSession(page);
-  const events = [];
-  cdp.on('Tracing.dataCollected', (e) => events.push(...e.value));
-  const complete = new Promise((resolve) => cdp.once('Tracing.tracingComplete', resolve));
-  await cdp.send('Tracing.start', {
-    traceConfig: { includedCategories: ['devtools.timeline'], recordMode: 'recordAsMuchAsPossible' },
-    transferMode: 'ReportEvents',
-  });
-  await during();
-  await cdp.send('Tracing.end');
-  await complete;
-  await cdp.detach();
-  return events
+  return (await trace(page, ['devtools.timeline'], during))
     .filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined)
     .map((e) => ({ wall: e.dur / 1000, thread: e.tdur / 1000 }));
 }

@@ -37,6 +37,23 @@ export async function open(browser, url, viewport = { width: 900, height: 700 })
   return { page, errors };
 }
 
+/** The Chromium trace events of `categories` recorded on `page` while `during()` runs. */
+export async function trace(page, categories, during) {
+  const cdp = await page.context().newCDPSession(page);
+  const events = [];
+  cdp.on('Tracing.dataCollected', (e) => events.push(...e.value));
+  const complete = new Promise((resolve) => cdp.once('Tracing.tracingComplete', resolve));
+  await cdp.send('Tracing.start', {
+    traceConfig: { includedCategories: categories, recordMode: 'recordAsMuchAsPossible' },
+    transferMode: 'ReportEvents',
+  });
+  await during();
+  await cdp.send('Tracing.end');
+  await complete;
+  await cdp.detach();
+  return events;
+}
+
 /** Waits until <body data-state> is one of `states` (the page's own signal). */
 export async function waitForState(page, states, timeout = 120_000) {
   await page.waitForFunction(

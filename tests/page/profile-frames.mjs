@@ -9,7 +9,7 @@
 // nothing. `node tests/page/profile-frames.mjs WWW [TRACE.json]` records (and keeps the trace);
 // `node tests/page/profile-frames.mjs TRACE.json` reads a trace kept before.
 import { readFile, writeFile } from 'node:fs/promises';
-import { launch, waitForState } from './browser.mjs';
+import { launch, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
 const workers = Number(process.env.WORKERS ?? 1);
@@ -25,23 +25,18 @@ const CATEGORIES = [
 async function record(root, out) {
   const server = await serve(root);
   const browser = await launch('WebGL2');
-  const events = [];
+  let events;
   try {
     const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
     await page.goto(`http://127.0.0.1:${server.address().port}/?workers=${workers}#v=1&preset=murex-cabritii`);
     await waitForState(page, ['growing'], 300_000);
-    const cdp = await page.context().newCDPSession(page);
-    cdp.on('Tracing.dataCollected', (e) => events.push(...e.value));
-    const complete = new Promise((resolve) => cdp.once('Tracing.tracingComplete', resolve));
-    await cdp.send('Tracing.start', {
-      traceConfig: { includedCategories: CATEGORIES, recordMode: 'recordAsMuchAsPossible' },
-      transferMode: 'ReportEvents',
+    let rows0;
+    let state;
+    events = await trace(page, CATEGORIES, async () => {
+      rows0 = await page.evaluate(() => document.body.dataset.rows);
+      await page.waitForTimeout(seconds * 1000);
+      state = await page.evaluate(() => ({ ...document.body.dataset }));
     });
-    const rows0 = await page.evaluate(() => document.body.dataset.rows);
-    await page.waitForTimeout(seconds * 1000);
-    const state = await page.evaluate(() => ({ ...document.body.dataset }));
-    await cdp.send('Tracing.end');
-    await complete;
     console.log(`rows ${rows0} → ${state.rows}, state ${state.state}`);
     await page.close();
   } finally {
