@@ -7,9 +7,8 @@
 //! a second each, printed with its spread, so that a browser's coarse clock cannot quantise
 //! it; frame times are the distribution of single frames, as a user sees them.
 
-use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
-use crate::blobtree::polygonize::{Grid, polygonize};
+use crate::blobtree::polygonize::{Grid, Refinement, polygonize};
 use crate::export::MeshFormat;
 use crate::export::job::Export;
 use crate::export::print_size::PrintSize;
@@ -18,7 +17,9 @@ use crate::forms::murex::whorl::whorl;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;
 use crate::presets::{Preset, presets};
+use crate::spec::ShellSpec;
 use crate::spec::form::Form;
+use crate::spec::form::implicit::ImplicitSpec;
 use crate::spec::pattern::Model;
 use std::fmt::Write;
 
@@ -190,7 +191,7 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
     ) else {
         return Vec::new();
     };
-    let (tree, last) = (&shell.tree, shell.instances - 1);
+    let tree = &shell.tree;
     let mut figures = Vec::new();
     const LATTICE: u32 = 24;
     let (min, size) = (tree.bounds.min, tree.bounds.max - tree.bounds.min);
@@ -210,7 +211,7 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
         spread: Some(spread),
     });
     for resolution in [128, 256] {
-        figures.push(polygonized(now, id, tree, last, resolution));
+        figures.extend(polygonized(now, id, spec, &preset.spec, resolution));
     }
     if let Ok(mut generator) = Generator::new(&preset.spec) {
         let rows = preset.spec.growth.speed.ceil() as usize;
@@ -242,19 +243,38 @@ fn implicit(now: &dyn Fn() -> f64, id: &str) -> Vec<Figure> {
     figures
 }
 
-/// The time to polygonize the whole `tree` of preset `id` (its instances to `last`) at
-/// `resolution`³ on one thread.
-fn polygonized(now: &dyn Fn() -> f64, id: &str, tree: &Node, last: u32, resolution: u32) -> Figure {
-    let grid = Grid::new(&tree.bounds, resolution);
+/// The time to polygonize the whole shell of preset `id` (`spec` its form, `shell` the rest)
+/// built for `resolution`³ on one thread, refined where its thin parts stand as the page
+/// refines it.
+fn polygonized(
+    now: &dyn Fn() -> f64,
+    id: &str,
+    spec: &ImplicitSpec,
+    shell: &ShellSpec,
+    resolution: u32,
+) -> Option<Figure> {
+    let spec = ImplicitSpec {
+        resolution,
+        ..spec.clone()
+    };
+    let built = whorl(
+        &spec,
+        &shell.pattern,
+        shell.seed,
+        shell.growth.rows as usize,
+    )
+    .ok()?;
+    let refinement = Refinement::new(Grid::new(&built.tree.bounds, resolution), &built.fine.boxes);
+    let last = built.instances - 1;
     let (ms, spread) = timed(now, || {
-        std::hint::black_box(polygonize(tree, &grid, last));
+        std::hint::black_box(polygonize(&built.tree, &refinement, last));
     });
-    Figure {
+    Some(Figure {
         what: format!("{id} polygonized at {resolution}³"),
         value: ms,
         unit: "ms",
         spread: Some(spread),
-    }
+    })
 }
 
 /// The presets whose pattern rates [`one_core`] measures: one per model.
@@ -277,15 +297,8 @@ pub fn one_core(now: &dyn Fn() -> f64) -> Vec<Figure> {
     let murex = presets().iter().find(|p| p.id == "murex-cabritii");
     if let Some(preset) = murex
         && let Form::Implicit(spec) = &preset.spec.form
-        && let Ok(shell) = whorl(
-            spec,
-            &preset.spec.pattern,
-            preset.spec.seed,
-            preset.spec.growth.rows as usize,
-        )
     {
-        let last = shell.instances - 1;
-        figures.push(polygonized(now, preset.id, &shell.tree, last, 128));
+        figures.extend(polygonized(now, preset.id, spec, &preset.spec, 128));
     }
     figures
 }

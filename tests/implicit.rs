@@ -10,10 +10,10 @@ use glam::DVec3;
 use proptest::prelude::*;
 use seashells_core::blobtree::blob_tree::{Node, superelliptic};
 use seashells_core::blobtree::falloff::{ISO, support_of};
-use seashells_core::blobtree::polygonize::{Grid, polygonize};
+use seashells_core::blobtree::polygonize::{Grid, MAX_LEVEL, Refinement, polygonize};
 use seashells_core::blobtree::primitive::Primitive;
 use seashells_core::blobtree::texture_blend::Texture;
-use seashells_core::mesh::Mesh;
+use seashells_core::mesh::{Bounds, Mesh};
 use std::f64::consts::PI;
 
 fn plain() -> Texture {
@@ -132,13 +132,29 @@ fn a_sphere_at_128_cubed_is_closed_and_accurate_to_one_percent() {
     let surface = sphere.bounds.padded(-support_of(r) + r);
     let grid = Grid::new(&surface, 128);
     assert!(grid.chunk_count() > 1, "several chunks");
-    let mesh = polygonize(&sphere, &grid, 0);
+    let mesh = polygonize(&sphere, &Refinement::uniform(grid), 0);
     assert_closed_and_outward(&mesh, "sphere");
     let (a, v) = (area(&mesh), signed_volume(&mesh));
     let (a0, v0) = (4.0 * PI * r * r, 4.0 / 3.0 * PI * r * r * r);
     assert!((a / a0 - 1.0).abs() < 0.01, "area {a} against {a0}");
     assert!((v / v0 - 1.0).abs() < 0.01, "volume {v} against {v0}");
     assert!(share_of_normals_agreeing(&mesh) > 0.999);
+    // Refined where a thin part might stand (one side of it, across chunk faces), it is as
+    // closed and as accurate, with more triangles there.
+    let half = Bounds {
+        min: surface.min,
+        max: DVec3::new(0.1, surface.max.y, surface.max.z),
+    };
+    let refined = polygonize(&sphere, &Refinement::new(grid, &[(half, MAX_LEVEL)]), 0);
+    assert_closed_and_outward(&refined, "sphere refined on one side");
+    assert!(refined.triangle_count() > 2 * mesh.triangle_count());
+    let (a, v) = (area(&refined), signed_volume(&refined));
+    assert!((a / a0 - 1.0).abs() < 0.01, "refined area {a} against {a0}");
+    assert!(
+        (v / v0 - 1.0).abs() < 0.01,
+        "refined volume {v} against {v0}"
+    );
+    assert!(share_of_normals_agreeing(&refined) > 0.999);
 }
 
 #[test]
@@ -155,7 +171,7 @@ fn a_blobby_shape_of_many_chunks_is_closed_across_the_seams() {
     let shape = Node::difference(Node::blend(blobs), ball(DVec3::new(2.0, 0.0, 0.0), 0.6));
     let grid = Grid::new(&shape.bounds, 96);
     assert!(grid.chunk_count() >= 27);
-    let mesh = polygonize(&shape, &grid, 0);
+    let mesh = polygonize(&shape, &Refinement::uniform(grid), 0);
     assert!(mesh.triangle_count() > 10_000);
     assert_closed_and_outward(&mesh, "blobs");
     // The carved surface is marked as the inside of a wall.

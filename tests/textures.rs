@@ -19,6 +19,7 @@ use seashells_core::export::paint::Paint;
 use seashells_core::export::print_size::PrintSize;
 use seashells_core::export::shell::Shell;
 use seashells_core::forms::murex::check::check;
+use seashells_core::forms::murex::fine_parts::FineParts;
 use seashells_core::forms::murex::textures::look;
 use seashells_core::forms::murex::varix::{Spine, Standing, outward, varix};
 use seashells_core::generator::Generator;
@@ -136,7 +137,15 @@ fn the_default_spines_darken_from_base_to_tip() {
         },
         edge: 1.0,
     };
-    let tree = varix(&varices, &[standing], 1.0, 0.0, 0.0, &textures).expect("a spine");
+    let tree = varix(
+        &varices,
+        &[standing],
+        1.0,
+        &mut FineParts::new(0.0),
+        0.0,
+        &textures,
+    )
+    .expect("a spine");
     let (length, base) = (varices.length, varices.radius);
     let direction = outward(20.0);
     let colours: Vec<[f64; 4]> = (1..20)
@@ -160,7 +169,15 @@ fn the_default_spines_darken_from_base_to_tip() {
     // With the pattern chosen instead, the spine shows the pattern.
     let mut patterned = textures;
     patterned.spines.look = TextureKind::Pattern;
-    let tree = varix(&varices, &[standing], 1.0, 0.0, 0.0, &patterned).unwrap();
+    let tree = varix(
+        &varices,
+        &[standing],
+        1.0,
+        &mut FineParts::new(0.0),
+        0.0,
+        &patterned,
+    )
+    .unwrap();
     assert_eq!(
         tree.probe(direction * 1.5).paint.tint(),
         [0.0, 0.0, 0.0, 1.0]

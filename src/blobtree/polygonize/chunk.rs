@@ -3,8 +3,9 @@
 //! Newton step, with the field's exact gradient as its normal and the primitives' blended
 //! pattern coordinates.
 
-use super::grid::{CHUNK, ChunkIndex, Grid, at_local, local};
+use super::grid::{CHUNK, Grid, at_local, local};
 use super::memory::{Known, Memory};
+use super::refinement::{Piece, Refinement};
 use super::sample::{class, octant_of, sample};
 use super::tetrahedra::{CUTS, DIRECTIONS, EDGES, TETRAHEDRA, edge_key, edge_of, offset};
 use crate::blobtree::blob_tree::{Node, Probe};
@@ -25,19 +26,34 @@ pub struct Scratch {
     known: Known,
 }
 
-/// The mesh of the surface of `tree` at growth step `step` inside one chunk; empty when the
-/// chunk is proven to hold none of it. Samples and vertices that `memory` holds are taken
-/// over instead of computed.
+/// The mesh of the surface of `tree` at growth step `step` inside one piece of the grid
+/// `refinement` refines; empty when the piece is proven to hold none of it. Samples and
+/// vertices that `memory` holds are taken over instead of computed. Where the piece meets
+/// pieces of other levels, it follows the refinement's rule (see [`super::refinement`]).
 pub fn mesh_chunk(
     tree: &Node,
-    grid: &Grid,
-    chunk: ChunkIndex,
+    refinement: &Refinement,
+    piece: Piece,
     step: u32,
     scratch: &mut Scratch,
     mut memory: Memory,
 ) -> Mesh {
+    let grid = &refinement.grid_at(piece.level);
+    let chunk = piece.chunk;
     let first = Grid::first_sample(chunk);
     let global = |i: [usize; 3]| std::array::from_fn(|k| first[k] + i[k] as i64);
+    let finest = |i: [usize; 3]| Refinement::finest(global(i), piece.level);
+    let border = refinement.borders_other_levels(piece).then_some(refinement);
+    // The samples another level fixes take their values, whatever was known of them.
+    let fix_border = |tree: &Node, field: &mut [f64]| {
+        if let Some(r) = border {
+            for (i, f) in field.iter_mut().enumerate() {
+                if let Some(v) = r.interpolated(tree, finest(at_local(i))) {
+                    *f = v;
+                }
+            }
+        }
+    };
     // The grid edge with key `key` and the box it spans: a vertex looks at the field there only.
     let edge = |key: usize| {
         let (lo, direction) = edge_of(key);
@@ -45,7 +61,7 @@ pub fn mesh_chunk(
         (lo, hi)
     };
     let received = match &mut memory {
-        Memory::Seams(seams) => seams.take(chunk),
+        Memory::Seams(seams) => seams.take(piece),
         _ => Vec::new(),
     };
     scratch.known.clear();
@@ -63,23 +79,39 @@ pub fn mesh_chunk(
                     .filter(|(key, _)| unchanged(edge(**key)))
                     .map(|(key, v)| (*key, *v)),
             );
-            sample(tree, grid, chunk, step, &mut scratch.field, |field| {
-                for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
-                    if old.is_finite() && !changed.contains(grid.sample(global(at_local(i)))) {
-                        *f = *old;
+            sample(
+                tree,
+                grid,
+                chunk,
+                step,
+                &mut scratch.field,
+                |culled, field| {
+                    for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
+                        if old.is_finite() && !changed.contains(grid.sample(global(at_local(i)))) {
+                            *f = *old;
+                        }
                     }
-                }
-            })
+                    fix_border(culled, field);
+                },
+            )
         }
         _ => {
             for face in &received {
                 scratch.known.extend(face.vertices.iter().copied());
             }
-            sample(tree, grid, chunk, step, &mut scratch.field, |field| {
-                for &(i, f) in received.iter().flat_map(|face| &face.samples) {
-                    field[i] = f;
-                }
-            })
+            sample(
+                tree,
+                grid,
+                chunk,
+                step,
+                &mut scratch.field,
+                |culled, field| {
+                    for &(i, f) in received.iter().flat_map(|face| &face.samples) {
+                        field[i] = f;
+                    }
+                    fix_border(culled, field);
+                },
+            )
         }
     };
     let Some(culled) = culled else {
@@ -89,7 +121,7 @@ pub fn mesh_chunk(
                 cache.vertices.clear();
             }
             Memory::Seams(seams) => {
-                seams.hand_over(grid, chunk, &scratch.field, std::iter::empty());
+                seams.hand_over(grid, piece, &scratch.field, std::iter::empty());
             }
         }
         return Mesh::default();
@@ -100,6 +132,7 @@ pub fn mesh_chunk(
         first,
         &scratch.field,
         &mut scratch.inside,
+        border,
     );
     scratch.vertex_of.resize(EDGES, u32::MAX);
     let mut mesh = Mesh::default();
@@ -125,15 +158,25 @@ pub fn mesh_chunk(
                     let inside = (0..4).filter(|&i| mask & 1 << tet[i] != 0);
                     let cut = &cuts[inside.fold(0, |m, i| m | 1 << i)];
                     let mut made = [0; 4];
-                    for (slot, edge) in made.iter_mut().zip(&cut.edges[..cut.edge_count]) {
+                    let mut ends = [([0; 3], [0; 3]); 4];
+                    for (edge_index, (slot, edge)) in made
+                        .iter_mut()
+                        .zip(&cut.edges[..cut.edge_count])
+                        .enumerate()
+                    {
                         let (lo, hi) = (corner(edge.lo), corner(edge.hi));
                         let key = edge_key(local(lo), edge.direction);
                         if scratch.vertex_of[key] == u32::MAX {
                             scratch.vertex_of[key] = mesh.next_index();
                             scratch.touched.push(key);
-                            mesh.vertices.push(match scratch.known.get(key) {
-                                Some(v) => v,
-                                None => surface_vertex(
+                            // An edge along a coarser one takes that edge's vertex.
+                            let coarser = border.and_then(|r| {
+                                let (a, b) = r.coarser_edge(finest(lo), finest(hi), piece.level)?;
+                                Some(r.vertex(&culled.chunk, a, b))
+                            });
+                            mesh.vertices.push(match (coarser, scratch.known.get(key)) {
+                                (Some(v), _) | (None, Some(v)) => v,
+                                (None, None) => surface_vertex(
                                     tree,
                                     [
                                         (grid.sample(global(lo)), scratch.field[local(lo)]),
@@ -143,15 +186,27 @@ pub fn mesh_chunk(
                             });
                         }
                         *slot = scratch.vertex_of[key];
+                        ends[edge_index] = (lo, hi);
                     }
                     for triangle in &cut.triangles[..cut.triangle_count] {
                         let t = triangle.map(|i| made[i]);
-                        // Whether the triangle faces from the inside corners to the outside ones.
-                        let at =
-                            |i: u32| DVec3::from(mesh.vertices[i as usize].position.map(f64::from));
-                        let face = (at(t[1]) - at(t[0])).cross(at(t[2]) - at(t[0]));
-                        let flip = face.dot(DVec3::from(cut.outward)) < 0.0;
-                        mesh.triangle(t, flip);
+                        let Some(r) = border else {
+                            mesh.triangle(t, false);
+                            continue;
+                        };
+                        // Its sides on a face with a finer piece take that piece's vertices.
+                        let e = triangle.map(|i| ends[i]);
+                        let inserts = std::array::from_fn(|i| {
+                            let sides = [e[i], e[(i + 1) % 3]];
+                            (finer_crossings(r, &culled.chunk, piece.level, sides, &finest))
+                                .into_iter()
+                                .map(|v| {
+                                    mesh.vertices.push(v);
+                                    mesh.next_index() - 1
+                                })
+                                .collect()
+                        });
+                        split_triangle(&mut mesh, t, inserts);
                     }
                 }
             }
@@ -167,7 +222,7 @@ pub fn mesh_chunk(
             cache.vertices.extend(made);
             std::mem::swap(&mut cache.field, &mut scratch.field);
         }
-        Memory::Seams(seams) => seams.hand_over(grid, chunk, &scratch.field, made),
+        Memory::Seams(seams) => seams.hand_over(grid, piece, &scratch.field, made),
     }
     for key in scratch.touched.drain(..) {
         scratch.vertex_of[key] = u32::MAX;
@@ -175,12 +230,77 @@ pub fn mesh_chunk(
     mesh
 }
 
+/// The vertices of a finer piece across a face of this piece (of `level`) at which its mesh
+/// crosses the triangle of this piece's grid that the grid edges `sides` (local samples; a
+/// triangle side runs between their vertices) lie in, in order from the first side's vertex:
+/// none unless both lie in a face whose piece across is finer.
+fn finer_crossings(
+    refinement: &Refinement,
+    tree: &Node,
+    level: u32,
+    sides: [([usize; 3], [usize; 3]); 2],
+    finest: &dyn Fn([usize; 3]) -> [i64; 3],
+) -> Vec<Vertex> {
+    let points = [sides[0].0, sides[0].1, sides[1].0, sides[1].1];
+    let face = (0..3).find_map(|axis| {
+        let c = points[0][axis];
+        let on_face = points.iter().all(|p| p[axis] == c) && (c == 0 || c == CHUNK as usize);
+        on_face.then_some((axis, c != 0))
+    });
+    let Some((axis, high)) = face else {
+        return Vec::new();
+    };
+    let corner = std::array::from_fn(|k| points.iter().map(|&p| finest(p)[k]).min().unwrap_or(0));
+    let Some(finer) = refinement.finer_across(corner, axis, high, level) else {
+        return Vec::new();
+    };
+    let ends = sides.map(|(lo, hi)| [finest(lo), finest(hi)]);
+    refinement.crossings(tree, ends, axis, [level, finer])
+}
+
+/// Pushes triangle `t`, its edge from `t[i]` to `t[i + 1]` split at the vertices `inserts[i]`
+/// (in order along it): a fan from the opposite corner for the first edge split, then the same
+/// for the others in the triangles of the fan that hold them. Winding is kept.
+fn split_triangle(mesh: &mut Mesh, t: [u32; 3], inserts: [Vec<u32>; 3]) {
+    let Some(i) = (0..3).find(|&i| !inserts[i].is_empty()) else {
+        mesh.triangle(t, false);
+        return;
+    };
+    let [a, b, c] = [t[i], t[(i + 1) % 3], t[(i + 2) % 3]];
+    let [mut along, mut next, mut back] = {
+        let mut inserts = inserts;
+        [i, (i + 1) % 3, (i + 2) % 3].map(|k| std::mem::take(&mut inserts[k]))
+    };
+    let chain: Vec<u32> = std::iter::once(a)
+        .chain(along.drain(..))
+        .chain(std::iter::once(b))
+        .collect();
+    let last = chain.len() - 2;
+    for (n, pair) in chain.windows(2).enumerate() {
+        // The first triangle of the fan holds the edge c → a, the last the edge b → c.
+        let rest = [
+            Vec::new(),
+            if n == last {
+                std::mem::take(&mut next)
+            } else {
+                Vec::new()
+            },
+            if n == 0 {
+                std::mem::take(&mut back)
+            } else {
+                Vec::new()
+            },
+        ];
+        split_triangle(mesh, [pair[0], pair[1], c], rest);
+    }
+}
+
 /// The vertex where the field crosses the iso-value on the grid edge between two samples
 /// (position, field): one probe of the tree at the linear interpolation of the samples gives
 /// the field there, its exact gradient (the normal) and the primitives' blended textures, and
 /// one Newton step along the edge with that gradient moves the vertex onto the surface. It is
 /// kept off the edge's ends, so that vertices of different edges never coincide.
-fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
+pub(super) fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
     let [(pa, fa), (pb, fb)] = ends;
     let edge = pb - pa;
     let guess = ((ISO - fa) / (fb - fa)).clamp(1e-3, 1.0 - 1e-3);

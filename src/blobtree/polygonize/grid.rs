@@ -1,5 +1,7 @@
 //! The voxel grid a BlobTree is polygonized on: cubic voxels over a box, cut into chunks of
-//! [`CHUNK`]³ voxels, and the numbering of the samples inside a chunk.
+//! [`CHUNK`]³ voxels, and the numbering of the samples inside a chunk. A grid of level ℓ
+//! halves the voxels of level 0 ℓ times over the same box: a refined chunk is meshed as the
+//! 8^ℓ chunks of that grid it holds (see [`super::refinement`]).
 
 use crate::mesh::Bounds;
 use glam::DVec3;
@@ -16,6 +18,10 @@ pub struct Grid {
     pub voxel: f64,
     /// Chunks along x, y and z.
     pub chunks: [u32; 3],
+    /// Times the voxels of level 0 are halved.
+    pub level: u32,
+    /// Edge length of a voxel of level 0.
+    base: f64,
 }
 
 /// A chunk's position in the grid.
@@ -37,6 +43,22 @@ impl Grid {
             origin,
             voxel,
             chunks,
+            level: 0,
+            base: voxel,
+        }
+    }
+
+    /// The grid of `level` over the same box: voxels halved `level` times, chunks as many
+    /// times doubled along each side. A sample of level 0 is the same point, bit for bit, as
+    /// the sample of every finer level at the same place.
+    pub fn at_level(&self, level: u32) -> Self {
+        let scale = 1 << level;
+        Self {
+            origin: self.origin,
+            voxel: self.base / f64::from(scale),
+            chunks: self.chunks.map(|c| (c >> self.level) * scale),
+            level,
+            base: self.base,
         }
     }
 
@@ -57,7 +79,10 @@ impl Grid {
 
     /// The position of the sample with global index `i`.
     pub(super) fn sample(&self, i: [i64; 3]) -> DVec3 {
-        self.origin + DVec3::new(i[0] as f64, i[1] as f64, i[2] as f64) * self.voxel
+        // Dividing by a power of two is exact, so that the samples of every level shared
+        // with a coarser one are the same point.
+        let scale = f64::from(1u32 << self.level);
+        self.origin + DVec3::new(i[0] as f64, i[1] as f64, i[2] as f64) / scale * self.base
     }
 
     /// Global index of a chunk's first sample.

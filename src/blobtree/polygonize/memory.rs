@@ -2,7 +2,8 @@
 //! its neighbours handed across their shared faces ([`Seams`]), or what meshing the same chunk
 //! left before the tree changed in a box ([`ChunkCache`]).
 
-use super::grid::{CHUNK, ChunkIndex, Grid, SIDE, local};
+use super::grid::{CHUNK, Grid, SIDE, local};
+use super::refinement::Piece;
 use super::tetrahedra::{DIRECTIONS, EDGES, edge_key, edge_of};
 use crate::mesh::{Bounds, Vertex};
 use std::collections::HashMap;
@@ -24,8 +25,8 @@ pub struct ChunkCache {
 /// 1.42 M samples for 1.08 M distinct ones and probe 0.97 M vertices for 0.84 M.
 #[derive(Debug, Default)]
 pub struct Seams {
-    /// What each chunk is handed across its low face on each axis.
-    faces: HashMap<(ChunkIndex, usize), Face>,
+    /// What each piece is handed across its low face on each axis.
+    faces: HashMap<(Piece, usize), Face>,
 }
 
 /// What a chunk hands across its high face on one axis, indexed as in the chunk receiving it.
@@ -38,19 +39,20 @@ pub(super) struct Face {
 }
 
 impl Seams {
-    /// What the neighbours below `chunk` on each axis handed it, taken out.
-    pub(super) fn take(&mut self, chunk: ChunkIndex) -> Vec<Face> {
+    /// What the neighbours below `piece` on each axis handed it, taken out.
+    pub(super) fn take(&mut self, piece: Piece) -> Vec<Face> {
         (0..3)
-            .filter_map(|axis| self.faces.remove(&(chunk, axis)))
+            .filter_map(|axis| self.faces.remove(&(piece, axis)))
             .collect()
     }
 
-    /// Hands the samples of `chunk` (empty when it was never sampled) and the vertices of its
-    /// edges (by key) to its neighbours above it on each axis.
+    /// Hands the samples of `piece` (empty when it was never sampled) and the vertices of its
+    /// edges (by key) to its neighbours of its level above it on each axis (on `grid`, the
+    /// grid of its level).
     pub(super) fn hand_over(
         &mut self,
         grid: &Grid,
-        chunk: ChunkIndex,
+        piece: Piece,
         field: &[f64],
         vertices: impl Iterator<Item = (usize, Vertex)>,
     ) {
@@ -86,10 +88,10 @@ impl Seams {
             }
         }
         for (axis, face) in faces.into_iter().enumerate() {
-            let mut neighbour = chunk;
-            neighbour[axis] += 1;
+            let mut neighbour = piece;
+            neighbour.chunk[axis] += 1;
             let empty = face.samples.is_empty() && face.vertices.is_empty();
-            if neighbour[axis] < grid.chunks[axis] && !empty {
+            if neighbour.chunk[axis] < grid.chunks[axis] && !empty {
                 self.faces.insert((neighbour, axis), face);
             }
         }

@@ -17,11 +17,14 @@
 //! pattern coordinates the primitives' blended coordinates. When a whole surface is meshed at
 //! once, each chunk hands the samples and vertices on its faces to the neighbours that share
 //! them ([`Seams`]); a chunk meshed again as it grows takes over what it computed before,
-//! outside the box its tree changed in ([`ChunkCache`]).
+//! outside the box its tree changed in ([`ChunkCache`]). Chunks where thin parts stand are
+//! refined: meshed as pieces of a grid of halved voxels, joined to their neighbours without
+//! cracks ([`Refinement`]).
 
 mod chunk;
 mod grid;
 mod memory;
+mod refinement;
 mod sample;
 #[cfg(test)]
 mod test_shell;
@@ -30,6 +33,7 @@ mod tetrahedra;
 pub use chunk::{Scratch, mesh_chunk};
 pub use grid::{CHUNK, ChunkIndex, Grid};
 pub use memory::{ChunkCache, Memory, Seams};
+pub use refinement::{MAX_LEVEL, Piece, Refinement};
 pub use sample::surface_box;
 
 use crate::blobtree::blob_tree::Node;
@@ -40,15 +44,18 @@ use std::collections::HashMap;
 /// culled from that: culling a chunk from the whole tree costs more than sampling it.
 const CULLED_CHUNKS: u32 = 4;
 
-/// The block of chunks that `chunk` is culled with.
-pub fn block_of(chunk: ChunkIndex) -> [u32; 3] {
-    chunk.map(|c| c / CULLED_CHUNKS)
+/// A block of pieces culled together: their level, and the block's place in that level's grid.
+pub type Block = (u32, [u32; 3]);
+
+/// The block of pieces of its level that `piece` is culled with.
+pub fn block_of(piece: Piece) -> Block {
+    (piece.level, piece.chunk.map(|c| c / CULLED_CHUNKS))
 }
 
-/// Every chunk of `tree` at growth step `step`, meshed and joined: the whole surface at once.
-pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
-    let mut work = ChunkWork::new(step, grid.chunks_touching(&tree.bounds));
-    work.work(tree, grid, &mut || true);
+/// Every piece of `tree` at growth step `step`, meshed and joined: the whole surface at once.
+pub fn polygonize(tree: &Node, refinement: &Refinement, step: u32) -> Mesh {
+    let mut work = ChunkWork::new(step, refinement.pieces_touching(&tree.bounds));
+    work.work(tree, refinement, &mut || true);
     let mut mesh = Mesh::default();
     for (_, m) in work.into_meshes() {
         mesh.append(&m);
@@ -64,20 +71,20 @@ pub fn polygonize(tree: &Node, grid: &Grid, step: u32) -> Mesh {
 /// joined in a fixed order.
 pub struct ChunkWork {
     step: u32,
-    chunks: Vec<ChunkIndex>,
+    chunks: Vec<Piece>,
     next: usize,
     /// The block being meshed and its tree, `None` where nothing of the tree reaches it.
-    block: Option<([u32; 3], Option<Node>)>,
+    block: Option<(Block, Option<Node>)>,
     seams: Seams,
     scratch: Scratch,
-    meshes: Vec<(ChunkIndex, Mesh)>,
+    meshes: Vec<(Piece, Mesh)>,
 }
 
 impl ChunkWork {
-    /// The work of meshing `chunks` at growth step `step`.
-    pub fn new(step: u32, chunks: Vec<ChunkIndex>) -> Self {
-        let mut order: Vec<[u32; 3]> = Vec::new();
-        let mut of_block: HashMap<[u32; 3], Vec<ChunkIndex>> = HashMap::new();
+    /// The work of meshing the pieces `chunks` at growth step `step`.
+    pub fn new(step: u32, chunks: Vec<Piece>) -> Self {
+        let mut order: Vec<Block> = Vec::new();
+        let mut of_block: HashMap<Block, Vec<Piece>> = HashMap::new();
         for chunk in chunks {
             let block = block_of(chunk);
             of_block
@@ -103,21 +110,27 @@ impl ChunkWork {
         }
     }
 
-    /// Meshes chunks of `tree` on `grid` while `keep_going` allows (at least one); says
-    /// whether all are meshed.
-    pub fn work(&mut self, tree: &Node, grid: &Grid, keep_going: &mut dyn FnMut() -> bool) -> bool {
+    /// Meshes pieces of `tree` on the grid `refinement` refines while `keep_going` allows (at
+    /// least one); says whether all are meshed.
+    pub fn work(
+        &mut self,
+        tree: &Node,
+        refinement: &Refinement,
+        keep_going: &mut dyn FnMut() -> bool,
+    ) -> bool {
         let mut first = true;
         while self.next < self.chunks.len() && (first || keep_going()) {
             first = false;
             let chunk = self.chunks[self.next];
             let block = block_of(chunk);
             if self.block.as_ref().is_none_or(|(b, _)| *b != block) {
+                let grid = refinement.grid_at(chunk.level);
                 let mut region = Bounds::EMPTY;
                 for &c in self.chunks[self.next..]
                     .iter()
                     .take_while(|&&c| block_of(c) == block)
                 {
-                    region = region.union(&grid.region(c));
+                    region = region.union(&grid.region(c.chunk));
                 }
                 // As wide as the culls of its chunks reach (see `sample`).
                 let culled = tree.cull(&region.padded(grid.voxel), self.step);
@@ -129,7 +142,7 @@ impl ChunkWork {
             };
             let mesh = mesh_chunk(
                 tree,
-                grid,
+                refinement,
                 chunk,
                 self.step,
                 &mut self.scratch,
@@ -147,8 +160,8 @@ impl ChunkWork {
         self.next >= self.chunks.len()
     }
 
-    /// The meshes of the chunks that hold part of the surface, in the order they were meshed.
-    pub fn into_meshes(self) -> Vec<(ChunkIndex, Mesh)> {
+    /// The meshes of the pieces that hold part of the surface, in the order they were meshed.
+    pub fn into_meshes(self) -> Vec<(Piece, Mesh)> {
         self.meshes
     }
 }
@@ -157,21 +170,29 @@ impl ChunkWork {
 mod tests {
     use super::test_shell::test_shell;
     use super::*;
+    use crate::mesh::Bounds;
 
     #[test]
     fn chunks_handing_on_their_faces_mesh_as_chunks_meshed_alone() {
         let (tree, step) = test_shell();
-        let grid = Grid::new(&tree.bounds, 64);
-        let whole = polygonize(&tree, &grid, step);
+        let refinement = Refinement::uniform(Grid::new(&tree.bounds, 64));
+        let whole = polygonize(&tree, &refinement, step);
         let (mut scratch, mut alone) = (Scratch::default(), Mesh::default());
-        for chunk in grid.chunks_touching(&tree.bounds) {
+        for chunk in refinement.pieces_touching(&tree.bounds) {
             // A cache left by nothing: every sample and vertex is computed.
             let mut cache = ChunkCache::default();
             let memory = Memory::Cache {
                 cache: &mut cache,
                 changed: &tree.bounds,
             };
-            alone.append(&mesh_chunk(&tree, &grid, chunk, step, &mut scratch, memory));
+            alone.append(&mesh_chunk(
+                &tree,
+                &refinement,
+                chunk,
+                step,
+                &mut scratch,
+                memory,
+            ));
         }
         assert!(
             whole.triangle_count() > 10_000,
@@ -180,5 +201,56 @@ mod tests {
         );
         assert_eq!(whole.triangle_count(), alone.triangle_count());
         assert_eq!(whole.content_hash(), alone.content_hash());
+    }
+
+    /// Each directed edge (by welded position) with the number of triangles using it.
+    fn directed_edges(mesh: &Mesh) -> HashMap<([u32; 3], [u32; 3]), usize> {
+        let key = |i: u32| mesh.vertices[i as usize].position.map(f32::to_bits);
+        let mut edges = HashMap::new();
+        for t in mesh.indices.chunks_exact(3) {
+            for (a, b) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+                *edges.entry((key(a), key(b))).or_insert(0) += 1;
+            }
+        }
+        edges
+    }
+
+    #[test]
+    fn pieces_of_three_levels_join_into_one_closed_surface() {
+        let (tree, step) = test_shell();
+        let grid = Grid::new(&tree.bounds, 48);
+        // Level 2 over one box, level 1 over another overlapping it, across chunk faces.
+        let size = tree.bounds.max - tree.bounds.min;
+        let part = |from: f64, to: f64| Bounds {
+            min: tree.bounds.min + size * from,
+            max: tree.bounds.min + size * to,
+        };
+        let parts = [(part(0.3, 0.6), 2), (part(0.5, 0.9), 1)];
+        let refinement = Refinement::new(grid, &parts);
+        let levels = refinement.pieces_at_levels();
+        assert!(
+            levels.iter().all(|&n| n > 30),
+            "pieces at each level: {levels:?}"
+        );
+        let mesh = polygonize(&tree, &refinement, step);
+        let uniform = polygonize(&tree, &Refinement::uniform(grid), step);
+        assert!(
+            mesh.triangle_count() > uniform.triangle_count() * 3 / 2,
+            "{} triangles refined, {} not",
+            mesh.triangle_count(),
+            uniform.triangle_count()
+        );
+        let edges = directed_edges(&mesh);
+        let bad: Vec<_> = edges
+            .iter()
+            .filter(|&(&(a, b), &n)| n != 1 || edges.get(&(b, a)) != Some(&1))
+            .map(|(&(a, b), &n)| (a.map(f32::from_bits), b.map(f32::from_bits), n))
+            .collect();
+        assert!(
+            bad.is_empty(),
+            "{} edges not paired: {:?}",
+            bad.len(),
+            &bad[..bad.len().min(6)]
+        );
     }
 }

@@ -4,6 +4,7 @@
 //! class among their neighbours (pinholes) take their neighbours' class.
 
 use super::grid::{CHUNK, ChunkIndex, Grid, SIDE, at_local, local};
+use super::refinement::Refinement;
 use super::tetrahedra::{DIRECTIONS, offset};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
@@ -129,22 +130,23 @@ pub(super) struct Culled {
 /// Samples the field of `tree` at growth step `step` at a chunk's corners into `field`, and
 /// gives the trees culled to the chunk and its octants; `None` when the surface does not pass
 /// through it (proven by the culled tree or the field's range, or seen in the samples).
-/// `known` first fills in the samples known already (exact, or left NaN). Samples in blocks
-/// proven one-sided hold [`proven`] values; `field` is left empty when none was sampled.
+/// `known` first fills in the samples known already (exact, or left NaN), given the tree
+/// culled to the chunk. Samples in blocks proven one-sided hold [`proven`] values; `field`
+/// is left empty when none was sampled.
 pub(super) fn sample(
     tree: &Node,
     grid: &Grid,
     chunk: ChunkIndex,
     step: u32,
     field: &mut Vec<f64>,
-    known: impl FnOnce(&mut [f64]),
+    known: impl FnOnce(&Node, &mut [f64]),
 ) -> Option<Culled> {
     field.clear();
     let region = grid.region(chunk);
     let tree = tree.cull(&region.padded(grid.voxel), step)?;
     one_side(&tree, &region).is_none().then_some(())?;
     field.resize(SIDE * SIDE * SIDE, f64::NAN);
-    known(field);
+    known(&tree, field);
     let mut sampler = Sampler {
         grid,
         first: Grid::first_sample(chunk),
@@ -180,14 +182,19 @@ pub(super) fn sample(
 /// parts meet as in a union, would give a closed bubble far smaller than a voxel, a separate
 /// piece of the mesh. Such a sample takes its neighbours' class. Neighbours beyond the chunk
 /// are evaluated from `tree` (culled a voxel wider than the chunk), so both chunks sharing a
-/// sample decide alike.
+/// sample decide alike. Where chunks of other levels are near (`border`), neighbours beyond
+/// the chunk take the values the refinement gives them, and samples those chunks hold too are
+/// never flipped: each side would judge them by other neighbours.
 pub(super) fn class(
     tree: &Node,
     grid: &Grid,
     first: [i64; 3],
     field: &[f64],
     inside: &mut Vec<bool>,
+    border: Option<&Refinement>,
 ) {
+    let global = |n: [i64; 3]| -> [i64; 3] { std::array::from_fn(|k| first[k] + n[k]) };
+    let finest = |n: [i64; 3]| Refinement::finest(global(n), grid.level);
     inside.clear();
     inside.extend(field.iter().map(|&f| f >= ISO));
     let mut flips = Vec::new();
@@ -209,9 +216,13 @@ pub(super) fn class(
                     .clone()
                     .filter(within)
                     .all(|n| inside[local(n.map(|i| i as usize))] != mine)
+                    && border.is_none_or(|r| !r.is_shared_across_levels(finest(at)))
                     && neighbours.filter(|n| !within(n)).all(|n| {
-                        let p = grid.sample(std::array::from_fn(|k| first[k] + n[k]));
-                        (tree.field(p) >= ISO) != mine
+                        let f = match border {
+                            Some(r) => r.value(tree, finest(n)),
+                            None => tree.field(grid.sample(global(n))),
+                        };
+                        (f >= ISO) != mine
                     });
                 if alone {
                     flips.push(here);
@@ -230,7 +241,7 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
     let mut field = Vec::new();
     let mut inside = Bounds::EMPTY;
     for chunk in grid.chunks_touching(&tree.bounds) {
-        if sample(tree, grid, chunk, step, &mut field, |_| {}).is_none() {
+        if sample(tree, grid, chunk, step, &mut field, |_, _| {}).is_none() {
             continue;
         }
         let first = Grid::first_sample(chunk);
@@ -260,7 +271,7 @@ mod tests {
         let grid = Grid::new(&tree.bounds, 64);
         let (mut field, mut evaluated, mut proven, mut meshed) = (Vec::new(), 0, 0, 0);
         for chunk in grid.chunks_touching(&tree.bounds) {
-            if sample(tree, &grid, chunk, step, &mut field, |_| {}).is_none() {
+            if sample(tree, &grid, chunk, step, &mut field, |_, _| {}).is_none() {
                 continue;
             }
             meshed += 1;

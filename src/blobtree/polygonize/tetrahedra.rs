@@ -41,15 +41,17 @@ pub(super) struct Edge {
 }
 
 /// How the surface cuts a tetrahedron with a given set of corners inside: the edges its
-/// vertices lie on, in the order they are made; its triangles over them; and the direction
-/// from the inside corners' mean to the outside corners' mean, which the triangles face.
+/// vertices lie on, in the order they are made, and its triangles over them, wound to face
+/// from the inside corners towards the outside ones. The winding is decided here, with each
+/// vertex at its edge's midpoint, not from where the vertices end up: wherever on its open
+/// edge each vertex lies the triangle keeps that orientation, and a vertex shared with a
+/// coarser grid edge (see `refinement.rs`) may even lie beyond its own.
 #[derive(Clone, Copy)]
 pub(super) struct Cut {
     pub(super) edges: [Edge; 4],
     pub(super) edge_count: usize,
     pub(super) triangles: [[usize; 3]; 2],
     pub(super) triangle_count: usize,
-    pub(super) outward: [f64; 3],
 }
 
 /// The cut of each tetrahedron of [`TETRAHEDRA`] for each set of its corners inside (bit i:
@@ -66,7 +68,6 @@ pub(super) static CUTS: [[Cut; 16]; 6] = {
         edge_count: 0,
         triangles: [[0; 3]; 2],
         triangle_count: 0,
-        outward: [0.0; 3],
     };
     const fn edge(a: usize, b: usize) -> Edge {
         let (lo, hi) = if a < b { (a, b) } else { (b, a) };
@@ -79,6 +80,17 @@ pub(super) static CUTS: [[Cut; 16]; 6] = {
             direction += 1;
         }
         Edge { lo, hi, direction }
+    }
+    const fn midpoint(e: Edge) -> [f64; 3] {
+        let (l, h) = (offset(e.lo), offset(e.hi));
+        [
+            (l[0] + h[0]) as f64 * 0.5,
+            (l[1] + h[1]) as f64 * 0.5,
+            (l[2] + h[2]) as f64 * 0.5,
+        ]
+    }
+    const fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+        [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
     }
     const fn mean(corners: &[usize; 4], count: usize) -> [f64; 3] {
         let mut sum = [0.0; 3];
@@ -115,10 +127,8 @@ pub(super) static CUTS: [[Cut; 16]; 6] = {
                 i += 1;
             }
             let (a, b) = (mean(&outs, n_out), mean(&ins, n_in));
-            let mut cut = Cut {
-                outward: [a[0] - b[0], a[1] - b[1], a[2] - b[2]],
-                ..EMPTY
-            };
+            let outward = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+            let mut cut = EMPTY;
             if n_in == 2 {
                 cut.edges = [
                     edge(ins[0], outs[0]),
@@ -144,6 +154,25 @@ pub(super) static CUTS: [[Cut; 16]; 6] = {
                 cut.edge_count = 3;
                 cut.triangle_count = 1;
                 cut.triangles[0] = [0, 1, 2];
+            }
+            let mut k = 0;
+            while k < cut.triangle_count {
+                let [i, j, l] = cut.triangles[k];
+                let m = [
+                    midpoint(cut.edges[i]),
+                    midpoint(cut.edges[j]),
+                    midpoint(cut.edges[l]),
+                ];
+                let (u, v) = (sub(m[1], m[0]), sub(m[2], m[0]));
+                let face = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                if face[0] * outward[0] + face[1] * outward[1] + face[2] * outward[2] < 0.0 {
+                    cut.triangles[k] = [i, l, j];
+                }
+                k += 1;
             }
             cuts[t][mask] = cut;
             mask += 1;

@@ -8,6 +8,7 @@
 //! the whorl's much stronger field. When the pattern places them (`rd_placement.rs`) they
 //! stand at the lower peaks of the activator instead, each scaled by its peak's level.
 
+use super::fine_parts::FineParts;
 use super::varix::{Standing, outward};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::support_of;
@@ -24,13 +25,14 @@ pub const BUMP_STREAM: u64 = 11;
 
 /// One set of bumps, in the generating surface's coordinates and units of D: one at each of
 /// `sites` (the table's every second spine, or the pattern's lower peaks), where its angle
-/// meets the surface, its size scaled by the site's σ. Bumps thinner than `thinnest` are left
-/// out: the polygonizer could not show them.
+/// meets the surface, its size scaled by the site's σ. Each is noted in `fine` with the level
+/// of refinement that shows it; one thinner than the finest level shows is enlarged to it, so
+/// that every bump stands at every resolution.
 pub fn bump_set(
     sites: &[Standing],
     size: f64,
     spread: f64,
-    thinnest: f64,
+    fine: &mut FineParts,
     time: f64,
     noise: &mut Noise,
 ) -> Vec<Node> {
@@ -38,9 +40,10 @@ pub fn bump_set(
     for s in sites {
         let size = size * s.spine.sigma;
         let factors = [0.0, 0.0, 0.8].map(|extra| noise.normal(1.0, spread).max(0.1) + extra);
-        if size * factors[0].min(factors[1]) < thinnest {
-            continue;
-        }
+        let thickness = size * factors[0].min(factors[1]);
+        let level = fine.level(thickness);
+        // One thinner than the finest level shows is drawn at that thickness, not left out.
+        let size = size * (fine.thinnest(level) / thickness).max(1.0);
         let direction = outward(s.spine.angle);
         let frame = DAffine3 {
             matrix3: DMat3::from_cols(
@@ -57,6 +60,10 @@ pub fn bump_set(
             },
             Texture::around(time).moved(frame),
         );
+        let widest = factors.iter().copied().fold(0.0, f64::max);
+        fine.add_tube(&[(frame.translation, size * widest)], level);
+        // Its top, straight out of the surface.
+        fine.tip(frame.translation + direction * size * factors[0], 0.0);
         bumps.push(Node::transform(frame, bump));
     }
     bumps

@@ -5,6 +5,7 @@
 //! spine), since spines in nature are not straight. Coordinates are the generating surface's,
 //! in units of D.
 
+use super::fine_parts::FineParts;
 use super::generating_surface::cone_frame;
 use super::textures::look;
 use crate::blobtree::bend::Bend;
@@ -28,13 +29,14 @@ const TAPER: f64 = 0.35;
 
 /// The canal spines of one row: `sizes` (σ, from the body down the canal) on the canal
 /// `cone` (a generator cone row: from, to, radii, bend), each `length`·σ long beyond the
-/// canal's surface with base radius `radius`·σ, none thinner than `thinnest`, each textured
-/// by `texture` from the canal's surface to its tip.
+/// canal's surface with base radius `radius`·σ, each textured by `texture` from the canal's
+/// surface to its tip and noted in `fine` with the level of refinement that shows its base;
+/// none is thinner than the finest voxel of that level.
 pub fn canal_row(
     cone: &[f64; 10],
     sizes: &[f64],
     [length, radius]: [f64; 2],
-    thinnest: f64,
+    fine: &mut FineParts,
     time: f64,
     texture: &PartTexture,
     noise: &mut Noise,
@@ -62,6 +64,8 @@ pub fn canal_row(
         }
         let canal_radius = cone[6] + t * (cone[7] - cone[6]);
         let spine_length = canal_radius + length * sigma;
+        let level = fine.level(radius * sigma);
+        let thinnest = fine.thinnest(level);
         let radii = [radius * sigma, radius * sigma * TAPER].map(|r| r.max(thinnest));
         let placed = DAffine3 {
             matrix3: DMat3::from_cols(away, DVec3::Z.cross(away), DVec3::Z),
@@ -79,6 +83,8 @@ pub fn canal_row(
         );
         let bends = 1 + noise.below(3);
         let piece = spine_length / (bends + 1) as f64;
+        // Its tip, carried through the bends as the spine is.
+        let mut tip = DVec3::X * spine_length;
         for b in 1..=bends {
             let degrees = 3.0 + 6.0 * noise.unit();
             let roll = std::f64::consts::TAU * noise.unit();
@@ -86,15 +92,14 @@ pub fn canal_row(
                 DQuat::from_rotation_x(roll),
                 DVec3::X * piece * b as f64,
             );
-            spine = Node::transform(
-                at,
-                Node::warp(
-                    Bend::new(degrees.to_radians(), piece),
-                    Node::transform(at.inverse(), spine),
-                ),
-            );
+            let bend = Bend::new(degrees.to_radians(), piece);
+            tip = at.transform_point3(bend.forward(at.inverse().transform_point3(tip)));
+            spine = Node::transform(at, Node::warp(bend, Node::transform(at.inverse(), spine)));
         }
-        spines.push(Node::transform(placed, spine));
+        let spine = Node::transform(placed, spine);
+        fine.add(spine.bounds, level);
+        fine.tip(placed.transform_point3(tip), radii[1]);
+        spines.push(spine);
     }
     spines
 }

@@ -10,7 +10,8 @@
 use super::whorl::{Whorl, whorl};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::polygonize::{
-    ChunkCache, ChunkIndex, ChunkWork, Grid, Memory, Scratch, block_of, mesh_chunk, surface_box,
+    ChunkCache, ChunkWork, Grid, Memory, Piece, Refinement, Scratch, block_of, mesh_chunk,
+    surface_box,
 };
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::shape::{GrowingShape, LineGrid, Pieces, ShapeError};
@@ -22,11 +23,12 @@ use std::collections::BTreeMap;
 /// Voxels along the longest side when the shell's extent is estimated, for framing.
 const ESTIMATE_RESOLUTION: u32 = 32;
 
-/// What meshes the pieces of an implicit shell's growth apart from it: its tree and grid,
-/// built from the same spec. A piece is a chunk, numbered as [`Grid::linear`] numbers it.
+/// What meshes the pieces of an implicit shell's growth apart from it: its tree and its grid
+/// refined where thin parts stand, built from the same spec. A piece is a chunk of its level,
+/// numbered as [`Refinement::id`] numbers it.
 pub struct PieceMaker {
     tree: Node,
-    grid: Grid,
+    refinement: Refinement,
 }
 
 impl PieceMaker {
@@ -37,29 +39,26 @@ impl PieceMaker {
         seed: u64,
         rows: usize,
     ) -> Result<Self, ShapeError> {
-        let tree = whorl(spec, pattern, seed, rows)?.tree;
-        let grid = Grid::new(&tree.bounds, spec.resolution);
-        Ok(Self { tree, grid })
+        let Whorl { tree, fine, .. } = whorl(spec, pattern, seed, rows)?;
+        let refinement = Refinement::new(Grid::new(&tree.bounds, spec.resolution), &fine.boxes);
+        Ok(Self { tree, refinement })
     }
 
-    /// The work of meshing the chunks numbered `ids` at growth step `step`.
+    /// The work of meshing the pieces numbered `ids` at growth step `step`.
     pub fn start(&self, step: u32, ids: &[u32]) -> ChunkWork {
-        let chunks = ids
-            .iter()
-            .map(|&n| self.grid.chunk_at(n as usize))
-            .collect();
-        ChunkWork::new(step, chunks)
+        let pieces = ids.iter().map(|&n| self.refinement.piece(n)).collect();
+        ChunkWork::new(step, pieces)
     }
 
     /// Meshes chunks of `work` while `keep_going` allows (at least one); says whether all are.
     pub fn work(&self, work: &mut ChunkWork, keep_going: &mut dyn FnMut() -> bool) -> bool {
-        work.work(&self.tree, &self.grid, keep_going)
+        work.work(&self.tree, &self.refinement, keep_going)
     }
 
-    /// The meshes of the chunks of finished `work` that hold part of the surface, by number.
+    /// The meshes of the pieces of finished `work` that hold part of the surface, by number.
     pub fn finished(&self, work: ChunkWork) -> Vec<(u32, Mesh)> {
         (work.into_meshes().into_iter())
-            .map(|(chunk, mesh)| (self.grid.linear(chunk) as u32, mesh))
+            .map(|(piece, mesh)| (self.refinement.id(piece), mesh))
             .collect()
     }
 }
@@ -70,16 +69,16 @@ pub struct ImplicitMesh {
     front: DVec3,
     bounds: Bounds,
     resolution: u32,
-    /// (instance, chunk) in growth order.
-    jobs: Vec<(u32, ChunkIndex)>,
-    /// The last instance reaching each chunk (by linear chunk number), or `u32::MAX`.
-    last_reach: Vec<u32>,
-    /// Meshes of the chunks some later instance will change, by linear chunk number.
-    live: BTreeMap<usize, Mesh>,
-    /// Meshes of the instance being meshed, shown once all its chunks are done.
-    pending: Vec<(usize, Mesh)>,
-    /// What meshing each live chunk left behind, for meshing it again.
-    caches: BTreeMap<usize, ChunkCache>,
+    /// (instance, piece) in growth order.
+    jobs: Vec<(u32, Piece)>,
+    /// The last instance reaching each piece, by its number.
+    last_reach: BTreeMap<u32, u32>,
+    /// Meshes of the pieces some later instance will change, by number.
+    live: BTreeMap<u32, Mesh>,
+    /// Meshes of the instance being meshed, shown once all its pieces are done.
+    pending: Vec<(u32, Mesh)>,
+    /// What meshing each live piece left behind, for meshing it again.
+    caches: BTreeMap<u32, ChunkCache>,
     /// The box of each instance's field, by growth step.
     reach: Vec<Bounds>,
     done: usize,
@@ -102,18 +101,19 @@ impl ImplicitMesh {
             instances,
             reach,
             front,
+            fine,
             ..
         } = whorl(spec, pattern, seed, rows)?;
-        let grid = Grid::new(&tree.bounds, spec.resolution);
-        let mut last_reach = vec![u32::MAX; grid.chunk_count()];
+        let refinement = Refinement::new(Grid::new(&tree.bounds, spec.resolution), &fine.boxes);
+        let mut last_reach = BTreeMap::new();
         let mut jobs = Vec::new();
         for (k, b) in reach.iter().enumerate() {
             if b.is_empty() {
                 continue;
             }
-            for chunk in grid.chunks_touching(b) {
-                jobs.push((k as u32, chunk));
-                last_reach[grid.linear(chunk)] = k as u32;
+            for piece in refinement.pieces_touching(b) {
+                jobs.push((k as u32, piece));
+                last_reach.insert(refinement.id(piece), k as u32);
             }
         }
         let bounds = surface_box(
@@ -122,7 +122,7 @@ impl ImplicitMesh {
             instances.saturating_sub(1),
         );
         Ok(Self {
-            maker: PieceMaker { tree, grid },
+            maker: PieceMaker { tree, refinement },
             front,
             bounds,
             resolution: spec.resolution,
@@ -143,7 +143,7 @@ impl ImplicitMesh {
     /// live set, which `edge` then shows.
     fn publish(&mut self, instance: u32, mesh: &mut Mesh, edge: &mut Mesh) {
         for (chunk, m) in self.pending.drain(..) {
-            if self.last_reach[chunk] == instance {
+            if self.last_reach.get(&chunk) == Some(&instance) {
                 self.live.remove(&chunk);
                 mesh.append(&m);
             } else {
@@ -171,11 +171,16 @@ impl GrowingShape for ImplicitMesh {
         // Enough for the shells we know (grown, the Murex at r voxels has about 20 r²
         // vertices before welding, with 1.75 triangles each; a plain whorl 15 r²), so that
         // growth never stops to move a large mesh: the renderer's buffers and the meshes still
-        // grow when a shell needs more.
-        let r = self.resolution as usize;
+        // grow when a shell needs more. Refined where its spines and bumps stand, the Murex
+        // has up to 65 r² (46–65 r² at 112–256 voxels): its thin parts cover most of its last
+        // whorls, which a quarter of the grid's chunks refined already holds.
+        let refined = self.maker.refinement.refined_share();
+        let per_r2 = 20.0 + 45.0 * (4.0 * refined).min(1.0);
+        let r2 = f64::from(self.resolution).powi(2);
+        let vertices = (per_r2 * r2) as usize;
         Capacity {
-            vertices: 20 * r * r,
-            indices: 108 * r * r,
+            vertices,
+            indices: vertices * 27 / 5,
         }
     }
 
@@ -196,15 +201,15 @@ impl GrowingShape for ImplicitMesh {
     }
 
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool {
-        let Some(&(instance, chunk)) = self.jobs.get(self.done) else {
+        let Some(&(instance, piece)) = self.jobs.get(self.done) else {
             return false;
         };
-        let linear = self.maker.grid.linear(chunk);
+        let linear = self.maker.refinement.id(piece);
         let mut cache = self.caches.remove(&linear).unwrap_or_default();
         let m = mesh_chunk(
             &self.maker.tree,
-            &self.maker.grid,
-            chunk,
+            &self.maker.refinement,
+            piece,
             instance,
             &mut self.scratch,
             Memory::Cache {
@@ -212,7 +217,7 @@ impl GrowingShape for ImplicitMesh {
                 changed: &self.reach[instance as usize],
             },
         );
-        if self.last_reach[linear] != instance {
+        if self.last_reach.get(&linear) != Some(&instance) {
             self.caches.insert(linear, cache);
         }
         self.pending.push((linear, m));
@@ -243,14 +248,14 @@ impl GrowingShape for ImplicitMesh {
         }
         let mut groups: Vec<Vec<u32>> = Vec::new();
         let mut group_of = BTreeMap::new();
-        for (linear, &reach) in self.last_reach.iter().enumerate() {
-            if reach != u32::MAX && self.shown.is_none_or(|shown| reach > shown) {
-                let block = block_of(self.maker.grid.chunk_at(linear));
+        for (&id, &reach) in &self.last_reach {
+            if self.shown.is_none_or(|shown| reach > shown) {
+                let block = block_of(self.maker.refinement.piece(id));
                 let n = *group_of.entry(block).or_insert_with(|| {
                     groups.push(Vec::new());
                     groups.len() - 1
                 });
-                groups[n].push(linear as u32);
+                groups[n].push(id);
             }
         }
         self.pending.clear();

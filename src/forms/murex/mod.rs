@@ -7,6 +7,7 @@
 pub mod bumps;
 pub mod canal_spines;
 pub mod check;
+pub mod fine_parts;
 pub(crate) mod generating_surface;
 pub mod helix;
 pub mod implicit_mesh;

@@ -12,6 +12,7 @@
 //! one on the surface and one a little above it: the same concentric ridge, following the
 //! surface wherever the spines stand.
 
+use super::fine_parts::FineParts;
 use super::textures::look;
 use crate::blobtree::bend::Bend;
 use crate::blobtree::blob_tree::Node;
@@ -117,30 +118,33 @@ pub struct Standing {
 
 /// The varix of eq 12: the spines `standing` on the surface, joined by the ridge, with
 /// pattern time `time`; the spines wear the spines' texture from base to tip, the ridge the
-/// body's. `sigma_max` is the table's largest σ; `thinnest` is the thinnest
-/// radius (units of D) the polygonizer resolves: thinner spines and ridges are thickened to
-/// it so that they stay joined to the shell.
+/// body's. `sigma_max` is the table's largest σ. Each spine and ridge is noted in `fine` with
+/// the level of refinement that shows it (a spine by its base); a spine's tip thinner than the
+/// finest voxel of that level is thickened to it, so that it stays joined to the shell.
 pub fn varix(
     spec: &VaricesSpec,
     standing: &[Standing],
     sigma_max: f64,
-    thinnest: f64,
+    fine: &mut FineParts,
     time: f64,
     textures: &TexturesSpec,
 ) -> Option<Node> {
     let mut parts: Vec<Node> = standing
         .iter()
-        .map(|s| spine(spec, s, sigma_max, thinnest, time, &textures.spines))
+        .map(|s| spine(spec, s, sigma_max, fine, time, &textures.spines))
         .collect();
     if spec.ridge > 0.0 {
-        let radius = spec.ridge.max(thinnest);
+        let level = fine.level(spec.ridge);
+        let radius = spec.ridge.max(fine.thinnest(level));
         for pair in standing.windows(2) {
             for lift in [0.5 * radius, 2.5 * radius] {
                 let at = |s: &Standing| outward(s.spine.angle) * (s.edge + lift);
+                let (from, to) = (at(&pair[0]), at(&pair[1]));
+                fine.add_tube(&[(from, radius), (to, radius)], level);
                 parts.push(Node::leaf(
                     Primitive::Cone {
-                        from: at(&pair[0]),
-                        to: at(&pair[1]),
+                        from,
+                        to,
                         radii: [support_of(radius); 2],
                     },
                     Texture::around(time).looking(look(&textures.body, 0.0)),
@@ -162,12 +166,14 @@ fn spine(
     spec: &VaricesSpec,
     s: &Standing,
     sigma_max: f64,
-    thinnest: f64,
+    fine: &mut FineParts,
     time: f64,
     texture: &PartTexture,
 ) -> Node {
     let sigma = s.spine.sigma;
     let length = spec.length;
+    let level = fine.level(spec.radius * sigma);
+    let thinnest = fine.thinnest(level);
     let base = spec.radius.max(thinnest / sigma);
     let tip = (spec.tip * sigma_max / sigma).max(thinnest / sigma);
     let direction = outward(s.spine.angle);
@@ -178,6 +184,22 @@ fn spine(
         translation: direction * (s.edge - base * sigma),
     };
     let bend = curl(spec.bend, length, base.max(tip));
+    // Its axis as placed, with the surface's radius along it (σ_max across the varix).
+    let widest = sigma.max(sigma_max);
+    let axis: Vec<(DVec3, f64)> = (0..=AXIS_POINTS)
+        .map(|i| {
+            let t = f64::from(i) / f64::from(AXIS_POINTS);
+            let on = Bend::new(bend, length).forward(DVec3::X * t * length);
+            (
+                frame.transform_point3(on),
+                (base + (tip - base) * t) * widest,
+            )
+        })
+        .collect();
+    fine.add_tube(&axis, level);
+    if let Some(&(end, radius)) = axis.last() {
+        fine.tip(end, radius);
+    }
     let cone = Node::leaf(
         Primitive::Cone {
             from: DVec3::ZERO,
@@ -190,6 +212,9 @@ fn spine(
     );
     Node::transform(frame, Node::warp(Bend::new(bend, length), cone))
 }
+
+/// Points along a spine's axis at which the refinement about it is measured.
+const AXIS_POINTS: u32 = 8;
 
 /// The bend in radians of a cone of `length` and largest surface radius `radius` bent by
 /// `degrees`, reduced where its field would fold over the centre of curvature.

@@ -10,6 +10,7 @@
 use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
 use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
 use super::check::check;
+use super::fine_parts::{FineParts, Placed};
 use super::helix::Instances;
 use super::opening::{Opening, opening};
 use super::rd_placement::{activator_at, bumps_of, free, peaks, spines_of};
@@ -37,6 +38,9 @@ pub struct Whorl {
     pub front: DVec3,
     /// What stands on each varix, from the apex to the opening.
     pub varices: Vec<Varix>,
+    /// The thin parts: their boxes with the level of refinement that shows them, and where
+    /// each stands out ([`FineParts`]).
+    pub fine: Placed,
 }
 
 /// One varix as built: where it stands and its spines.
@@ -52,10 +56,6 @@ pub struct Varix {
     /// grid shows are then left out of the tree).
     pub bumps: Vec<Standing>,
 }
-
-/// Voxels a spine, a ridge or a canal spine is at least thick (as a radius), so that the
-/// polygonizer shows it joined to the shell; bumps thinner than that are left out.
-pub const THINNEST_VOXELS: f64 = 1.0;
 
 /// The shell of `spec` as one BlobTree (eqs 9–15), instance k carrying growth time
 /// k·(rows − 1)/(K − 1). Spines and bumps placed by the pattern read the activator of
@@ -99,7 +99,9 @@ pub fn whorl(
     let reach = (v.length * sigma_max).max(spec.canal_spines.length) * instances.size(last);
     let voxel = (body.bounds.max - body.bounds.min + 2.0 * reach).max_element()
         / f64::from(spec.resolution);
-    let thinnest = |k: f64| THINNEST_VOXELS * voxel / instances.size(k);
+    // The thin parts of instance k, measured against the voxel in its own units.
+    let fine_at = |k: f64| FineParts::new(voxel / instances.size(k));
+    let mut fine = Placed::default();
     // A varix closes every section (at its last instance), when the spec has spines.
     let varix_rows: Vec<u32> = if v.spines.is_empty() && !by_pattern {
         Vec::new()
@@ -175,16 +177,11 @@ pub fn whorl(
             standing(&body, &at, &table_spines(&v.spines, whorl_number))
         };
         let time = instances.time(kf);
-        let mut members: Vec<Node> = varix(
-            v,
-            &on_surface,
-            sigma_max,
-            thinnest(kf),
-            time,
-            &spec.textures,
-        )
-        .into_iter()
-        .collect();
+        let mut thin = fine_at(kf);
+        let mut members: Vec<Node> =
+            varix(v, &on_surface, sigma_max, &mut thin, time, &spec.textures)
+                .into_iter()
+                .collect();
         if let Some(spines) = members.first() {
             kept.push((k, spines.clone()));
         }
@@ -209,7 +206,7 @@ pub fn whorl(
                     cone,
                     &sizes,
                     [spec.canal_spines.length, spec.canal_spines.radius],
-                    thinnest(kf),
+                    &mut thin,
                     time,
                     &spec.textures.canal_spines,
                     &mut canal_noise,
@@ -218,6 +215,7 @@ pub fn whorl(
         }
         let canal_spines = canal.len();
         members.extend(canal);
+        thin.place(&at, instances.size(kf), &mut fine);
         varices.push(Varix {
             instance: k,
             canal_spines,
@@ -252,14 +250,16 @@ pub fn whorl(
                     .collect();
                 standing(&body, &at, &every_second)
             };
+            let mut thin = fine_at(kb);
             let bumps = bump_set(
                 &sites,
                 v.bump_size,
                 v.bump_spread,
-                thinnest(kb),
+                &mut thin,
                 instances.time(kb),
                 &mut bump_noise,
             );
+            thin.place(&at, instances.size(kf), &mut fine);
             let bump_look = look(&spec.textures.bumps, 0.0);
             for bump in bumps {
                 let bump = bump.looking(bump_look);
@@ -311,5 +311,6 @@ pub fn whorl(
         reach: gathered.reach,
         front: instances.growth_direction(last),
         varices,
+        fine,
     })
 }

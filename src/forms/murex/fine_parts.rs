@@ -1,0 +1,113 @@
+//! The parts of a Murex thinner than the grid's voxel — spines, ridges, canal spines, bumps —
+//! and the level of refinement each needs to be shown as the model has it
+//! ([`Refinement`](crate::blobtree::polygonize::Refinement)): the chunks a part reaches are
+//! meshed with voxels halved until the part is [`THINNEST_VOXELS`] thick, up to
+//! [`MAX_LEVEL`] times. Only a part thinner than that even at the finest level is thickened
+//! (a spine's tip) or left out (a bump).
+
+use crate::blobtree::polygonize::MAX_LEVEL;
+use crate::mesh::Bounds;
+use glam::{DAffine3, DVec3};
+
+/// Voxels (of the level it is meshed at) a spine, a ridge or a canal spine is at least thick
+/// (as a radius), so that the polygonizer shows it joined to the shell.
+pub const THINNEST_VOXELS: f64 = 1.0;
+
+/// How far about a thin part's surface the grid is refined, as a multiple of its radius: its
+/// field reaches on (to 2.2 radii alone), but where it adds to another part's the surface is
+/// no longer thin.
+const REACH: f64 = 1.5;
+
+/// The thin parts of one instance, in its generating surface's coordinates (units of D).
+pub struct FineParts {
+    /// The grid's voxel in those units.
+    voxel: f64,
+    parts: Vec<(Bounds, u32)>,
+    /// The point of each part farthest out of the shell, with the part's radius there.
+    tips: Vec<(DVec3, f64)>,
+}
+
+/// The thin parts of a whole shell, placed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Placed {
+    /// The box of each and the level of refinement it needs.
+    pub boxes: Vec<(Bounds, u32)>,
+    /// The point of each spine, canal spine and bump farthest out of the shell, with the
+    /// part's radius there: where it stands out, whatever the grid.
+    pub tips: Vec<(DVec3, f64)>,
+}
+
+impl FineParts {
+    /// The parts of an instance where the grid's voxel measures `voxel` units of D.
+    pub fn new(voxel: f64) -> Self {
+        Self {
+            voxel,
+            parts: Vec::new(),
+            tips: Vec::new(),
+        }
+    }
+
+    /// The level whose voxels show a part of radius `radius`.
+    pub fn level(&self, radius: f64) -> u32 {
+        let halvings = (THINNEST_VOXELS * self.voxel / radius).log2().ceil();
+        if halvings.is_nan() || halvings <= 0.0 {
+            0
+        } else {
+            (halvings as u32).min(MAX_LEVEL)
+        }
+    }
+
+    /// The thinnest radius shown at `level`.
+    pub fn thinnest(&self, level: u32) -> f64 {
+        THINNEST_VOXELS * self.voxel / f64::from(1u32 << level)
+    }
+
+    /// Notes a part reaching over `bounds` that needs `level`.
+    pub fn add(&mut self, bounds: Bounds, level: u32) {
+        if level > 0 && !bounds.is_empty() {
+            self.parts.push((bounds, level));
+        }
+    }
+
+    /// Notes a part that needs `level` along a tube: points on its axis, each with the radius
+    /// of its surface there. The refined boxes follow the tube segment by segment, each
+    /// [`REACH`] times as wide as the surface, rather than the box of the whole curved part.
+    pub fn add_tube(&mut self, axis: &[(DVec3, f64)], level: u32) {
+        let margin = self.thinnest(level);
+        let ball = |(c, r): (DVec3, f64)| {
+            let reach = DVec3::splat(REACH * r + margin);
+            Bounds {
+                min: c - reach,
+                max: c + reach,
+            }
+        };
+        for pair in axis.windows(2) {
+            self.add(ball(pair[0]).union(&ball(pair[1])), level);
+        }
+        if let [only] = axis {
+            self.add(ball(*only), level);
+        }
+    }
+
+    /// Notes where a part stands out farthest, with its radius there.
+    pub fn tip(&mut self, at: DVec3, radius: f64) {
+        self.tips.push((at, radius));
+    }
+
+    /// Adds the parts noted, placed by `at` (the instance's placement, scaling by `size`), to
+    /// `placed`.
+    pub fn place(self, at: &DAffine3, size: f64, placed: &mut Placed) {
+        placed
+            .boxes
+            .extend(self.parts.into_iter().map(|(b, level)| {
+                let mut moved = Bounds::EMPTY;
+                for corner in b.corners() {
+                    moved.include(at.transform_point3(corner));
+                }
+                (moved, level)
+            }));
+        (placed.tips).extend(
+            (self.tips.into_iter()).map(|(p, radius)| (at.transform_point3(p), radius * size)),
+        );
+    }
+}
