@@ -1,17 +1,17 @@
-//! Meshing one chunk by marching tetrahedra: each voxel's six tetrahedra hold zero, one or two
-//! triangles; a vertex sits where the field crosses the iso-value on a grid edge, placed by one
-//! Newton step, with the field's exact gradient as its normal and the primitives' blended
-//! pattern coordinates.
+//! Meshing one chunk (a piece of its level) by marching tetrahedra: each voxel's six
+//! tetrahedra hold zero, one or two triangles; a vertex sits where the field crosses the
+//! iso-value on a grid edge (`vertex.rs`). Where the piece meets pieces of another level, it
+//! follows the refinement's rule (`refinement.rs`) and splits its triangles at a finer
+//! neighbour's vertices.
 
 use super::grid::{CHUNK, Grid, at_local, local};
 use super::memory::{Known, Memory};
 use super::refinement::{Piece, Refinement};
 use super::sample::{class, octant_of, sample};
 use super::tetrahedra::{CUTS, DIRECTIONS, EDGES, TETRAHEDRA, edge_key, edge_of, offset};
-use crate::blobtree::blob_tree::{Node, Probe};
-use crate::blobtree::falloff::ISO;
-use crate::mesh::{Bounds, Mesh, Surface, Vertex};
-use glam::DVec3;
+use super::vertex::surface_vertex;
+use crate::blobtree::blob_tree::Node;
+use crate::mesh::{Bounds, Mesh, Vertex};
 
 /// Buffers reused from chunk to chunk.
 #[derive(Default)]
@@ -293,36 +293,4 @@ fn split_triangle(mesh: &mut Mesh, t: [u32; 3], inserts: [Vec<u32>; 3]) {
         ];
         split_triangle(mesh, [pair[0], pair[1], c], rest);
     }
-}
-
-/// The vertex where the field crosses the iso-value on the grid edge between two samples
-/// (position, field): one probe of the tree at the linear interpolation of the samples gives
-/// the field there, its exact gradient (the normal) and the primitives' blended textures, and
-/// one Newton step along the edge with that gradient moves the vertex onto the surface. It is
-/// kept off the edge's ends, so that vertices of different edges never coincide.
-pub(super) fn surface_vertex(tree: &Node, ends: [(DVec3, f64); 2]) -> Vertex {
-    let [(pa, fa), (pb, fb)] = ends;
-    let edge = pb - pa;
-    let guess = ((ISO - fa) / (fb - fa)).clamp(1e-3, 1.0 - 1e-3);
-    let Probe {
-        field,
-        gradient,
-        paint,
-    } = tree.probe(pa + edge * guess);
-    let newton = guess - (field - ISO) / gradient.dot(edge);
-    let t = if newton.is_finite() {
-        newton.clamp(1e-3, 1.0 - 1e-3)
-    } else {
-        guess
-    };
-    let p = pa + edge * t;
-    let normal = (-gradient)
-        .try_normalize()
-        .unwrap_or(edge.normalize() * -(fb - fa).signum());
-    let surface = if paint.inner {
-        Surface::Inner
-    } else {
-        Surface::Outer
-    };
-    Vertex::new(p, normal, paint.coordinates(), surface).tinted(paint.tint())
 }

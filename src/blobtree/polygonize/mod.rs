@@ -29,6 +29,7 @@ mod sample;
 #[cfg(test)]
 mod test_shell;
 mod tetrahedra;
+mod vertex;
 
 pub use chunk::{Scratch, mesh_chunk};
 pub use grid::{CHUNK, ChunkIndex, Grid};

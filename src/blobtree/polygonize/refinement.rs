@@ -17,8 +17,8 @@
 //! by chunks of different levels are never flipped as pinholes: each side would judge them by
 //! other neighbours.
 
-use super::chunk::surface_vertex;
 use super::grid::{CHUNK, ChunkIndex, Grid};
+use super::vertex::surface_vertex;
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
 use crate::mesh::{Bounds, Vertex};
