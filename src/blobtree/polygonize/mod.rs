@@ -217,18 +217,22 @@ mod tests {
     }
 
     #[test]
-    fn pieces_of_three_levels_join_into_one_closed_surface() {
+    fn pieces_of_every_level_join_into_one_closed_surface() {
         let (tree, step) = test_shell();
         let grid = Grid::new(&tree.bounds, 48);
-        // Level 2 over one box, level 1 over another overlapping it, across chunk faces.
+        // The finest level over one box, level 1 over another overlapping it, across chunk
+        // faces.
         let size = tree.bounds.max - tree.bounds.min;
         let part = |from: f64, to: f64| Bounds {
             min: tree.bounds.min + size * from,
             max: tree.bounds.min + size * to,
         };
-        let parts = [(part(0.3, 0.6), 2), (part(0.5, 0.9), 1)];
+        let parts = [(part(0.3, 0.6), MAX_LEVEL), (part(0.5, 0.9), 1)];
         let refinement = Refinement::new(grid, &parts);
-        let levels = refinement.pieces_at_levels();
+        let mut levels = [0; MAX_LEVEL as usize + 1];
+        for piece in refinement.pieces_touching(&tree.bounds) {
+            levels[piece.level as usize] += 1;
+        }
         assert!(
             levels.iter().all(|&n| n > 30),
             "pieces at each level: {levels:?}"

@@ -115,11 +115,6 @@ impl Refinement {
         refinement
     }
 
-    /// The grid of level 0.
-    pub fn grid(&self) -> &Grid {
-        &self.grid
-    }
-
     /// The grid of `level`.
     pub fn grid_at(&self, level: u32) -> Grid {
         self.grid.at_level(level)
@@ -129,15 +124,6 @@ impl Refinement {
     pub fn refined_share(&self) -> f64 {
         let refined = self.levels.iter().filter(|&&l| l > 0).count();
         refined as f64 / self.levels.len().max(1) as f64
-    }
-
-    /// How many pieces are meshed at each level.
-    pub fn pieces_at_levels(&self) -> [usize; MAX_LEVEL as usize + 1] {
-        let mut cells = [0; MAX_LEVEL as usize + 1];
-        for &l in &self.levels {
-            cells[l as usize] += 1;
-        }
-        std::array::from_fn(|l| cells[l] >> (3 * (MAX_LEVEL as usize - l)))
     }
 
     /// The level of the piece holding cell `c`, `None` beyond the grid.
