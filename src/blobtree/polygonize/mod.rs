@@ -134,7 +134,7 @@ impl ChunkWork {
                     region = region.union(&grid.region(c.chunk));
                 }
                 // As wide as the culls of its chunks reach (see `sample`).
-                let culled = tree.cull(&region.padded(grid.voxel), self.step);
+                let culled = tree.cull(&region.padded(2.0 * grid.voxel), self.step);
                 self.block = Some((block, culled));
             }
             self.next += 1;

@@ -143,7 +143,7 @@ pub(super) fn sample(
 ) -> Option<Culled> {
     field.clear();
     let region = grid.region(chunk);
-    let tree = tree.cull(&region.padded(grid.voxel), step)?;
+    let tree = tree.cull(&region.padded(2.0 * grid.voxel), step)?;
     one_side(&tree, &region).is_none().then_some(())?;
     field.resize(SIDE * SIDE * SIDE, f64::NAN);
     known(&tree, field);
@@ -180,8 +180,10 @@ pub(super) fn sample(
 /// fourteen neighbours along the edges of the Kuhn triangulation is a pinhole: a field that
 /// dips below the iso-value (or rises above it) at one sample only, in the crease where two
 /// parts meet as in a union, would give a closed bubble far smaller than a voxel, a separate
-/// piece of the mesh. Such a sample takes its neighbours' class. Neighbours beyond the chunk
-/// are evaluated from `tree` (culled a voxel wider than the chunk), so both chunks sharing a
+/// piece of the mesh. Such a sample takes its neighbours' class, and so do two neighbours
+/// alone in their class together (a bubble two samples long, which a refined grid shows where
+/// a thin gap of the hollow ends against a coarser one). Samples beyond the chunk are
+/// evaluated from `tree` (culled two voxels wider than the chunk), so both chunks sharing a
 /// sample decide alike. Where chunks of other levels are near (`border`), neighbours beyond
 /// the chunk take the values the refinement gives them, and samples those chunks hold too are
 /// never flipped: each side would judge them by other neighbours.
@@ -197,35 +199,60 @@ pub(super) fn class(
     let finest = |n: [i64; 3]| Refinement::finest(global(n), grid.level);
     inside.clear();
     inside.extend(field.iter().map(|&f| f >= ISO));
+    let within = |n: &[i64; 3]| n.iter().all(|&i| (0..SIDE as i64).contains(&i));
+    // The class of a sample, in the chunk or beyond it (two voxels at most).
+    let class_of = |n: [i64; 3], inside: &[bool]| {
+        if within(&n) {
+            inside[local(n.map(|i| i as usize))]
+        } else {
+            let f = match border {
+                Some(r) => r.value(tree, finest(n)),
+                None => tree.field(grid.sample(global(n))),
+            };
+            f >= ISO
+        }
+    };
+    let neighbours = |at: [i64; 3]| {
+        DIRECTIONS.iter().flat_map(move |d| {
+            [1i64, -1]
+                .map(|sign| -> [i64; 3] { std::array::from_fn(|k| at[k] + sign * d[k] as i64) })
+        })
+    };
+    let fixed = |n: [i64; 3]| border.is_some_and(|r| r.is_shared_across_levels(finest(n)));
+    // The neighbours of its class, up to `most` of them; those in the chunk first: most
+    // samples have one of their class there, and those beyond it cost an evaluation each.
+    let alike = |at: [i64; 3], inside: &[bool], most: usize| -> Vec<[i64; 3]> {
+        let mine = class_of(at, inside);
+        let mut found = Vec::new();
+        for n in neighbours(at)
+            .filter(within)
+            .chain(neighbours(at).filter(|n| !within(n)))
+        {
+            if class_of(n, inside) == mine {
+                found.push(n);
+                if found.len() > most {
+                    break;
+                }
+            }
+        }
+        found
+    };
     let mut flips = Vec::new();
     for z in 0..SIDE {
         for y in 0..SIDE {
             for x in 0..SIDE {
-                let here = local([x, y, z]);
-                let mine = inside[here];
                 let at = [x, y, z].map(|i| i as i64);
-                let neighbours = DIRECTIONS.iter().flat_map(|d| {
-                    [1i64, -1].map(|sign| -> [i64; 3] {
-                        std::array::from_fn(|k| at[k] + sign * d[k] as i64)
-                    })
-                });
-                let within = |n: &[i64; 3]| n.iter().all(|&i| (0..SIDE as i64).contains(&i));
-                // The neighbours in the chunk first: most samples have one of their class there,
-                // and those beyond it cost an evaluation each.
-                let alone = neighbours
-                    .clone()
-                    .filter(within)
-                    .all(|n| inside[local(n.map(|i| i as usize))] != mine)
-                    && border.is_none_or(|r| !r.is_shared_across_levels(finest(at)))
-                    && neighbours.filter(|n| !within(n)).all(|n| {
-                        let f = match border {
-                            Some(r) => r.value(tree, finest(n)),
-                            None => tree.field(grid.sample(global(n))),
-                        };
-                        (f >= ISO) != mine
-                    });
-                if alone {
-                    flips.push(here);
+                if fixed(at) {
+                    continue;
+                }
+                // Alone in its class, or one of a pair alone in theirs.
+                let pinhole = match alike(at, inside, 1)[..] {
+                    [] => true,
+                    [other] => !fixed(other) && alike(other, inside, 1) == [at],
+                    _ => false,
+                };
+                if pinhole {
+                    flips.push(local([x, y, z]));
                 }
             }
         }
