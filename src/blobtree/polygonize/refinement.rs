@@ -24,7 +24,9 @@ use crate::blobtree::falloff::ISO;
 use crate::mesh::{Bounds, Vertex};
 use glam::DVec3;
 
-/// The most times a chunk's voxels are halved.
+/// The most times a chunk's voxels are halved. The rule holds for any level, but on the
+/// Murex, whose thin parts cover most of its last whorls, halving twice quadrupled the
+/// triangles once more for spines already standing at half a voxel.
 pub const MAX_LEVEL: u32 = 1;
 
 /// Samples of the finest level along one cell: a piece of the finest level, the unit in which
