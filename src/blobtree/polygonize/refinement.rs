@@ -25,7 +25,7 @@ use crate::mesh::{Bounds, Vertex};
 use glam::DVec3;
 
 /// The most times a chunk's voxels are halved. The rule holds for any level, but on the
-/// Murex, whose thin parts cover most of its last whorls, halving twice quadrupled the
+/// Murex, whose thin parts cover most of its last whorls, halving twice nearly tripled the
 /// triangles once more for spines already standing at half a voxel.
 pub const MAX_LEVEL: u32 = 1;
 
