@@ -2,15 +2,16 @@
 //! and the level of refinement each needs to be shown as the model has it
 //! ([`Refinement`](crate::blobtree::polygonize::Refinement)): the chunks a part reaches are
 //! meshed with voxels halved until the part is [`THINNEST_VOXELS`] thick, up to
-//! [`MAX_LEVEL`] times. Only a part thinner than that even at the finest level is thickened
-//! (a spine's tip) or left out (a bump).
+//! [`MAX_LEVEL`] times. Only a part thinner than that even at the finest level is drawn at
+//! that thickness (a spine's tip, the smallest bumps); none is left out. Each part also notes
+//! where it stands out farthest, so that tests can find it in the mesh.
 
 use crate::blobtree::polygonize::MAX_LEVEL;
 use crate::mesh::Bounds;
 use glam::{DAffine3, DVec3};
 
-/// Voxels (of the level it is meshed at) a spine, a ridge or a canal spine is at least thick
-/// (as a radius), so that the polygonizer shows it joined to the shell.
+/// Voxels (of the level it is meshed at) a spine, a ridge, a canal spine or a bump is at
+/// least thick (as a radius), so that the polygonizer shows it joined to the shell.
 pub const THINNEST_VOXELS: f64 = 1.0;
 
 /// How far about a thin part's surface the grid is refined, as a multiple of its radius: its
