@@ -29,7 +29,7 @@ pub struct Scratch {
 /// The mesh of the surface of `tree` at growth step `step` inside one piece of the grid
 /// `refinement` refines; empty when the piece is proven to hold none of it. Samples and
 /// vertices that `memory` holds are taken over instead of computed. Where the piece meets
-/// pieces of other levels, it follows the refinement's rule (see [`super::refinement`]).
+/// pieces of other levels, it follows the refinement's rule (see `refinement.rs`).
 pub fn mesh_chunk(
     tree: &Node,
     refinement: &Refinement,

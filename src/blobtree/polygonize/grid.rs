@@ -1,7 +1,7 @@
 //! The voxel grid a BlobTree is polygonized on: cubic voxels over a box, cut into chunks of
 //! [`CHUNK`]³ voxels, and the numbering of the samples inside a chunk. A grid of level ℓ
 //! halves the voxels of level 0 ℓ times over the same box: a refined chunk is meshed as the
-//! 8^ℓ chunks of that grid it holds (see [`super::refinement`]).
+//! 8^ℓ chunks of that grid it holds (see `refinement.rs`).
 
 use crate::mesh::Bounds;
 use glam::DVec3;

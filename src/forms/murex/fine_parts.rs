@@ -72,7 +72,7 @@ impl FineParts {
 
     /// Notes a part that needs `level` along a tube: points on its axis, each with the radius
     /// of its surface there. The refined boxes follow the tube segment by segment, each
-    /// [`REACH`] times as wide as the surface, rather than the box of the whole curved part.
+    /// `REACH` times as wide as the surface, rather than the box of the whole curved part.
     pub fn add_tube(&mut self, axis: &[(DVec3, f64)], level: u32) {
         let margin = self.thinnest(level);
         let ball = |(c, r): (DVec3, f64)| {
