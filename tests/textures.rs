@@ -137,15 +137,19 @@ fn the_default_spines_darken_from_base_to_tip() {
         },
         edge: 1.0,
     };
-    let tree = varix(
-        &varices,
-        &[standing],
-        1.0,
-        &mut FineParts::new(0.0),
-        0.0,
-        &textures,
-    )
-    .expect("a spine");
+    // One spine on its own, with no grid to refine for.
+    let spine = |textures: &TexturesSpec| {
+        varix(
+            &varices,
+            &[standing],
+            1.0,
+            &mut FineParts::new(0.0),
+            0.0,
+            textures,
+        )
+        .expect("a spine")
+    };
+    let tree = spine(&textures);
     let (length, base) = (varices.length, varices.radius);
     let direction = outward(20.0);
     let colours: Vec<[f64; 4]> = (1..20)
@@ -169,15 +173,7 @@ fn the_default_spines_darken_from_base_to_tip() {
     // With the pattern chosen instead, the spine shows the pattern.
     let mut patterned = textures;
     patterned.spines.look = TextureKind::Pattern;
-    let tree = varix(
-        &varices,
-        &[standing],
-        1.0,
-        &mut FineParts::new(0.0),
-        0.0,
-        &patterned,
-    )
-    .unwrap();
+    let tree = spine(&patterned);
     assert_eq!(
         tree.probe(direction * 1.5).paint.tint(),
         [0.0, 0.0, 0.0, 1.0]

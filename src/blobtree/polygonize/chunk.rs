@@ -65,7 +65,9 @@ pub fn mesh_chunk(
         _ => Vec::new(),
     };
     scratch.known.clear();
-    let culled = match &memory {
+    // What is known already: the cache's samples and vertices outside the changed box, or
+    // what the neighbours handed over; then the samples another level fixes.
+    match &memory {
         Memory::Cache { cache, changed } if !cache.field.is_empty() => {
             let unchanged = |(lo, hi): ([usize; 3], [usize; 3])| {
                 let reach = Bounds {
@@ -79,41 +81,37 @@ pub fn mesh_chunk(
                     .filter(|(key, _)| unchanged(edge(**key)))
                     .map(|(key, v)| (*key, *v)),
             );
-            sample(
-                tree,
-                grid,
-                chunk,
-                step,
-                &mut scratch.field,
-                |culled, field| {
-                    for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
-                        if old.is_finite() && !changed.contains(grid.sample(global(at_local(i)))) {
-                            *f = *old;
-                        }
-                    }
-                    fix_border(culled, field);
-                },
-            )
         }
         _ => {
             for face in &received {
                 scratch.known.extend(face.vertices.iter().copied());
             }
-            sample(
-                tree,
-                grid,
-                chunk,
-                step,
-                &mut scratch.field,
-                |culled, field| {
+        }
+    }
+    let culled = sample(
+        tree,
+        grid,
+        chunk,
+        step,
+        &mut scratch.field,
+        |culled, field| {
+            match &memory {
+                Memory::Cache { cache, changed } if !cache.field.is_empty() => {
+                    for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
+                        if old.is_finite() && !changed.contains(grid.sample(global(at_local(i)))) {
+                            *f = *old;
+                        }
+                    }
+                }
+                _ => {
                     for &(i, f) in received.iter().flat_map(|face| &face.samples) {
                         field[i] = f;
                     }
-                    fix_border(culled, field);
-                },
-            )
-        }
-    };
+                }
+            }
+            fix_border(culled, field);
+        },
+    );
     let Some(culled) = culled else {
         match memory {
             Memory::Cache { cache, .. } => {
