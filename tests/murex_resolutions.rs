@@ -97,17 +97,7 @@ fn check_preset(id: &str) {
         let what = format!("{id} at {resolution}³");
         assert_closed_and_outward(&mesh, &what);
         let pieces = pieces(&mesh);
-        // Not yet met: at 384³ murex-pecten keeps one sliver of 72 triangles near the apex,
-        // where the opening leaves a wall a quarter of a voxel thick that no thin part's
-        // refinement reaches (issue 26, part 3).
-        if id == "murex-pecten" && resolution == 384 {
-            assert!(
-                pieces.len() <= 2 && pieces[1..].iter().all(|&n| n < 100),
-                "{what}: {pieces:?}"
-            );
-        } else {
-            assert_eq!(pieces.len(), 1, "{what}: pieces {pieces:?}");
-        }
+        assert_eq!(pieces.len(), 1, "{what}: pieces {pieces:?}");
     }
 }
 

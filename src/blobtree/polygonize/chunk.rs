@@ -125,12 +125,13 @@ pub fn mesh_chunk(
         return Mesh::default();
     };
     class(
-        &culled.chunk,
+        tree,
+        step,
         grid,
-        first,
+        chunk,
         &scratch.field,
         &mut scratch.inside,
-        border,
+        refinement,
     );
     scratch.vertex_of.resize(EDGES, u32::MAX);
     let mut mesh = Mesh::default();

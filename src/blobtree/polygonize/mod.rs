@@ -39,6 +39,7 @@ pub use sample::surface_box;
 
 use crate::blobtree::blob_tree::Node;
 use crate::mesh::{Bounds, Mesh};
+use sample::REACH;
 use std::collections::HashMap;
 
 /// Chunks along each side of the blocks the whole tree is culled to before their chunks are
@@ -133,8 +134,8 @@ impl ChunkWork {
                 {
                     region = region.union(&grid.region(c.chunk));
                 }
-                // As wide as the culls of its chunks reach (see `sample`).
-                let culled = tree.cull(&region.padded(2.0 * grid.voxel), self.step);
+                // As wide as the classes deciding its chunks' specks reach (see `sample.rs`).
+                let culled = tree.cull(&region.padded(REACH * grid.voxel), self.step);
                 self.block = Some((block, culled));
             }
             self.next += 1;
@@ -214,6 +215,64 @@ mod tests {
             }
         }
         edges
+    }
+
+    #[test]
+    fn specks_the_grid_makes_are_dropped_and_parts_it_can_draw_are_kept() {
+        use crate::blobtree::falloff::support_of;
+        use crate::blobtree::primitive::Primitive;
+        use crate::blobtree::texture_blend::Texture;
+        use glam::DVec3;
+        // Voxels of side 1, samples at whole coordinates, chunk faces at 6, 14, 22, 30.
+        let grid = Grid::new(
+            &Bounds {
+                min: DVec3::ZERO,
+                max: DVec3::splat(40.0),
+            },
+            40,
+        );
+        let leaf = |primitive| Node::leaf(primitive, Texture::around(0.0));
+        let ball = |centre: DVec3, radius: f64| {
+            leaf(Primitive::Point {
+                centre,
+                radius: support_of(radius),
+            })
+        };
+        let rod = |from: DVec3, to: DVec3| {
+            leaf(Primitive::Cone {
+                from,
+                to,
+                radii: [0.3; 2].map(support_of),
+            })
+        };
+        // Holding one sample each: a bubble in a chunk's face, a speck at a chunk's corner
+        // and one inside a chunk; a rod five samples long across a chunk's face; and a ball
+        // 27 samples large, which the grid draws.
+        let bubble = DVec3::new(14.0, 10.0, 10.0);
+        let specks = [DVec3::splat(30.0), DVec3::new(26.0, 10.0, 27.0)];
+        let (rod_from, rod_to) = (DVec3::new(20.0, 25.0, 10.0), DVec3::new(24.0, 25.0, 10.0));
+        let kept = DVec3::new(30.0, 10.0, 30.0);
+        let body = Node::difference(ball(DVec3::splat(10.0), 6.0), ball(bubble, 0.3));
+        let parts = [body, rod(rod_from, rod_to), ball(kept, 1.8)];
+        let specks_and_all = specks.iter().map(|&c| ball(c, 0.3));
+        let tree = Node::union(parts.into_iter().chain(specks_and_all).collect());
+        let mesh = polygonize(&tree, &Refinement::uniform(grid), 0);
+        let near = |p: DVec3, reach: f64| {
+            (mesh.vertices.iter())
+                .any(|v| (DVec3::from(v.position.map(f64::from)) - p).length() < reach)
+        };
+        for p in [bubble, rod_from, (rod_from + rod_to) * 0.5, rod_to]
+            .into_iter()
+            .chain(specks)
+        {
+            assert!(!near(p, 1.0), "a speck at {p} is drawn");
+        }
+        assert!(near(kept, 2.0), "the ball at {kept} is not drawn");
+        let edges = directed_edges(&mesh);
+        assert!(
+            (edges.iter()).all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)),
+            "the mesh is not closed"
+        );
     }
 
     #[test]

@@ -14,8 +14,8 @@
 //! that edge's own vertex, computed from its ends, so both sides share it bit for bit; the
 //! coarse side splits its triangle edge at the finer side's vertices inside the coarse
 //! triangle (`chunk.rs`), so that every edge of the joined mesh has two faces. Samples held
-//! by chunks of different levels are never flipped as pinholes: each side would judge them by
-//! other neighbours.
+//! by chunks of different levels are never flipped as part of a speck (`sample.rs`): each
+//! side would judge them by other neighbours.
 
 use super::grid::{CHUNK, ChunkIndex, Grid};
 use super::vertex::surface_vertex;
@@ -248,7 +248,7 @@ impl Refinement {
     }
 
     /// Whether pieces of different levels hold the sample with finest index `q`: its class
-    /// is then never flipped as a pinhole.
+    /// is then never flipped as part of a speck.
     pub(super) fn is_shared_across_levels(&self, q: [i64; 3]) -> bool {
         let (lo, hi) = self.levels_holding(&[q]);
         lo < hi

@@ -1,7 +1,7 @@
 //! Sampling a chunk's field with interval culling: blocks that bounds on the field keep on one
 //! side of the iso-value are marked proven and never evaluated, the rest split in eight down
-//! to a few voxels; each octant is sampled with the tree culled to it. Samples alone in their
-//! class among their neighbours (pinholes) take their neighbours' class.
+//! to a few voxels; each octant is sampled with the tree culled to it. Small components of
+//! one class (specks the grid, not the model, makes) take the other class.
 
 use super::grid::{CHUNK, ChunkIndex, Grid, SIDE, at_local, local};
 use super::refinement::Refinement;
@@ -9,6 +9,7 @@ use super::tetrahedra::{DIRECTIONS, offset};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
 use crate::mesh::Bounds;
+use std::collections::{HashMap, HashSet};
 
 /// Which side of the iso-value the field of `tree` is proven to keep throughout `region`, by
 /// the bounds [`Node::range`] gives over the ball around it: `Some(true)` inside, `Some(false)`
@@ -119,8 +120,8 @@ impl Sampler<'_> {
 
 /// The trees a chunk the surface passes through is meshed with.
 pub(super) struct Culled {
-    /// Culled to the chunk and one voxel more on every side: the neighbours that decide a
-    /// pinhole (see `class`).
+    /// Culled to the chunk and two voxels more on every side: the corners of a coarser
+    /// piece's voxel that a sample on its face is interpolated from.
     pub(super) chunk: Node,
     /// Culled to each octant ([`octant_of`]); `None` where the field is zero throughout it or
     /// proven on one side of the iso-value.
@@ -175,90 +176,136 @@ pub(super) fn sample(
     })
 }
 
-/// Classifies a chunk's samples (`field`, the chunk's first sample at global index `first`)
-/// as inside or outside the surface, into `inside`. A sample alone in its class among its
-/// fourteen neighbours along the edges of the Kuhn triangulation is a pinhole: a field that
-/// dips below the iso-value (or rises above it) at one sample only, in the crease where two
-/// parts meet as in a union, would give a closed bubble far smaller than a voxel, a separate
-/// piece of the mesh. Such a sample takes its neighbours' class, and so do two neighbours
-/// alone in their class together (a bubble two samples long, which a refined grid shows where
-/// a thin gap of the hollow ends against a coarser one). Samples beyond the chunk are
-/// evaluated from `tree` (culled two voxels wider than the chunk), so both chunks sharing a
-/// sample decide alike. Where chunks of other levels are near (`border`), neighbours beyond
-/// the chunk take the values the refinement gives them, and samples those chunks hold too are
-/// never flipped: each side would judge them by other neighbours.
+/// Most samples a piece of one class holds for the grid, not the model, to have made it: a
+/// component of inside (or outside) samples, joined along the edges of the Kuhn
+/// triangulation, no larger than this is a speck, and takes the other class. A field that
+/// dips below the iso-value (or rises above it) at a sample or two, in the crease where two
+/// parts meet as in a union, would give a closed bubble far smaller than a voxel; the thin
+/// end of a wedge that a difference leaves (the wall between the opening and the previous
+/// whorl tapering to nothing) is caught by a grid as a row of inside samples the row beside
+/// it misses, a separate sliver. Either would be a separate piece of the mesh. Twelve
+/// samples is a row across a chunk and a half, or a blob under three voxels across: any part
+/// of a model that small is below what the grid can draw.
+const SPECK: usize = 12;
+
+/// Voxels beyond its chunk that the classes deciding a chunk's specks reach: a speck's
+/// samples lie within [`SPECK`] of the chunk, and a sample on the face of a coarser piece is
+/// interpolated from that piece's corners, a coarser voxel (two finer ones) further.
+pub(super) const REACH: f64 = SPECK as f64 + 2.0;
+
+/// The neighbours within its chunk of the chunk's sample `i`, along the edges of the Kuhn
+/// triangulation.
+fn neighbours_within(i: usize) -> impl Iterator<Item = usize> {
+    let at = at_local(i);
+    DIRECTIONS.iter().flat_map(move |d| {
+        let up = (0..3).all(|k| at[k] + d[k] < SIDE);
+        let down = (0..3).all(|k| at[k] >= d[k]);
+        let step = local(*d);
+        [up.then(|| i + step), down.then(|| i - step)]
+            .into_iter()
+            .flatten()
+    })
+}
+
+/// Classifies a chunk's samples (`field`) as inside or outside the surface, into `inside`:
+/// each by its own side of the iso-value, but for specks (see [`SPECK`]), which take the
+/// other class. A speck may cross the chunk's faces: samples beyond the chunk are evaluated
+/// from `tree` at growth step `step` (culled [`REACH`] voxels wider than the chunk, once a
+/// chunk needs them) and take the values `refinement` gives them, as the chunks holding them
+/// do, so every chunk holding part of a speck decides alike. A component holding samples
+/// shared by pieces of different levels is never flipped: each side would judge it by
+/// other neighbours.
 pub(super) fn class(
     tree: &Node,
+    step: u32,
     grid: &Grid,
-    first: [i64; 3],
+    chunk: ChunkIndex,
     field: &[f64],
     inside: &mut Vec<bool>,
-    border: Option<&Refinement>,
+    refinement: &Refinement,
 ) {
+    let first = Grid::first_sample(chunk);
     let global = |n: [i64; 3]| -> [i64; 3] { std::array::from_fn(|k| first[k] + n[k]) };
     let finest = |n: [i64; 3]| Refinement::finest(global(n), grid.level);
     inside.clear();
     inside.extend(field.iter().map(|&f| f >= ISO));
     let within = |n: &[i64; 3]| n.iter().all(|&i| (0..SIDE as i64).contains(&i));
-    // The class of a sample, in the chunk or beyond it (two voxels at most).
-    let class_of = |n: [i64; 3], inside: &[bool]| {
-        if within(&n) {
-            inside[local(n.map(|i| i as usize))]
-        } else {
-            let f = match border {
-                Some(r) => r.value(tree, finest(n)),
-                None => tree.field(grid.sample(global(n))),
-            };
-            f >= ISO
-        }
-    };
+    let index = |n: [i64; 3]| local(n.map(|i| i as usize));
     let neighbours = |at: [i64; 3]| {
         DIRECTIONS.iter().flat_map(move |d| {
             [1i64, -1]
                 .map(|sign| -> [i64; 3] { std::array::from_fn(|k| at[k] + sign * d[k] as i64) })
         })
     };
-    let fixed = |n: [i64; 3]| border.is_some_and(|r| r.is_shared_across_levels(finest(n)));
-    // The neighbours of its class, up to `most` of them; those in the chunk first: most
-    // samples have one of their class there, and those beyond it cost an evaluation each.
-    let alike = |at: [i64; 3], inside: &[bool], most: usize| -> Vec<[i64; 3]> {
-        let mine = class_of(at, inside);
-        let mut found = Vec::new();
-        for n in neighbours(at)
-            .filter(within)
-            .chain(neighbours(at).filter(|n| !within(n)))
-        {
-            if class_of(n, inside) == mine {
-                found.push(n);
-                if found.len() > most {
-                    break;
+    let fixed = |n: [i64; 3]| refinement.is_shared_across_levels(finest(n));
+    // The classes of samples beyond the chunk, evaluated once each.
+    let mut reach: Option<Option<Node>> = None;
+    let mut beyond: HashMap<[i64; 3], bool> = HashMap::new();
+    let mut class_beyond = |n: [i64; 3]| {
+        *beyond.entry(n).or_insert_with(|| {
+            let reach = reach.get_or_insert_with(|| {
+                tree.cull(&grid.region(chunk).padded(REACH * grid.voxel), step)
+            });
+            let f = reach.as_ref().map_or(0.0, |tree| {
+                (refinement.interpolated(tree, finest(n)))
+                    .unwrap_or_else(|| tree.field(grid.sample(global(n))))
+            });
+            f >= ISO
+        })
+    };
+    let mut seen = vec![false; inside.len()];
+    let mut flip = vec![false; inside.len()];
+    let mut members = Vec::new();
+    for start in 0..inside.len() {
+        if seen[start] {
+            continue;
+        }
+        seen[start] = true;
+        let mine = inside[start];
+        // The component within the chunk.
+        members.clear();
+        members.push(start);
+        let mut next = 0;
+        while next < members.len() {
+            for n in neighbours_within(members[next]) {
+                if !seen[n] && inside[n] == mine {
+                    seen[n] = true;
+                    members.push(n);
                 }
             }
+            next += 1;
         }
-        found
-    };
-    let mut flips = Vec::new();
-    for z in 0..SIDE {
-        for y in 0..SIDE {
-            for x in 0..SIDE {
-                let at = [x, y, z].map(|i| i as i64);
-                if fixed(at) {
-                    continue;
-                }
-                // Alone in its class, or one of a pair alone in theirs.
-                let pinhole = match alike(at, inside, 1)[..] {
-                    [] => true,
-                    [other] => !fixed(other) && alike(other, inside, 1) == [at],
-                    _ => false,
+        if members.len() > SPECK {
+            continue;
+        }
+        // Where it reaches the chunk's faces, the rest of it beyond them (and back in the
+        // chunk), up to one sample more than a speck holds.
+        let mut found: Vec<[i64; 3]> = (members.iter())
+            .map(|&i| at_local(i).map(|c| c as i64))
+            .collect();
+        let mut component: HashSet<[i64; 3]> = found.iter().copied().collect();
+        let mut next = 0;
+        while next < found.len() && component.len() <= SPECK {
+            for n in neighbours(found[next]) {
+                let alike = if within(&n) {
+                    inside[index(n)] == mine
+                } else {
+                    class_beyond(n) == mine
                 };
-                if pinhole {
-                    flips.push(local([x, y, z]));
+                if alike && component.insert(n) {
+                    found.push(n);
                 }
+            }
+            next += 1;
+        }
+        if component.len() <= SPECK && !component.iter().any(|&n| fixed(n)) {
+            for n in component.into_iter().filter(within) {
+                flip[index(n)] = true;
             }
         }
     }
-    for i in flips {
-        inside[i] = !inside[i];
+    for (class, flip) in inside.iter_mut().zip(flip) {
+        *class ^= flip;
     }
 }
 
