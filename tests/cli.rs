@@ -299,23 +299,28 @@ fn exports_that_cannot_be_made_say_why_and_leave_no_file() {
 
 #[test]
 fn a_link_that_would_make_an_implicit_shell_empty_is_refused_naming_its_key() {
-    // Each of these once grew to nothing: exit 0 and a file with no triangles.
-    for (link, key) in [
+    // Each of these once grew to nothing: exit 0 and a file with no triangles. The message
+    // names the key and the value as the link wrote it.
+    for (link, key, value) in [
         (
             "v=1&preset=murex-cabritii&form.spiral.r0=1e-300",
             "form.spiral.r0",
+            "1e-300",
         ),
         (
             "v=1&preset=murex-cabritii&form.generator.points=0,0,0,1e300",
             "form.generator.points",
+            "1e300",
         ),
         (
             "v=1&preset=implicit-whorl&form.generator.points=0,0,0,1e-300",
             "form.generator.points",
+            "1e-300",
         ),
         (
             "v=1&preset=murex-cabritii&form.opening.inside.points=1e300,0,0,0.6",
             "form.opening.inside.points",
+            "1e300",
         ),
     ] {
         let out = temp("empty.stl");
@@ -324,6 +329,7 @@ fn a_link_that_would_make_an_implicit_shell_empty_is_refused_naming_its_key() {
         let stderr = String::from_utf8_lossy(&result.stderr);
         assert!(!result.status.success(), "{link} succeeded");
         assert!(stderr.contains(key), "{link}: {stderr}");
+        assert!(stderr.contains(value), "{link}: {stderr}");
         assert!(!std::path::Path::new(&out).exists(), "{link} wrote a file");
     }
 }

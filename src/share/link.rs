@@ -181,7 +181,7 @@ fn parse_value(
             let x = real(text)?;
             let clamped = x.clamp(min, max);
             let note = (clamped != x)
-                .then(|| format!("{x} is outside the range {min} to {max}; used {clamped}"));
+                .then(|| format!("{text} is outside the range {min} to {max}; used {clamped}"));
             Ok((float_value(clamped), note))
         }
         (Some(Kind::Integer { min, max }), _) => {
