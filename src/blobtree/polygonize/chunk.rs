@@ -65,7 +65,7 @@ pub fn mesh_chunk(
         _ => Vec::new(),
     };
     scratch.known.clear();
-    // What is known already: the cache's samples and vertices outside the changed box, or
+    // What is known already: the cache's samples and vertices outside the changed boxes, or
     // what the neighbours handed over; then the samples another level fixes.
     match &memory {
         Memory::Cache { cache, changed } if !cache.field.is_empty() => {
@@ -74,7 +74,7 @@ pub fn mesh_chunk(
                     min: grid.sample(global(lo)),
                     max: grid.sample(global(hi)),
                 };
-                !changed.intersects(&reach)
+                !changed.iter().any(|b| b.intersects(&reach))
             };
             scratch.known.extend(
                 (cache.vertices.iter())
@@ -98,7 +98,8 @@ pub fn mesh_chunk(
             match &memory {
                 Memory::Cache { cache, changed } if !cache.field.is_empty() => {
                     for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
-                        if old.is_finite() && !changed.contains(grid.sample(global(at_local(i)))) {
+                        let at = grid.sample(global(at_local(i)));
+                        if old.is_finite() && !changed.iter().any(|b| b.contains(at)) {
                             *f = *old;
                         }
                     }

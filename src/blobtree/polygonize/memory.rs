@@ -1,6 +1,6 @@
 //! What meshing a chunk takes over instead of computing it again: the samples and vertices
 //! its neighbours handed across their shared faces ([`Seams`]), or what meshing the same chunk
-//! left before the tree changed in a box ([`ChunkCache`]).
+//! left before the tree changed in a few boxes ([`ChunkCache`]).
 
 use super::grid::{CHUNK, Grid, SIDE, local};
 use super::refinement::Piece;
@@ -8,8 +8,8 @@ use super::tetrahedra::{DIRECTIONS, EDGES, edge_key, edge_of};
 use crate::mesh::{Bounds, Vertex};
 use std::collections::HashMap;
 
-/// What meshing a chunk leaves behind for meshing it again after a change confined to a box:
-/// outside that box the field is unchanged, bit for bit, so samples and vertices there are
+/// What meshing a chunk leaves behind for meshing it again after a change confined to a few
+/// boxes: outside them the field is unchanged, bit for bit, so samples and vertices there are
 /// taken over instead of computed again.
 #[derive(Clone, Debug, Default)]
 pub struct ChunkCache {
@@ -100,11 +100,11 @@ impl Seams {
 
 /// What meshing a chunk takes over instead of computing it.
 pub enum Memory<'a> {
-    /// What meshing the same chunk left before the tree changed inside `changed` (growth);
-    /// the cache is rewritten.
+    /// What meshing the same chunk left before the tree changed inside the boxes `changed`
+    /// (growth); the cache is rewritten.
     Cache {
         cache: &'a mut ChunkCache,
-        changed: &'a Bounds,
+        changed: &'a [Bounds],
     },
     /// What the neighbours meshed before it from the same tree at the same step handed it; it
     /// hands on its own faces in turn.

@@ -17,7 +17,7 @@
 //! pattern coordinates the primitives' blended coordinates. When a whole surface is meshed at
 //! once, each chunk hands the samples and vertices on its faces to the neighbours that share
 //! them ([`Seams`]); a chunk meshed again as it grows takes over what it computed before,
-//! outside the box its tree changed in ([`ChunkCache`]). Chunks where thin parts stand are
+//! outside the boxes its tree changed in ([`ChunkCache`]). Chunks where thin parts stand are
 //! refined: meshed as pieces of a grid of halved voxels, joined to their neighbours without
 //! cracks ([`Refinement`]).
 
@@ -63,6 +63,15 @@ pub fn polygonize(tree: &Node, refinement: &Refinement, step: u32) -> Mesh {
         mesh.append(&m);
     }
     mesh
+}
+
+impl Refinement {
+    /// The pieces meshed whose meshes depend on the field inside `b`: those whose samples
+    /// reach into it, or whose specks' classes do (within [`REACH`] voxels of their level,
+    /// see `sample.rs`). Growth re-meshes them when the tree changes inside `b`.
+    pub fn pieces_depending_on(&self, b: &Bounds) -> Vec<Piece> {
+        self.pieces_near(b, REACH)
+    }
 }
 
 /// Chunks meshed one after another from one tree at one growth step, a few at a time if need
@@ -185,7 +194,7 @@ mod tests {
             let mut cache = ChunkCache::default();
             let memory = Memory::Cache {
                 cache: &mut cache,
-                changed: &tree.bounds,
+                changed: std::slice::from_ref(&tree.bounds),
             };
             alone.append(&mesh_chunk(
                 &tree,
@@ -272,6 +281,73 @@ mod tests {
         assert!(
             (edges.iter()).all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)),
             "the mesh is not closed"
+        );
+    }
+
+    #[test]
+    fn a_piece_meshes_alike_whatever_changes_beyond_what_it_depends_on() {
+        use crate::blobtree::falloff::support_of;
+        use crate::blobtree::primitive::Primitive;
+        use crate::blobtree::texture_blend::Texture;
+        use glam::DVec3;
+        // Voxels of side 1, samples at whole coordinates, chunk faces at 6, 14, 22, 30, ….
+        let grid = Grid::new(
+            &Bounds {
+                min: DVec3::ZERO,
+                max: DVec3::splat(80.0),
+            },
+            80,
+        );
+        let refinement = Refinement::uniform(grid);
+        let rod = |from: f64, to: f64| {
+            let at = |x: f64| DVec3::new(x, 25.0, 10.0);
+            Node::leaf(
+                Primitive::Cone {
+                    from: at(from),
+                    to: at(to),
+                    radii: [0.3; 2].map(support_of),
+                },
+                Texture::around(0.0),
+            )
+        };
+        let ball = Node::leaf(
+            Primitive::Point {
+                centre: DVec3::splat(60.0),
+                radius: support_of(8.0),
+            },
+            Texture::around(0.0),
+        );
+        // A rod five samples long across the chunk face at x = 30: a speck. A second rod,
+        // ending where the first starts, makes both one part the grid draws; the box of what
+        // it adds ends a chunk before the first rod's far end.
+        let before = Node::union(vec![ball.clone(), rod(28.0, 32.0)]);
+        let after = Node::union(vec![ball, rod(28.0, 32.0), rod(14.0, 28.0)]);
+        let changed = rod(14.0, 28.0).bounds;
+        let mesh = |tree: &Node, piece: Piece| {
+            let mut cache = ChunkCache::default();
+            let memory = Memory::Cache {
+                cache: &mut cache,
+                changed: std::slice::from_ref(&tree.bounds),
+            };
+            mesh_chunk(tree, &refinement, piece, 0, &mut Scratch::default(), memory)
+        };
+        let depending: Vec<Piece> = refinement.pieces_depending_on(&changed);
+        let touching = refinement.pieces_touching(&changed);
+        let all = refinement.pieces_touching(&after.bounds);
+        let (mut independent, mut changed_beyond) = (0, 0);
+        for piece in all {
+            let alike = mesh(&before, piece).content_hash() == mesh(&after, piece).content_hash();
+            if !depending.contains(&piece) {
+                assert!(alike, "{piece:?} changed, not depending on {changed:?}");
+                independent += 1;
+            } else if !touching.contains(&piece) && !alike {
+                changed_beyond += 1;
+            }
+        }
+        assert!(independent > 100, "{independent} pieces independent");
+        assert!(
+            changed_beyond > 0,
+            "no piece beyond the box changed: the speck is not where the test needs it"
         );
     }
 

@@ -150,11 +150,20 @@ impl Refinement {
 
     /// The pieces meshed, each at its level, whose samples reach into `b`.
     pub fn pieces_touching(&self, b: &Bounds) -> Vec<Piece> {
+        self.pieces_near(b, 0.0)
+    }
+
+    /// The pieces meshed, each at its level, whose samples come within `voxels` voxels of
+    /// their level of `b`.
+    pub(super) fn pieces_near(&self, b: &Bounds, voxels: f64) -> Vec<Piece> {
         (0..=MAX_LEVEL)
             .flat_map(move |level| {
-                (self.grid_at(level).chunks_touching(b).into_iter())
-                    .map(move |chunk| Piece { level, chunk })
-                    .filter(|&p| self.is_meshed(p))
+                let grid = self.grid_at(level);
+                (grid
+                    .chunks_touching(&b.padded(voxels * grid.voxel))
+                    .into_iter())
+                .map(move |chunk| Piece { level, chunk })
+                .filter(|&p| self.is_meshed(p))
             })
             .collect()
     }

@@ -18,7 +18,7 @@ use crate::shape::{GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::form::implicit::ImplicitSpec;
 use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Voxels along the longest side when the shell's extent is estimated, for framing.
 const ESTIMATE_RESOLUTION: u32 = 32;
@@ -79,8 +79,8 @@ pub struct ImplicitMesh {
     pending: Vec<(u32, Mesh)>,
     /// What meshing each live piece left behind, for meshing it again.
     caches: BTreeMap<u32, ChunkCache>,
-    /// The box of each instance's field, by growth step.
-    reach: Vec<Bounds>,
+    /// The boxes of what each growth step changes, by step.
+    reach: Vec<Vec<Bounds>>,
     done: usize,
     /// The last instance shown.
     shown: Option<u32>,
@@ -107,13 +107,15 @@ impl ImplicitMesh {
         let refinement = Refinement::new(Grid::new(&tree.bounds, spec.resolution), &fine.boxes);
         let mut last_reach = BTreeMap::new();
         let mut jobs = Vec::new();
-        for (k, b) in reach.iter().enumerate() {
-            if b.is_empty() {
-                continue;
-            }
-            for piece in refinement.pieces_touching(b) {
-                jobs.push((k as u32, piece));
-                last_reach.insert(refinement.id(piece), k as u32);
+        for (k, boxes) in reach.iter().enumerate() {
+            let ids: BTreeSet<u32> = (boxes.iter())
+                .filter(|b| !b.is_empty())
+                .flat_map(|b| refinement.pieces_depending_on(b))
+                .map(|piece| refinement.id(piece))
+                .collect();
+            for id in ids {
+                jobs.push((k as u32, refinement.piece(id)));
+                last_reach.insert(id, k as u32);
             }
         }
         let bounds = surface_box(

@@ -9,9 +9,9 @@ use crate::mesh::Bounds;
 use crate::spec::form::implicit::{Blending, GeneratorSpec};
 use glam::{DAffine3, DVec3};
 
-/// A BlobTree being gathered, with the box of what each growth step adds or takes away.
+/// A BlobTree being gathered, with the boxes of what each growth step adds or takes away.
 pub(crate) struct Gathered {
-    pub(crate) reach: Vec<Bounds>,
+    pub(crate) reach: Vec<Vec<Bounds>>,
 }
 
 impl Gathered {
@@ -31,8 +31,8 @@ impl Gathered {
     ) -> Node {
         let node = Node::transform(at, node).living(birth, death);
         for step in [birth, death] {
-            if let Some(b) = self.reach.get_mut(step as usize) {
-                *b = b.union(&node.bounds);
+            if let Some(boxes) = self.reach.get_mut(step as usize) {
+                boxes.push(node.bounds);
             }
         }
         node

@@ -32,8 +32,11 @@ pub struct Whorl {
     pub tree: Node,
     /// Generating surfaces placed: one growth step each.
     pub instances: u32,
-    /// The box of each instance's field, by growth step: where adding it changes the shell.
-    pub reach: Vec<Bounds>,
+    /// The boxes of what each growth step adds or takes away, by step: where it changes the
+    /// shell. Kept apart, not as one box about them all: a step adds a generating surface at
+    /// the growing edge and takes away what lived there a whorl before, and the box about
+    /// both would hold most of the shell.
+    pub reach: Vec<Vec<Bounds>>,
     /// The direction the opening faces.
     pub front: DVec3,
     /// What stands on each varix, from the apex to the opening.
@@ -71,7 +74,7 @@ pub fn whorl(
     let instances = Instances::new(spec, rows);
     let count = instances.count;
     let mut gathered = Gathered {
-        reach: vec![Bounds::EMPTY; count as usize],
+        reach: vec![Vec::new(); count as usize],
     };
     let mut sections = sections(
         &spec.generator,
