@@ -67,8 +67,8 @@ pub fn polygonize(tree: &Node, refinement: &Refinement, step: u32) -> Mesh {
 
 impl Refinement {
     /// The pieces meshed whose meshes depend on the field inside `b`: those whose samples
-    /// reach into it, or whose specks' classes do (within [`REACH`] voxels of their level,
-    /// see `sample.rs`). Growth re-meshes them when the tree changes inside `b`.
+    /// reach into it, or whose specks' classes do (within `REACH` voxels of their level, see
+    /// `sample.rs`). Growth re-meshes them when the tree changes inside `b`.
     pub fn pieces_depending_on(&self, b: &Bounds) -> Vec<Piece> {
         self.pieces_near(b, REACH)
     }

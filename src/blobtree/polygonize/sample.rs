@@ -184,13 +184,13 @@ pub(super) fn sample(
 /// end of a wedge that a difference leaves (the wall between the opening and the previous
 /// whorl tapering to nothing) is caught by a grid as a row of inside samples the row beside
 /// it misses, a separate sliver. Either would be a separate piece of the mesh. Twelve
-/// samples is a row across a chunk and a half, or a blob under three voxels across: any part
-/// of a model that small is below what the grid can draw.
+/// samples is a row eleven voxels long (under a chunk and a half), or a blob under three
+/// voxels across: any part of a model that small is below what the grid can draw.
 const SPECK: usize = 12;
 
 /// Voxels beyond its chunk that the classes deciding a chunk's specks reach: a speck's
 /// samples lie within [`SPECK`] of the chunk, and a sample on the face of a coarser piece is
-/// interpolated from that piece's corners, a coarser voxel (two finer ones) further.
+/// interpolated from that piece's corners, at most a coarser voxel (two finer ones) further.
 pub(super) const REACH: f64 = SPECK as f64 + 2.0;
 
 /// The neighbours within its chunk of the chunk's sample `i`, along the edges of the Kuhn

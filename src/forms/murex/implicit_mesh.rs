@@ -1,11 +1,13 @@
 //! An implicit shell grown like every other: each growth step adds one generating surface to
-//! the BlobTree and re-meshes only the chunks its field reaches. A growth step here is one
-//! chunk's meshing, so that a frame's time budget can stop between any two; the chunks of one
-//! instance are shown together once all are meshed, so that what is on screen is always one
-//! closed surface. A chunk that no later instance reaches is final and moves to the permanent
-//! mesh; the others, still open to change, make up the transient edge mesh. Finishing meshes
-//! every chunk not yet final once, as it ends up: those chunks are pieces that other threads
-//! may mesh apart ([`PieceMaker`]), joined in the order of their numbers.
+//! the BlobTree and re-meshes only the chunks whose meshes depend on what it changes: those
+//! within the boxes of the parts it adds or takes away, or near enough that the classes
+//! deciding their specks reach into them (`Refinement::pieces_depending_on`). A growth step
+//! here is one chunk's meshing, so that a frame's time budget can stop between any two; the
+//! chunks of one instance are shown together once all are meshed, so that what is on screen is
+//! always one closed surface. A chunk that no later instance reaches is final and moves to the
+//! permanent mesh; the others, still open to change, make up the transient edge mesh.
+//! Finishing meshes every chunk not yet final once, as it ends up: those chunks are pieces that
+//! other threads may mesh apart ([`PieceMaker`]), joined in the order of their numbers.
 
 use super::whorl::{Whorl, whorl};
 use crate::blobtree::blob_tree::Node;

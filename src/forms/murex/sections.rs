@@ -1,6 +1,6 @@
 //! Instances of a generating surface blended into sections (eq 9), and sections combined by
-//! blending or by controlled blending with their neighbours only (eq 10), with the box of
-//! what each growth step adds.
+//! blending or by controlled blending with their neighbours only (eq 10), with the boxes of
+//! what each growth step adds or takes away.
 
 use super::generating_surface::generating_surface;
 use super::helix::Instances;
