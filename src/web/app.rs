@@ -17,6 +17,7 @@
 //! is `recovering` meanwhile).
 
 use super::activity;
+use super::clock::now;
 use super::dom;
 use super::download::Downloads;
 use super::gallery::Pictures;
@@ -25,7 +26,7 @@ use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
 use super::record::{self, Recording, Step, Support};
 use super::share;
-use super::viewer::{Device, Viewer, now};
+use super::viewer::{Device, Viewer};
 use super::workers::Workers;
 use crate::export::Download;
 use crate::generator::GROWTH_BUDGET_MS;

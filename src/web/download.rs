@@ -9,8 +9,9 @@
 //! then writes it (`finishing` until then). `<body data-download>`: finishing, writing,
 //! offered, refused (empty before any).
 
+use super::clock::now;
 use super::page::{self, element, set_text, show_message, signal};
-use super::viewer::{Viewer, now};
+use super::viewer::Viewer;
 use crate::export::Download;
 use crate::export::estimate::{Counts, Size};
 use crate::export::job::Export;
@@ -56,6 +57,9 @@ pub struct Downloads {
     after_finish: Option<AfterFinish>,
     /// The counts the sizes shown were estimated from, and when.
     shown: Option<(Counts, f64)>,
+    /// The text each file's size shows: a size unchanged is not written again (a write is a
+    /// call into the page and a layout of the menu).
+    sizes: Vec<(Download, String)>,
 }
 
 impl Downloads {
@@ -176,7 +180,8 @@ impl Downloads {
                 return;
             }
             Ok(Some(bytes)) => {
-                set_size(job.what, &format!("{} MB", megabytes(bytes.len() as f64)));
+                let (what, text) = (job.what, format!("{} MB", megabytes(bytes.len() as f64)));
+                show_size(&mut self.sizes, what, text);
                 offer(&job.name, job.mime, &bytes)
             }
             Err(e) => Err(e.to_string()),
@@ -227,9 +232,20 @@ impl Downloads {
                 Some(Size::Pixels(w, h)) => format!("{w} × {h}"),
                 None => "none".to_string(),
             };
-            set_size(what, &text);
+            show_size(&mut self.sizes, what, text);
         }
     }
+}
+
+/// Shows `text` as the size of the file `what`, unless `shown` (what each size shows) says it
+/// shows it already.
+fn show_size(shown: &mut Vec<(Download, String)>, what: Download, text: String) {
+    if shown.iter().any(|(w, t)| *w == what && *t == text) {
+        return;
+    }
+    set_text(&format!("size-{}", what.name()), &text);
+    shown.retain(|(w, _)| *w != what);
+    shown.push((what, text));
 }
 
 /// Bytes in megabytes, to two significant figures (three from 10 MB).
@@ -249,10 +265,6 @@ fn height() -> Result<PrintSize, String> {
     let input = element("download-height").and_then(|e| e.dyn_into::<HtmlInputElement>().ok());
     let mm = input.map_or(PrintSize::DEFAULT_MM, |i| i.value_as_number());
     PrintSize::new(mm, HEIGHT).map_err(|e| e.to_string())
-}
-
-fn set_size(what: Download, text: &str) {
-    set_text(&format!("size-{}", what.name()), text);
 }
 
 fn set_buttons_enabled(enabled: bool) {

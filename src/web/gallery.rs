@@ -4,8 +4,9 @@
 //! shells are grown whole by the pool of workers and drawn by a second viewer on a small
 //! off-screen canvas as they come.
 
+use super::clock::now;
 use super::dom::{append, attr, create, typed};
-use super::viewer::{Device, Viewer, now};
+use super::viewer::{Device, Viewer};
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;

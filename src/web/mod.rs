@@ -3,6 +3,7 @@
 
 mod activity;
 mod app;
+mod clock;
 mod debug;
 mod dom;
 mod download;

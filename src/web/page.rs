@@ -6,28 +6,24 @@ use std::collections::HashMap;
 use wasm_bindgen::JsCast;
 use web_sys::{Document, HtmlElement};
 
-/// The document, which a page served to a browser always has.
-pub fn document() -> Document {
-    web_sys::window()
+thread_local! {
+    /// The document, looked up once: the page's frame finds a handful of elements and writes
+    /// its signals, and each lookup of the window and its document is a call out of wasm.
+    static DOCUMENT: Document = web_sys::window()
         .and_then(|w| w.document())
-        .expect("a browser page has a document")
+        .expect("a browser page has a document");
+    /// What each `data-<key>` was last set to by [`signal`] (only it writes them).
+    static SIGNALLED: RefCell<HashMap<String, String>> = RefCell::default();
 }
 
-/// Milliseconds since the page started.
-pub fn now() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.performance())
-        .map_or(0.0, |p| p.now())
+/// The document, which a page served to a browser always has.
+pub fn document() -> Document {
+    DOCUMENT.with(Document::clone)
 }
 
 /// The element with this id, as an `HtmlElement`.
 pub fn element(id: &str) -> Option<HtmlElement> {
-    document().get_element_by_id(id)?.dyn_into().ok()
-}
-
-thread_local! {
-    /// What each `data-<key>` was last set to by [`signal`] (only it writes them).
-    static SIGNALLED: RefCell<HashMap<String, String>> = RefCell::default();
+    DOCUMENT.with(|d| d.get_element_by_id(id))?.dyn_into().ok()
 }
 
 /// Sets `data-<key>` on <body>; `key` is in the dataset's camelCase (`patternHash` sets
@@ -38,7 +34,7 @@ pub fn signal(key: &str, value: &str) {
     if unchanged {
         return;
     }
-    if let Some(body) = document().body() {
+    if let Some(body) = DOCUMENT.with(Document::body) {
         // A dataset write fails only for keys with a hyphen, which this page never uses.
         let _ = body.dataset().set(key, value);
         SIGNALLED.with_borrow_mut(|s| s.insert(key.to_string(), value.to_string()));

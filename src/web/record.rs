@@ -8,9 +8,10 @@
 //! follows the clock, so a slow machine gives an uneven one. A cancelled or interrupted
 //! recording drops everything it collected.
 
+use super::clock::now;
 use super::download;
 use super::page::{element, set_text, signal};
-use super::viewer::{Viewer, now};
+use super::viewer::Viewer;
 use super::webcodecs::{self, CanvasCaptureTrack, EncodedVideoChunk, VideoEncoder, VideoFrame};
 use crate::export::webm::{VideoCodec, WebmWriter};
 use crate::generator::GROWTH_BUDGET_MS;

@@ -7,6 +7,7 @@
 //! the shell grown so far to it: growth goes on from where it was.
 
 use super::activity;
+use super::clock::now;
 use super::debug;
 use super::page::show_message;
 use super::planar::Planar;
@@ -151,8 +152,6 @@ pub enum Device {
     /// Lost for good: no device could be opened again (why, in words).
     Gone(String),
 }
-
-pub use super::page::now;
 
 impl Viewer {
     pub async fn new(

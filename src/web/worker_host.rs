@@ -3,20 +3,11 @@
 //! and answering with the bytes of its replies, each in its own `ArrayBuffer` for the script
 //! to transfer back (no copy of a mesh on the way).
 
+use super::clock::now;
 use crate::work::host::{Budget, Host};
 use crate::work::message::{decode_request, encode_reply};
 use js_sys::{Array, Uint8Array};
-use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
-
-/// The clock of the thread it is called on, in milliseconds: the global scope's `performance`,
-/// a worker's (which has no `window`) or the page's.
-pub(crate) fn now() -> f64 {
-    js_sys::Reflect::get(&js_sys::global(), &JsValue::from_str("performance"))
-        .ok()
-        .and_then(|p| p.dyn_into::<web_sys::Performance>().ok())
-        .map_or(0.0, |p| p.now())
-}
 
 /// The benchmark's figures of one core (`crate::bench::one_core`), as text: run by `make
 /// bench` on a worker and on the page's thread of the same browser, to compare them.

@@ -14,8 +14,9 @@
 //! that a page test finds it out in seconds. `debug_crash_worker_on_fill` (`debug.rs`) makes
 //! the worker holding the sessions throw when next asked for rows of a previewed pattern.
 
+use super::clock::now;
 use super::debug;
-use super::page::{now, set_text, signal};
+use super::page::{set_text, signal};
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
 use crate::work::pool::{Pool, SESSIONS, size_for};

@@ -15,7 +15,8 @@
 // `node tests/page/bench-workers.mjs frames [DIR …]` gives only the frame figures, for each
 // directory holding a built page (`www` unless given; say, another commit's `www` beside
 // this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
-// frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser.
+// frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser on
+// BACKEND (`WebGL2` unless set, or `WebGPU`).
 import { launch, open, session, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
@@ -39,28 +40,58 @@ const percentile = (xs, p) => {
   return sorted[Math.min(sorted.length - 1, Math.floor((p / 100) * sorted.length))];
 };
 
+/** Trace events of the page's thread that run script: a frame's callback, an event handler (a worker's reply), a timer, a microtask checkpoint. */
+const SCRIPT_TASKS = new Set(['FireAnimationFrame', 'EventDispatch', 'FunctionCall', 'TimerFire', 'FireIdleCallback', 'RunMicrotasks']);
+
 /**
  * The page's main-thread frames while the Murex grows, from a trace of `page`: each
  * `requestAnimationFrame` callback's wall time and the time its thread was on a processor
- * (the trace's thread clock), in milliseconds. Wall time also counts the waits when the
- * processor went to another process (on two cores: the worker, the GPU process's software
- * rendering, other programs) and any wait for the GPU process; thread time is the script's own.
+ * (the trace's thread clock), in milliseconds, and `script`: that thread time plus the thread
+ * time of every other script task the page's thread ran since the frame before (the workers'
+ * replies read in their `message` events, timers, microtasks), so that no script the page
+ * runs per frame is left out. Wall time also counts the waits when the processor went to
+ * another process (on two cores: the worker, the GPU process's software rendering, other
+ * programs) and any wait for the GPU process; thread time is the script's own.
  */
 async function traceFrames(page, during) {
-  return (await trace(page, ['devtools.timeline'], during))
-    .filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined)
-    .map((e) => ({ wall: e.dur / 1000, thread: e.tdur / 1000 }));
+  const events = await trace(page, ['devtools.timeline'], during);
+  const frames = events.filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined);
+  if (frames.length === 0) return [];
+  const { pid, tid } = frames[0];
+  // The thread's outermost script tasks, in time order (a FunctionCall inside an EventDispatch
+  // is counted once, with it).
+  const tasks = events
+    .filter((e) => e.pid === pid && e.tid === tid && e.ph === 'X' && e.tdur !== undefined && SCRIPT_TASKS.has(e.name))
+    .sort((a, b) => a.ts - b.ts);
+  const outermost = [];
+  for (const e of tasks) {
+    const last = outermost[outermost.length - 1];
+    if (!last || e.ts >= last.ts + last.dur) outermost.push(e);
+  }
+  const result = [];
+  let between = 0;
+  for (const e of outermost) {
+    if (e.name === 'FireAnimationFrame') {
+      result.push({ wall: e.dur / 1000, thread: e.tdur / 1000, script: (e.tdur + between) / 1000 });
+      between = 0;
+    } else {
+      between += e.tdur;
+    }
+  }
+  return result;
 }
 
 /**
  * Script milliseconds per frame (p50, p99) while the Murex grows, served from `base`: at least
  * `least` frames timed while `data-state` says growing (the shell is opened again if it is
  * grown before), at most `seconds` of growth in all. `wall` is each callback's wall time as a
- * wrapper in the page times it; `thread` is its thread's processor time from a trace.
+ * wrapper in the page times it; `thread` is its thread's processor time from a trace, and
+ * `script` that with the thread's other script tasks since the frame before (see `traceFrames`).
  */
 async function frameScript(browser, base, workers, least = 200, seconds = 600) {
   const ms = [];
   const thread = [];
+  const script = [];
   let rows = 0;
   const started = Date.now();
   while (ms.length < least && Date.now() - started < seconds * 1000) {
@@ -76,25 +107,31 @@ async function frameScript(browser, base, workers, least = 200, seconds = 600) {
     const timed = await page.evaluate(() => window.__frameMs);
     ms.push(...timed);
     // The trace's last frames, as many as the wrapper timed while the shell grew.
-    thread.push(...traced.slice(-timed.length).map((f) => f.thread));
+    const last = traced.slice(-timed.length);
+    thread.push(...last.map((f) => f.thread));
+    script.push(...last.map((f) => f.script));
     rows += Number(await page.evaluate(() => document.body.dataset.rows));
     await page.close();
   }
   return {
     wall: ms,
     thread,
+    script,
     frames: ms.length,
     p50: percentile(ms, 50),
     p99: percentile(ms, 99),
     thread50: percentile(thread, 50),
     thread99: percentile(thread, 99),
+    script50: percentile(script, 50),
+    script99: percentile(script, 99),
     rows,
     seconds: (Date.now() - started) / 1000,
   };
 }
 
 const frameLine = (f) => `p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms wall; `
-  + `p50 ${f.thread50.toFixed(2)} ms, p99 ${f.thread99.toFixed(2)} ms on the thread, over ${f.frames} frames `
+  + `p50 ${f.thread50.toFixed(2)} ms, p99 ${f.thread99.toFixed(2)} ms on the thread; `
+  + `p50 ${f.script50.toFixed(2)} ms, p99 ${f.script99.toFixed(2)} ms of all the thread's script, over ${f.frames} frames `
   + `(${f.rows} rows grown in ${f.seconds.toFixed(0)} s)`;
 
 /** The benchmark's figures of one core (pattern rates, the Murex polygonized) on the page's thread and on a worker. */
@@ -186,7 +223,14 @@ export async function benchWorkers() {
     }
     for (const workers of [0, 1]) {
       const f = await frameScript(browser, base, workers);
-      console.log(`Murex growing, page script per frame, workers=${workers}: ${frameLine(f)}`);
+      console.log(`Murex growing, page script per frame, WebGL2, workers=${workers}: ${frameLine(f)}`);
+    }
+    const webgpu = await launch('WebGPU');
+    try {
+      const f = await frameScript(webgpu, base, 1);
+      console.log(`Murex growing, page script per frame, WebGPU, workers=1: ${frameLine(f)}`);
+    } finally {
+      await webgpu.close();
     }
     // The worker's growth budget per request (`grow-budget=N`): fewer round trips against a
     // change of value waiting behind the growth under way for as long.
@@ -240,11 +284,11 @@ export async function benchGallery(baseline) {
  * the same browser: on a shared machine the load changes within minutes, and turns spread it
  * over every build alike.
  */
-export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]) {
+export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1], backend = 'WebGL2') {
   const servers = await Promise.all(roots.map((root) => serve(root)));
-  const browser = await launch('WebGL2');
+  const browser = await launch(backend);
   try {
-    console.log(`frames (Chromium ${browser.version()}), ${rounds} rounds of ${least} frames`);
+    console.log(`frames (Chromium ${browser.version()}, ${backend}), ${rounds} rounds of ${least} frames`);
     const all = new Map();
     for (let round = 0; round < rounds; round += 1) {
       for (const [i, server] of servers.entries()) {
@@ -259,9 +303,11 @@ export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]
     for (const [key, fs] of all) {
       const wall = fs.flatMap((f) => f.wall);
       const thread = fs.flatMap((f) => f.thread);
+      const script = fs.flatMap((f) => f.script);
       console.log(`${key}, the rounds' ${wall.length} frames together: p50 ${percentile(wall, 50).toFixed(2)} / `
         + `p99 ${percentile(wall, 99).toFixed(2)} ms wall, p50 ${percentile(thread, 50).toFixed(2)} / `
-        + `p99 ${percentile(thread, 99).toFixed(2)} ms on the thread`);
+        + `p99 ${percentile(thread, 99).toFixed(2)} ms on the thread, p50 ${percentile(script, 50).toFixed(2)} / `
+        + `p99 ${percentile(script, 99).toFixed(2)} ms of all the thread's script`);
     }
   } finally {
     await browser.close();
@@ -276,7 +322,7 @@ if (import.meta.url === `file://${process.argv[1]}`) {
     const roots = process.argv.slice(3);
     await benchFrames(roots.length > 0 ? roots : [new URL('../../www/', import.meta.url).pathname],
       Number(process.env.ROUNDS ?? 2), Number(process.env.FRAMES ?? 100),
-      (process.env.WORKERS ?? '0,1').split(',').map(Number));
+      (process.env.WORKERS ?? '0,1').split(',').map(Number), process.env.BACKEND ?? 'WebGL2');
   } else {
     await benchWorkers();
   }

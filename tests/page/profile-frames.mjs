@@ -1,8 +1,9 @@
 // Where the page's main thread spends its frames while the Murex grows: a Chromium trace
 // (timeline events with thread clocks, the V8 sampling profiler at 100 µs) of the page with
-// WORKERS workers (1 unless set) for SECONDS seconds (40 unless set) of growth, each
-// requestAnimationFrame callback's thread time split among the functions its samples stood in
-// (wasm functions by name: build with names kept), and the other tasks the thread ran between
+// WORKERS workers (1 unless set) on BACKEND (`WebGL2` unless set, or `WebGPU`) for SECONDS
+// seconds (40 unless set) of growth, each requestAnimationFrame callback's thread time split
+// among the functions its samples stood in (wasm functions by name: build with names kept),
+// and the other tasks the thread ran between
 // frames (the workers' replies decoded in their message events, GC). A build that marks its
 // frames with `console.timeStamp` (`#phase` between phases, `>name` and `<name` around a call
 // into the page) has each frame's thread time split by those marks too. Prints tables; asserts
@@ -14,6 +15,7 @@ import { serve } from './serve.mjs';
 
 const workers = Number(process.env.WORKERS ?? 1);
 const seconds = Number(process.env.SECONDS ?? 40);
+const backend = process.env.BACKEND ?? 'WebGL2';
 
 const CATEGORIES = [
   'toplevel', 'devtools.timeline', 'disabled-by-default-devtools.timeline', 'v8', 'v8.execute',
@@ -24,7 +26,7 @@ const CATEGORIES = [
 /** Records a trace of the page served from `root` while the Murex grows. */
 async function record(root, out) {
   const server = await serve(root);
-  const browser = await launch('WebGL2');
+  const browser = await launch(backend);
   let events;
   try {
     const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
