@@ -50,6 +50,42 @@ for (const backend of ['WebGL2', 'WebGPU']) {
   });
 }
 
+test('a growing shell uploads what it adds, never zeros for the room its buffers keep (WebGL2)', async () => {
+  // The Murex's buffers are sized for the grown shell (about 60 MB); a draw that bound all of
+  // them had wgpu fill what nothing had written with zeros, one upload of that size in the
+  // first frames of growth (53 ms of the page's thread).
+  const browser = await launch('WebGL2');
+  try {
+    const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
+    await page.addInitScript(() => {
+      window.__uploads = [];
+      const upload = WebGL2RenderingContext.prototype.bufferSubData;
+      WebGL2RenderingContext.prototype.bufferSubData = function (target, offset, source, from = 0, length) {
+        const size = source?.BYTES_PER_ELEMENT ?? 1;
+        const count = length ?? (source?.byteLength ?? 0) / size - from;
+        window.__uploads.push({ bytes: count * size, rows: Number(document.body.dataset.rows ?? 0) });
+        return upload.apply(this, arguments);
+      };
+      const allocate = WebGL2RenderingContext.prototype.bufferData;
+      window.__room = 0;
+      WebGL2RenderingContext.prototype.bufferData = function (target, size) {
+        if (typeof size === 'number') window.__room = Math.max(window.__room, size);
+        return allocate.apply(this, arguments);
+      };
+    });
+    await page.goto(`${base}?workers=1#v=1&preset=murex-cabritii`);
+    await waitForState(page, ['growing']);
+    await page.waitForFunction(() => Number(document.body.dataset.rows) >= 12, null, { timeout: 120_000 });
+    const { uploads, room } = await page.evaluate(() => ({ uploads: window.__uploads, room: window.__room }));
+    assert.ok(room > 20e6, `the largest buffer is ${room} bytes: not sized for the grown Murex`);
+    assert.ok(uploads.some((u) => u.bytes > 0), 'nothing was uploaded');
+    const largest = Math.max(...uploads.map((u) => u.bytes));
+    assert.ok(largest < room / 4, `an upload of ${largest} bytes by row 12, buffers of ${room}`);
+  } finally {
+    await browser.close();
+  }
+});
+
 test('without WebGPU or WebGL2 the page says so in words', async () => {
   const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
