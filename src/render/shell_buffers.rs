@@ -69,6 +69,7 @@ impl MeshBuffers {
             indices = 0..indices.end;
         }
         self.vertex_count = vertices.end;
+        self.index_count = indices.end as u32;
         if !vertices.is_empty() {
             let offset = (vertices.start * size_of::<Vertex>()) as u64;
             queue.write_buffer(
@@ -82,9 +83,8 @@ impl MeshBuffers {
             queue.write_buffer(
                 &self.indices,
                 offset,
-                bytemuck::cast_slice(&mesh.indices[indices.clone()]),
+                bytemuck::cast_slice(&mesh.indices[indices]),
             );
-            self.index_count = indices.end as u32;
         }
     }
 
@@ -109,7 +109,6 @@ impl MeshBuffers {
             kept.0..mesh.vertices.len(),
             kept.1..mesh.indices.len(),
         );
-        self.index_count = mesh.indices.len() as u32;
     }
 
     pub fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>) {

@@ -17,7 +17,7 @@
 // this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
 // frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser on
 // BACKEND (`WebGL2` unless set, or `WebGPU`).
-import { launch, open, session, trace, waitForState } from './browser.mjs';
+import { launch, open, pageThread, session, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
 /** Wraps requestAnimationFrame before the page loads, to time each frame's callback while the shell grows. */
@@ -54,15 +54,14 @@ const SCRIPT_TASKS = new Set(['FireAnimationFrame', 'EventDispatch', 'FunctionCa
  * programs) and any wait for the GPU process; thread time is the script's own.
  */
 async function traceFrames(page, during) {
-  const events = await trace(page, ['devtools.timeline'], during);
-  const frames = events.filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined);
-  if (frames.length === 0) return [];
-  const { pid, tid } = frames[0];
+  return framesOf(await trace(page, ['devtools.timeline'], during));
+}
+
+/** The frames of trace `events` as `traceFrames` gives them. */
+function framesOf(events) {
   // The thread's outermost script tasks, in time order (a FunctionCall inside an EventDispatch
   // is counted once, with it).
-  const tasks = events
-    .filter((e) => e.pid === pid && e.tid === tid && e.ph === 'X' && e.tdur !== undefined && SCRIPT_TASKS.has(e.name))
-    .sort((a, b) => a.ts - b.ts);
+  const tasks = pageThread(events).onThread.filter((e) => e.tdur !== undefined && SCRIPT_TASKS.has(e.name));
   const outermost = [];
   for (const e of tasks) {
     const last = outermost[outermost.length - 1];

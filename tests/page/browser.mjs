@@ -54,6 +54,19 @@ export async function trace(page, categories, during) {
   return events;
 }
 
+/**
+ * The page's main thread in trace `events`: its `requestAnimationFrame` callbacks (`frames`,
+ * those with a thread clock) and all its complete events in time order (`onThread`); the
+ * thread is the one that ran the first callback.
+ */
+export function pageThread(events) {
+  const frames = events.filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined);
+  if (frames.length === 0) return { frames, onThread: [] };
+  const { pid, tid } = frames[0];
+  const onThread = events.filter((e) => e.pid === pid && e.tid === tid && e.ph === 'X').sort((a, b) => a.ts - b.ts);
+  return { frames, onThread };
+}
+
 /** Waits until <body data-state> is one of `states` (the page's own signal). */
 export async function waitForState(page, states, timeout = 120_000) {
   await page.waitForFunction(

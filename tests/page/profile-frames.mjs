@@ -10,7 +10,7 @@
 // nothing. `node tests/page/profile-frames.mjs WWW [TRACE.json]` records (and keeps the trace);
 // `node tests/page/profile-frames.mjs TRACE.json` reads a trace kept before.
 import { readFile, writeFile } from 'node:fs/promises';
-import { launch, trace, waitForState } from './browser.mjs';
+import { launch, pageThread, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
 const workers = Number(process.env.WORKERS ?? 1);
@@ -51,9 +51,8 @@ async function record(root, out) {
 
 /** Per-frame figures of a trace: the rAF callback, the rest of its task, and what ran before the next frame. */
 function analyze(events) {
-  const fires = events.filter((e) => e.name === 'FireAnimationFrame' && e.ph === 'X' && e.tdur !== undefined);
+  const { frames: fires, onThread: onMain } = pageThread(events);
   const { pid, tid } = fires[0];
-  const onMain = events.filter((e) => e.pid === pid && e.tid === tid && e.ph === 'X').sort((a, b) => a.ts - b.ts);
   const within = (e, k) => e.ts >= k.ts && e.ts < k.ts + k.dur;
   const tasks = onMain.filter((e) => e.name === 'ThreadControllerImpl::RunTask' && e.tdur !== undefined);
   const marks = events.filter((e) => e.pid === pid && e.tid === tid && e.name === 'TimeStamp' && e.tts !== undefined)
