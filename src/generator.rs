@@ -7,7 +7,7 @@ use crate::forms::shape_for;
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
-use crate::shape::{GrowingShape, LineGrid, Pieces, ShapeError};
+use crate::shape::{EdgePart, GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::ShellSpec;
 use glam::DVec3;
 use std::ops::Range;
@@ -47,12 +47,30 @@ pub struct Advance {
     pub vertices: Range<usize>,
     /// New indices of the permanent mesh.
     pub indices: Range<usize>,
-    /// When the transient edge mesh was rewritten: the vertices and indices at its start that
-    /// stayed as they were (the GPU keeps them and takes only the rest); (0, 0) when the whole
-    /// edge is new.
-    pub edge: Option<(usize, usize)>,
+    /// When the transient edge mesh was rewritten: the ranges of it written anew (the GPU
+    /// keeps the rest as it holds it).
+    pub edge: Option<EdgeRuns>,
     /// The pattern rows added (their RGBA is [`PatternRun::rgba`] over this range).
     pub rows: Range<usize>,
+}
+
+/// Ranges of a transient edge mesh written anew, as its holder lays it out: all of it from a
+/// generator, the parts a step changed from the page's copy ([`crate::work::slotted_edge`]).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeRuns {
+    pub vertices: Vec<Range<usize>>,
+    pub indices: Vec<Range<usize>>,
+}
+
+impl EdgeRuns {
+    /// All of `edge`.
+    pub fn whole(edge: &Mesh) -> Self {
+        let (vertices, indices) = (0..edge.vertices.len(), 0..edge.indices.len());
+        Self {
+            vertices: vec![vertices],
+            indices: vec![indices],
+        }
+    }
 }
 
 /// A shell growing from its spec.
@@ -172,6 +190,11 @@ impl Generator {
         &self.edge
     }
 
+    /// The parts of [`Self::edge`] that change apart, in the order of their numbers.
+    pub fn edge_parts(&self) -> Vec<EdgePart> {
+        self.shape.edge_parts(&self.edge)
+    }
+
     /// [`Mesh::content_hash`] of the shell as it stands, edge included: the same for the same
     /// triangles however they were grown.
     pub fn mesh_hash(&self) -> u64 {
@@ -241,7 +264,7 @@ impl Generator {
         Advance {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
-            edge: edge_changed.then_some((0, 0)),
+            edge: edge_changed.then(|| EdgeRuns::whole(&self.edge)),
             rows: r0..self.rows_done,
         }
     }
@@ -251,7 +274,7 @@ impl Generator {
         Advance {
             vertices: 0..self.mesh.vertices.len(),
             indices: 0..self.mesh.indices.len(),
-            edge: Some((0, 0)),
+            edge: Some(EdgeRuns::whole(&self.edge)),
             rows: 0..self.rows_done,
         }
     }
@@ -278,7 +301,7 @@ impl Generator {
         Advance {
             vertices: v0..self.mesh.vertices.len(),
             indices: i0..self.mesh.indices.len(),
-            edge: edge_changed.then_some((0, 0)),
+            edge: edge_changed.then(|| EdgeRuns::whole(&self.edge)),
             rows: r0..self.rows_done,
         }
     }

@@ -7,6 +7,7 @@ use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::problem::Problem;
 use glam::DVec3;
 use std::fmt;
+use std::ops::Range;
 
 /// Why a shape cannot be built from its spec: the key of the value concerned (its dotted path
 /// in the serialised spec) and what is wrong with it.
@@ -96,6 +97,28 @@ impl Pieces {
     }
 }
 
+/// A part of the transient edge mesh that changes apart from the rest: its number, and where
+/// it lies in the edge (its indices name vertices of its own range). The edge is its parts
+/// joined in the order of their numbers, so that the page can hold each part in a place of its
+/// own and take only the parts a step changed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EdgePart {
+    pub id: u32,
+    pub vertices: Range<usize>,
+    pub indices: Range<usize>,
+}
+
+impl EdgePart {
+    /// All of `edge` as part 0: the edge of a shape that rewrites it whole.
+    pub fn whole(edge: &Mesh) -> Self {
+        Self {
+            id: 0,
+            vertices: 0..edge.vertices.len(),
+            indices: 0..edge.indices.len(),
+        }
+    }
+}
+
 /// A shape grown step by step.
 pub trait GrowingShape {
     /// Steps from the first to the fully grown shape.
@@ -116,6 +139,16 @@ pub trait GrowingShape {
     /// the new growing edge, or change it in place (it holds what the previous step left in
     /// it); says whether it did.
     fn grow(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> bool;
+    /// The parts of `edge` (the edge this shape's growth left) that change apart, in the order
+    /// of their numbers; none when the edge is empty. A shape that rewrites its edge whole has
+    /// one part.
+    fn edge_parts(&self, edge: &Mesh) -> Vec<EdgePart> {
+        if edge.indices.is_empty() {
+            Vec::new()
+        } else {
+            vec![EdgePart::whole(edge)]
+        }
+    }
     /// Grows every remaining step (a form may know a shorter way to the end than step by step).
     fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
         while self.steps_done() < self.steps() {

@@ -18,11 +18,11 @@ use seashells_core::share::parameter_map::{Axis, ParameterMap, SIDE};
 use seashells_core::spec::ShellSpec;
 use seashells_core::work::host::{Budget, Host};
 use seashells_core::work::message::{
-    Delta, EdgeTail, Progress, Reply, Request, decode_reply, decode_request, encode_reply,
-    encode_request,
+    Delta, Progress, Reply, Request, decode_reply, decode_request, encode_reply, encode_request,
 };
 use seashells_core::work::pool::Pool;
 use seashells_core::work::replica::Replica;
+use seashells_core::work::slotted_edge::{EdgeRun, EdgeWrites, Slot};
 use std::cell::Cell;
 
 /// A clock that moves on by a millisecond each time it is read, so that budgets run out
@@ -178,7 +178,7 @@ fn grow_and_finish(
                 // growth copies the whole mesh into a larger one.
                 assert!(replica.mesh().vertices.capacity() >= room.0.vertices);
                 assert!(replica.mesh().indices.capacity() >= room.0.indices);
-                assert!(replica.edge().vertices.capacity() >= room.1.vertices);
+                assert!(replica.edge().mesh().vertices.capacity() >= room.1.vertices);
             }
             Reply::Grew { delta, .. } => {
                 replica.apply(delta).expect("in step");
@@ -239,7 +239,7 @@ fn a_murex_finished_by_one_two_or_four_workers_is_the_same_bit_for_bit() {
             let replica = grow_and_finish(&mut page, &link, grows, 40, None, false);
             let what = format!("{size} workers, {grows} requests before Finish, budget {budget:?}");
             assert_eq!(replica.mesh(), reference.mesh(), "{what}");
-            assert!(replica.edge().indices.is_empty(), "{what}");
+            assert!(replica.edge().is_empty(), "{what}");
             assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()), "{what}");
             assert_eq!(
                 replica.pattern_hash(),
@@ -432,31 +432,50 @@ fn mesh_bytes(mesh: &seashells_core::mesh::Mesh) -> (Vec<u8>, Vec<u32>) {
 }
 
 #[test]
-fn an_edge_crossing_as_its_changed_rest_is_the_edge_grown_alone() {
-    // An implicit shell re-meshes a few chunks a step: its edge crosses as the start the page
-    // holds and what follows, and the page's copy is the generator's edge at every step.
+fn an_edge_crossing_as_the_parts_that_changed_is_the_edge_grown_alone() {
+    // An implicit shell re-meshes a few chunks a step: its edge crosses as the parts that
+    // changed, each written in its slot, and the page's copy joined is the generator's edge at
+    // every step.
     let (link, spec) = link_of("implicit-whorl", "&form.resolution=48");
     let mut host = Host::default();
     host.push(1, Request::Load { session: 1, link });
     let mut replica = Replica::new(1);
-    let (mut changes, mut kept) = (0, 0);
+    let (mut changes, mut partial) = (0, 0);
     while !replica.is_done() {
         for (ticket, reply) in host.work(&clock(), Budget::Unbounded) {
             let (_, reply) = decode_reply(&encode_reply(ticket, &reply)).expect("reads back");
-            let advance = match reply {
-                Reply::Loaded { shell, delta, .. } => replica.loaded(shell, delta),
-                Reply::Grew { delta, .. } => replica.apply(delta),
+            let (delta, loaded) = match reply {
+                Reply::Loaded { shell, delta, .. } => (delta, Some(shell)),
+                Reply::Grew { delta, .. } => (delta, None),
                 other => panic!("unexpected {other:?}"),
+            };
+            let written = (delta.edge.as_ref())
+                .map(|e| e.runs.iter().map(|r| r.vertices.len()).sum::<usize>());
+            let advance = match loaded {
+                Some(shell) => replica.loaded(shell, delta),
+                None => replica.apply(delta),
             }
             .expect("in step");
-            if let Some(edge_kept) = advance.edge {
+            if advance.edge.is_some() {
                 changes += 1;
-                kept += usize::from(edge_kept.0 > 0);
                 let mut alone = Generator::new(&spec).unwrap();
                 alone.catch_up(replica.rows_done(), replica.steps_done());
+                let joined = replica.edge().joined();
                 assert_eq!(
-                    mesh_bytes(replica.edge()),
+                    mesh_bytes(&joined),
                     mesh_bytes(alone.edge()),
+                    "row {}",
+                    replica.rows_done()
+                );
+                partial += usize::from(written < Some(joined.vertices.len()));
+                // Nothing outside the parts' slots draws a triangle.
+                let held = replica.edge().mesh();
+                let mut in_slot = vec![false; held.indices.len()];
+                for slot in replica.edge().slots() {
+                    in_slot[slot.indices.start as usize..slot.indices.end as usize].fill(true);
+                }
+                assert!(
+                    (held.indices.iter().zip(&in_slot)).all(|(&i, &inside)| inside || i == 0),
                     "row {}",
                     replica.rows_done()
                 );
@@ -472,11 +491,11 @@ fn an_edge_crossing_as_its_changed_rest_is_the_edge_grown_alone() {
         );
     }
     assert!(changes >= 4, "{changes} edges");
-    assert!(kept >= 1, "no edge kept its start ({changes} edges)");
+    assert!(partial >= 1, "every edge crossed whole ({changes} edges)");
 }
 
-/// A delta that sets the edge to `tail` and adds nothing else.
-fn edge_delta(tail: EdgeTail) -> Delta {
+/// A delta that writes `edge` and adds nothing else.
+fn edge_delta(edge: EdgeWrites) -> Delta {
     Delta {
         rows: 0..0,
         rgba: Vec::new(),
@@ -484,60 +503,69 @@ fn edge_delta(tail: EdgeTail) -> Delta {
         vertices: Vec::new(),
         first_index: 0,
         indices: Vec::new(),
-        edge: Some(tail),
+        edge: Some(edge),
         grown: Bounds::EMPTY,
         progress: Progress::default(),
     }
 }
 
 #[test]
-fn an_edge_rest_that_does_not_fit_what_the_page_holds_is_refused_by_its_key() {
+fn edge_writes_that_do_not_fit_their_edge_are_refused_by_their_key() {
     let vertex = Vertex::new(
         glam::DVec3::ZERO,
         glam::DVec3::Z,
         [0.0, 0.0],
         Surface::Outer,
     );
-    let triangle = EdgeTail {
-        vertices: vec![vertex; 3],
-        indices: vec![0, 1, 2],
-        ..EdgeTail::default()
+    let triangle = EdgeWrites {
+        fresh: true,
+        vertex_count: 3,
+        index_count: 3,
+        slots: vec![Slot {
+            id: 7,
+            vertices: 0..3,
+            indices: 0..3,
+        }],
+        runs: vec![EdgeRun {
+            first_vertex: 0,
+            vertices: vec![vertex; 3],
+            first_index: 0,
+            indices: vec![0, 1, 2],
+        }],
     };
-    // Indices beyond the whole edge's vertices cannot be read.
-    let beyond = EdgeTail {
-        kept_vertices: 1,
-        indices: vec![0, 1, 4],
-        ..triangle.clone()
+    let refused = |edge: EdgeWrites| {
+        let delta = edge_delta(edge);
+        let bytes = encode_reply(1, &Reply::Grew { session: 1, delta });
+        decode_reply(&bytes).unwrap_err().key
     };
+    // Indices beyond the edge's vertices cannot be read.
+    let mut beyond = triangle.clone();
+    beyond.runs[0].indices = vec![0, 1, 4];
+    assert_eq!(refused(beyond), "edge indices");
+    // Nor a run beyond its counts,
+    let mut long = triangle.clone();
+    long.runs[0].first_vertex = 1;
+    assert_eq!(refused(long), "edge run");
+    // nor a slot beyond them, nor slots out of the order of their numbers.
+    let mut outside = triangle.clone();
+    outside.slots[0].indices = 0..6;
+    assert_eq!(refused(outside), "edge slot");
+    let mut twice = triangle.clone();
+    twice.slots.push(twice.slots[0].clone());
+    assert_eq!(refused(twice), "edge slot");
+    // What fits is taken, and joins to the part.
+    let mut replica = Replica::new(1);
     let bytes = encode_reply(
         1,
         &Reply::Grew {
             session: 1,
-            delta: edge_delta(beyond),
+            delta: edge_delta(triangle),
         },
     );
-    assert_eq!(decode_reply(&bytes).unwrap_err().key, "edge indices");
-    // A start kept that the page does not hold is out of step, and changes nothing.
-    let mut replica = Replica::new(1);
-    let ahead = EdgeTail {
-        kept_vertices: 5,
-        ..triangle.clone()
+    let Reply::Grew { delta, .. } = decode_reply(&bytes).unwrap().1 else {
+        panic!("a delta reads back as one");
     };
-    assert_eq!(
-        replica.apply(edge_delta(ahead)).unwrap_err().key,
-        "edge vertices"
-    );
-    assert!(replica.edge().vertices.is_empty());
-    // What fits is taken: the kept start, then the rest.
-    replica.apply(edge_delta(triangle)).expect("in step");
-    let rest = EdgeTail {
-        kept_vertices: 3,
-        kept_indices: 3,
-        vertices: vec![vertex],
-        indices: vec![1, 2, 3],
-    };
-    let advance = replica.apply(edge_delta(rest)).expect("in step");
-    assert_eq!(advance.edge, Some((3, 3)));
-    assert_eq!(replica.edge().vertices.len(), 4);
-    assert_eq!(replica.edge().indices, vec![0, 1, 2, 1, 2, 3]);
+    let advance = replica.apply(delta).expect("in step");
+    assert_eq!(advance.edge.unwrap().indices, vec![0..3]);
+    assert_eq!(replica.edge().joined().indices, vec![0, 1, 2]);
 }

@@ -314,23 +314,19 @@ impl Renderer {
         });
     }
 
-    /// Uploads what the generator just added: new mesh ranges, the edge from the start it kept,
-    /// new pattern rows (`rgba` holds the rows of `advance.rows`).
+    /// Uploads what the generator just added: new mesh ranges, the ranges of the edge written
+    /// anew, new pattern rows (`rgba` holds the rows of `advance.rows`).
     pub fn upload(&mut self, mesh: &Mesh, edge: &Mesh, advance: &Advance, rgba: &[u8]) {
         let Some(shell) = self.shell.as_mut() else {
             return;
         };
-        shell.mesh.write(
-            &self.gpu.device,
-            &self.gpu.queue,
-            mesh,
-            advance.vertices.clone(),
-            advance.indices.clone(),
-        );
-        if let Some(kept) = advance.edge {
-            shell
-                .edge
-                .rewrite_from(&self.gpu.device, &self.gpu.queue, edge, kept);
+        let (device, queue) = (&self.gpu.device, &self.gpu.queue);
+        let added = (advance.vertices.clone(), advance.indices.clone());
+        shell
+            .mesh
+            .write(device, queue, mesh, &[added.0], &[added.1]);
+        if let Some(runs) = &advance.edge {
+            (shell.edge).write(device, queue, edge, &runs.vertices, &runs.indices);
         }
         if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
             pattern.write_rows(&self.gpu.queue, advance.rows.start as u32, rgba);

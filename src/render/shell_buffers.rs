@@ -1,5 +1,5 @@
 //! GPU buffers sized once for the fully grown shell; each frame writes only what it adds (of a
-//! rewritten edge, what follows the start it kept). Where
+//! rewritten edge, the parts that changed, in their slots). Where
 //! a shape could only estimate its final size (an implicit surface), the buffers are
 //! reallocated, half as large again as needed, the first time a mesh outgrows them. A draw
 //! binds only the part written so far: wgpu fills every part of a buffer that a draw binds and
@@ -49,66 +49,44 @@ impl MeshBuffers {
         }
     }
 
-    /// Writes the given ranges of `mesh` at the same places in the buffers; when the mesh has
+    /// Takes `mesh` as the buffers' content, of which only the ranges `vertices` and
+    /// `indices` differ from what they hold (the rest is as written before); when the mesh has
     /// outgrown them, new buffers take all of it.
     pub fn write(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         mesh: &Mesh,
-        mut vertices: Range<usize>,
-        mut indices: Range<usize>,
+        vertices: &[Range<usize>],
+        indices: &[Range<usize>],
     ) {
-        if vertices.end > self.capacity.vertices || indices.end > self.capacity.indices {
+        let (vertex_count, index_count) = (mesh.vertices.len(), mesh.indices.len());
+        if vertex_count > self.capacity.vertices || index_count > self.capacity.indices {
             let grown = Capacity {
-                vertices: self.capacity.vertices.max(vertices.end * 3 / 2),
-                indices: self.capacity.indices.max(indices.end * 3 / 2),
+                vertices: self.capacity.vertices.max(vertex_count * 3 / 2),
+                indices: self.capacity.indices.max(index_count * 3 / 2),
             };
             *self = Self::new(device, grown, self.label);
-            vertices = 0..vertices.end;
-            indices = 0..indices.end;
+            return self.replace(device, queue, mesh);
         }
-        self.vertex_count = vertices.end;
-        self.index_count = indices.end as u32;
-        if !vertices.is_empty() {
-            let offset = (vertices.start * size_of::<Vertex>()) as u64;
-            queue.write_buffer(
-                &self.vertices,
-                offset,
-                bytemuck::cast_slice(&mesh.vertices[vertices]),
-            );
+        self.vertex_count = vertex_count;
+        self.index_count = index_count as u32;
+        for run in vertices.iter().filter(|r| !r.is_empty()) {
+            let offset = (run.start * size_of::<Vertex>()) as u64;
+            let bytes = bytemuck::cast_slice(&mesh.vertices[run.clone()]);
+            queue.write_buffer(&self.vertices, offset, bytes);
         }
-        if !indices.is_empty() {
-            let offset = (indices.start * size_of::<u32>()) as u64;
-            queue.write_buffer(
-                &self.indices,
-                offset,
-                bytemuck::cast_slice(&mesh.indices[indices]),
-            );
+        for run in indices.iter().filter(|r| !r.is_empty()) {
+            let offset = (run.start * size_of::<u32>()) as u64;
+            let bytes = bytemuck::cast_slice(&mesh.indices[run.clone()]);
+            queue.write_buffer(&self.indices, offset, bytes);
         }
     }
 
     /// Replaces the whole content (for the ground's quad).
     pub fn replace(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, mesh: &Mesh) {
-        self.rewrite_from(device, queue, mesh, (0, 0));
-    }
-
-    /// Takes `mesh` as the whole content, the first `kept` (vertices, indices) being as the
-    /// buffers hold them already: only the rest is written (for the transient edge mesh).
-    pub fn rewrite_from(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        mesh: &Mesh,
-        kept: (usize, usize),
-    ) {
-        self.write(
-            device,
-            queue,
-            mesh,
-            kept.0..mesh.vertices.len(),
-            kept.1..mesh.indices.len(),
-        );
+        let all = (0..mesh.vertices.len(), 0..mesh.indices.len());
+        self.write(device, queue, mesh, &[all.0], &[all.1]);
     }
 
     pub fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>) {

@@ -680,7 +680,7 @@ impl App {
                 "mesh",
                 &format!(
                     "{} vertices, {} triangles",
-                    mesh.vertices.len() + edge.vertices.len(),
+                    mesh.vertices.len() + edge.vertex_count(),
                     mesh.triangle_count() + edge.triangle_count()
                 ),
             );

@@ -207,7 +207,7 @@ impl Downloads {
         let (mesh, edge) = (g.replica.mesh(), g.replica.edge());
         let canvas = viewer.canvas();
         let counts = Counts {
-            vertices: mesh.vertices.len() + edge.vertices.len(),
+            vertices: mesh.vertices.len() + edge.vertex_count(),
             triangles: mesh.triangle_count() + edge.triangle_count(),
             pattern: (g.replica.cells() > 0).then(|| {
                 (

@@ -271,9 +271,7 @@ impl Viewer {
         let pattern = (shell.cells > 0).then_some((shell.cells, g.spec.growth.rows));
         g.planar_size = pattern;
         g.load_into(&mut self.renderer, &shell);
-        let mut grown = Bounds::EMPTY;
-        grown.include_vertices(&g.replica.mesh().vertices);
-        grown.include_vertices(&g.replica.edge().vertices);
+        let grown = *g.replica.grown();
         let mut camera = OrbitCamera::framing(
             &shell.bounds,
             shell.front,
@@ -425,7 +423,7 @@ impl Viewer {
         let row = replica.cells() * 4;
         let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
         self.renderer
-            .upload(replica.mesh(), replica.edge(), advance, rgba);
+            .upload(replica.mesh(), replica.edge().mesh(), advance, rgba);
         if let Some(planar) = &g.planar {
             planar.draw_rows(advance.rows.start as u32, rgba);
             planar.follow(advance.rows.end as u32);

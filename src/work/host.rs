@@ -4,10 +4,11 @@
 //! once. The same host runs in each Web Worker, and on the page's own thread where workers
 //! cannot start, where it works a frame's budget at a time; natively, the tests run it.
 
-use super::message::{Delta, EdgeTail, Progress, Reply, Request, ShellInfo, WholeShell};
+use super::edge_slots::EdgeSlots;
+use super::message::{Delta, Progress, Reply, Request, ShellInfo, WholeShell};
 use crate::blobtree::polygonize::ChunkWork;
 use crate::forms::{PieceMaker, piece_maker};
-use crate::generator::{Advance, Generator, within};
+use crate::generator::{Advance, EdgeRuns, Generator, within};
 use crate::mesh::{Bounds, Mesh};
 use crate::pattern::run::PatternRun;
 use crate::share::link;
@@ -33,9 +34,9 @@ struct Growth {
     grown: Bounds,
     /// The longest growth step lately (see [`within`]).
     longest: f64,
-    /// The edge as the page holds it from this host's replies (empty before the first, and on
-    /// a host that regrew the shell: its first edge then crosses whole).
-    sent_edge: Mesh,
+    /// The edge as the page holds it from this host's replies (none before the first, and on a
+    /// host that regrew the shell: its first edge then crosses whole).
+    sent_edge: EdgeSlots,
 }
 
 /// A job under way, kept between calls when the budget runs out.
@@ -101,12 +102,10 @@ impl Growth {
         let mesh = generator.mesh();
         self.grown
             .include_vertices(&mesh.vertices[advance.vertices.clone()]);
-        let edge = advance.edge.map(|_| {
+        let edge = advance.edge.as_ref().map(|_| {
             let edge = generator.edge();
             self.grown.include_vertices(&edge.vertices);
-            let tail = EdgeTail::between(&self.sent_edge, edge);
-            self.sent_edge.clone_from(edge);
-            tail
+            self.sent_edge.update(edge, &generator.edge_parts())
         });
         let rgba = generator.pattern().map_or(Vec::new(), |p| {
             let row = p.cells() * 4;
@@ -185,7 +184,7 @@ impl Host {
                         generator,
                         grown: Bounds::EMPTY,
                         longest: 0.0,
-                        sent_edge: Mesh::default(),
+                        sent_edge: EdgeSlots::default(),
                     };
                     let delta = growth.delta(&growth.generator.grown());
                     let shell = shell_info(&growth.generator);
@@ -231,7 +230,7 @@ impl Host {
                     let advance = Advance {
                         vertices: v0..g.generator.mesh().vertices.len(),
                         indices: i0..g.generator.mesh().indices.len(),
-                        edge: Some((0, 0)),
+                        edge: Some(EdgeRuns::whole(g.generator.edge())),
                         rows: r0..g.generator.rows_done(),
                     };
                     let mut delta = g.delta(&advance);
@@ -272,7 +271,7 @@ impl Host {
                         generator,
                         grown,
                         longest: 0.0,
-                        sent_edge: Mesh::default(),
+                        sent_edge: EdgeSlots::default(),
                     });
                     reply
                 }

@@ -4,6 +4,7 @@
 //! pattern rows cross as plain bytes ([`super::wire`]), and a growing shell sends only what
 //! each request added.
 
+use super::slotted_edge::{EdgeRun, EdgeWrites, Slot};
 use super::wire::{Reader, WireError, Writer};
 use crate::mesh::{Bounds, Capacity, Mesh, Vertex};
 use crate::shape::{LineGrid, Pieces};
@@ -96,51 +97,12 @@ pub struct Delta {
     /// The indices added to the permanent mesh, the first at `first_index`.
     pub first_index: u32,
     pub indices: Vec<u32>,
-    /// The new transient edge mesh, when it changed: what differs from the edge sent before.
-    pub edge: Option<EdgeTail>,
+    /// The new transient edge mesh, when it changed: the parts that differ from the edge sent
+    /// before, written in their slots.
+    pub edge: Option<EdgeWrites>,
     /// Bounds of everything grown so far, edge included.
     pub grown: Bounds,
     pub progress: Progress,
-}
-
-/// A new transient edge mesh as the start of the one sent before and a new rest: an implicit
-/// shell re-meshes a few of its chunks at a time and keeps the others as they were, so that
-/// only what follows the first chunk that changed crosses to the page and goes to the GPU.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct EdgeTail {
-    /// Vertices at the start of the edge sent before that stay as they were.
-    pub kept_vertices: u32,
-    /// Indices at the start of the edge sent before that stay as they were.
-    pub kept_indices: u32,
-    /// The vertices that follow them.
-    pub vertices: Vec<Vertex>,
-    /// The indices that follow them (numbering the vertices of the whole edge).
-    pub indices: Vec<u32>,
-}
-
-impl EdgeTail {
-    /// `edge` as what differs from `before`: the longest start the two share, and the rest.
-    pub fn between(before: &Mesh, edge: &Mesh) -> Self {
-        let same = |a: &Vertex, b: &Vertex| bytemuck::bytes_of(a) == bytemuck::bytes_of(b);
-        let kept_vertices = before
-            .vertices
-            .iter()
-            .zip(&edge.vertices)
-            .take_while(|(a, b)| same(a, b))
-            .count();
-        let kept_indices = before
-            .indices
-            .iter()
-            .zip(&edge.indices)
-            .take_while(|(a, b)| a == b)
-            .count();
-        Self {
-            kept_vertices: kept_vertices as u32,
-            kept_indices: kept_indices as u32,
-            vertices: edge.vertices[kept_vertices..].to_vec(),
-            indices: edge.indices[kept_indices..].to_vec(),
-        }
-    }
 }
 
 /// A shell grown whole: its mesh (edge included), its pattern, and what it is.
@@ -439,10 +401,7 @@ fn write_delta(w: &mut Writer, d: &Delta) {
     w.u32s(&d.indices);
     w.bool(d.edge.is_some());
     if let Some(edge) = &d.edge {
-        w.u32(edge.kept_vertices);
-        w.u32(edge.kept_indices);
-        w.vertices(&edge.vertices);
-        w.u32s(&edge.indices);
+        write_edge_writes(w, edge);
     }
     w.bounds(&d.grown);
     let p = &d.progress;
@@ -464,7 +423,7 @@ fn read_delta(r: &mut Reader) -> Result<Delta, WireError> {
         first_index: r.u32("first index")?,
         indices: r.u32s("indices")?,
         edge: if r.bool("edge")? {
-            Some(read_edge_tail(r)?)
+            Some(read_edge_writes(r)?)
         } else {
             None
         },
@@ -481,25 +440,96 @@ fn read_delta(r: &mut Reader) -> Result<Delta, WireError> {
     })
 }
 
-/// An edge's new rest, whose indices all name a vertex of the whole edge.
-fn read_edge_tail(r: &mut Reader) -> Result<EdgeTail, WireError> {
-    let kept_vertices = r.u32("edge kept vertices")?;
-    let kept_indices = r.u32("edge kept indices")?;
-    let vertices = r.vertices("edge vertices")?;
-    let at = r.at();
-    let indices = r.u32s("edge indices")?;
-    let count = kept_vertices as usize + vertices.len();
-    if indices.iter().any(|&i| i as usize >= count) {
-        return Err(WireError {
-            key: "edge indices",
-            at,
+fn write_edge_writes(w: &mut Writer, e: &EdgeWrites) {
+    w.bool(e.fresh);
+    w.u32(e.vertex_count);
+    w.u32(e.index_count);
+    w.len(e.slots.len());
+    for slot in &e.slots {
+        w.u32(slot.id);
+        w.u32(slot.vertices.start);
+        w.u32(slot.vertices.end);
+        w.u32(slot.indices.start);
+        w.u32(slot.indices.end);
+    }
+    w.len(e.runs.len());
+    for run in &e.runs {
+        w.u32(run.first_vertex);
+        w.vertices(&run.vertices);
+        w.u32(run.first_index);
+        w.u32s(&run.indices);
+    }
+}
+
+/// An edge's writes, whose slots (in the order of their numbers) and runs all lie within its
+/// counts, and whose indices all name one of its vertices.
+fn read_edge_writes(r: &mut Reader) -> Result<EdgeWrites, WireError> {
+    let fresh = r.bool("edge fresh")?;
+    let vertex_count = r.u32("edge vertex count")?;
+    let index_count = r.u32("edge index count")?;
+    let within = |r: &Reader, key, range: &Range<u32>, count: u32| {
+        if range.start <= range.end && range.end <= count {
+            Ok(())
+        } else {
+            Err(WireError { key, at: r.at() })
+        }
+    };
+    let mut slots: Vec<Slot> = Vec::new();
+    for _ in 0..r.len("edge slots")? {
+        let slot = Slot {
+            id: r.u32("edge slot")?,
+            vertices: r.u32("edge slot")?..r.u32("edge slot")?,
+            indices: r.u32("edge slot")?..r.u32("edge slot")?,
+        };
+        within(r, "edge slot", &slot.vertices, vertex_count)?;
+        within(r, "edge slot", &slot.indices, index_count)?;
+        if slots.last().is_some_and(|last| last.id >= slot.id) {
+            return Err(WireError {
+                key: "edge slot",
+                at: r.at(),
+            });
+        }
+        slots.push(slot);
+    }
+    let mut runs = Vec::new();
+    for _ in 0..r.len("edge runs")? {
+        let first_vertex = r.u32("edge run")?;
+        let vertices = r.vertices("edge vertices")?;
+        let first_index = r.u32("edge run")?;
+        let at = r.at();
+        let indices = r.u32s("edge indices")?;
+        let end = |first: u32, n: usize| first.saturating_add(n as u32);
+        within(
+            r,
+            "edge run",
+            &(first_vertex..end(first_vertex, vertices.len())),
+            vertex_count,
+        )?;
+        within(
+            r,
+            "edge run",
+            &(first_index..end(first_index, indices.len())),
+            index_count,
+        )?;
+        if indices.iter().any(|&i| i >= vertex_count) {
+            return Err(WireError {
+                key: "edge indices",
+                at,
+            });
+        }
+        runs.push(EdgeRun {
+            first_vertex,
+            vertices,
+            first_index,
+            indices,
         });
     }
-    Ok(EdgeTail {
-        kept_vertices,
-        kept_indices,
-        vertices,
-        indices,
+    Ok(EdgeWrites {
+        fresh,
+        vertex_count,
+        index_count,
+        slots,
+        runs,
     })
 }
 

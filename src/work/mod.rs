@@ -7,8 +7,10 @@
 //! cannot change a bit, and shares jobs out among its workers with a [`pool::Pool`], which
 //! also knows what to do again when a worker dies or hangs.
 
+pub(crate) mod edge_slots;
 pub mod host;
 pub mod message;
 pub mod pool;
 pub mod replica;
+pub mod slotted_edge;
 pub mod wire;

@@ -6,9 +6,10 @@
 //! thread finishing the shell would have made, bit for bit, whatever the number of workers.
 
 use super::message::{Delta, Progress, ShellInfo, WholeShell};
+use super::slotted_edge::SlottedEdge;
 use crate::export::paint::PatternImage;
 use crate::export::shell::Grown;
-use crate::generator::Advance;
+use crate::generator::{Advance, EdgeRuns};
 use crate::mesh::{Bounds, Mesh};
 use crate::shape::Pieces;
 use std::fmt;
@@ -50,7 +51,7 @@ pub struct Replica {
     /// What the shell is, once its worker has built it.
     shell: Option<ShellInfo>,
     mesh: Mesh,
-    edge: Mesh,
+    edge: SlottedEdge,
     rgba: Vec<u8>,
     rows_grown: usize,
     grown: Bounds,
@@ -65,7 +66,7 @@ impl Replica {
             session,
             shell: None,
             mesh: Mesh::default(),
-            edge: Mesh::default(),
+            edge: SlottedEdge::default(),
             rgba: Vec::new(),
             rows_grown: 0,
             grown: Bounds::EMPTY,
@@ -85,7 +86,7 @@ impl Replica {
             session,
             shell: Some(whole.shell),
             mesh: whole.mesh,
-            edge: Mesh::default(),
+            edge: SlottedEdge::default(),
             rgba: whole.rgba,
             rows_grown: rows as usize,
             grown,
@@ -135,39 +136,12 @@ impl Replica {
         check("vertices", self.mesh.vertices.len(), delta.first_vertex)?;
         check("indices", self.mesh.indices.len(), delta.first_index)?;
         check("pattern rows", self.rows_grown, delta.rows.start)?;
-        // An edge's kept start is one the page holds.
-        if let Some(tail) = &delta.edge {
-            let within = |key, held: usize, kept: u32| {
-                if kept as usize <= held {
-                    Ok(())
-                } else {
-                    Err(OutOfStep {
-                        key,
-                        expected: held,
-                        got: kept as usize,
-                    })
-                }
-            };
-            within(
-                "edge vertices",
-                self.edge.vertices.len(),
-                tail.kept_vertices,
-            )?;
-            within("edge indices", self.edge.indices.len(), tail.kept_indices)?;
-        }
         let (v0, i0) = (self.mesh.vertices.len(), self.mesh.indices.len());
         self.mesh.vertices.extend_from_slice(&delta.vertices);
         self.mesh.indices.extend_from_slice(&delta.indices);
         self.rgba.extend_from_slice(&delta.rgba);
         self.rows_grown = delta.rows.end as usize;
-        let edge = delta.edge.map(|tail| {
-            let kept = (tail.kept_vertices as usize, tail.kept_indices as usize);
-            self.edge.vertices.truncate(kept.0);
-            self.edge.indices.truncate(kept.1);
-            self.edge.vertices.extend_from_slice(&tail.vertices);
-            self.edge.indices.extend_from_slice(&tail.indices);
-            kept
-        });
+        let edge = delta.edge.map(|writes| self.edge.apply(&writes));
         self.grown = delta.grown;
         self.progress = delta.progress;
         Ok(Advance {
@@ -228,7 +202,7 @@ impl Replica {
         Advance {
             vertices: 0..self.mesh.vertices.len(),
             indices: 0..self.mesh.indices.len(),
-            edge: Some((0, 0)),
+            edge: Some(EdgeRuns::whole(self.edge.mesh())),
             rows: 0..self.rows_grown,
         }
     }
@@ -238,15 +212,15 @@ impl Replica {
         &self.mesh
     }
 
-    /// The transient mesh closing the growing edge.
-    pub fn edge(&self) -> &Mesh {
+    /// The transient mesh closing the growing edge, each of its parts in a slot.
+    pub fn edge(&self) -> &SlottedEdge {
         &self.edge
     }
 
     /// The shell as it stands, edge included: what an export writes.
     pub fn snapshot(&self) -> Mesh {
         let mut mesh = self.mesh.clone();
-        mesh.append(&self.edge);
+        mesh.append(&self.edge.joined());
         mesh
     }
 

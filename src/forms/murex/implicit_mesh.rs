@@ -16,7 +16,7 @@ use crate::blobtree::polygonize::{
     surface_box,
 };
 use crate::mesh::{Bounds, Capacity, Mesh};
-use crate::shape::{GrowingShape, LineGrid, Pieces, ShapeError};
+use crate::shape::{EdgePart, GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::form::implicit::ImplicitSpec;
 use crate::spec::pattern::PatternSpec;
 use glam::DVec3;
@@ -77,6 +77,8 @@ pub struct ImplicitMesh {
     last_reach: BTreeMap<u32, u32>,
     /// Meshes of the pieces some later instance will change, by number.
     live: BTreeMap<u32, Mesh>,
+    /// Where each live piece lies in the edge, which joins them in the order of their numbers.
+    edge_parts: Vec<EdgePart>,
     /// Meshes of the instance being meshed, shown once all its pieces are done.
     pending: Vec<(u32, Mesh)>,
     /// What meshing each live piece left behind, for meshing it again.
@@ -133,6 +135,7 @@ impl ImplicitMesh {
             jobs,
             last_reach,
             live: BTreeMap::new(),
+            edge_parts: Vec::new(),
             pending: Vec::new(),
             caches: BTreeMap::new(),
             reach,
@@ -155,8 +158,15 @@ impl ImplicitMesh {
             }
         }
         edge.clear();
-        for m in self.live.values() {
+        self.edge_parts.clear();
+        for (&id, m) in &self.live {
+            let (v0, i0) = (edge.vertices.len(), edge.indices.len());
             edge.append(m);
+            self.edge_parts.push(EdgePart {
+                id,
+                vertices: v0..edge.vertices.len(),
+                indices: i0..edge.indices.len(),
+            });
         }
         self.shown = Some(instance);
     }
@@ -190,6 +200,11 @@ impl GrowingShape for ImplicitMesh {
 
     fn edge_capacity(&self) -> Capacity {
         self.capacity()
+    }
+
+    /// Each live piece is a part: a step changes the few it re-meshes.
+    fn edge_parts(&self, _edge: &Mesh) -> Vec<EdgePart> {
+        self.edge_parts.clone()
     }
 
     fn bounds(&self) -> Bounds {
@@ -264,6 +279,7 @@ impl GrowingShape for ImplicitMesh {
         }
         self.pending.clear();
         self.live.clear();
+        self.edge_parts.clear();
         self.caches.clear();
         edge.clear();
         self.shown = Some(last);
