@@ -2,9 +2,9 @@
 //! ([`SlottedEdge`]), and what it sends for each new edge: nothing for a part that is as the
 //! page holds it, a part rewritten in its slot when it still fits there, moved to a new slot
 //! (the old one's indices zeroed) when it has outgrown it. Each slot has room to spare, so that
-//! a part re-meshed a little larger stays in place; freed slots are taken again first come
-//! first served, and when gaps make up more than half of the mesh, every part is laid out anew
-//! from the start.
+//! a part re-meshed a little larger stays in place; freed room is joined to its free
+//! neighbours and taken again first come first served, and when gaps make up more than half of
+//! the mesh, every part is laid out anew from the start.
 
 use super::slotted_edge::{EdgeRun, EdgeWrites, Slot, SlottedEdge, range};
 use crate::mesh::{Mesh, Vertex};
@@ -21,31 +21,46 @@ fn with_spare(n: u32) -> u32 {
     n + n / 8 + 16
 }
 
-/// Runs of free room in one of the slotted mesh's arrays, and where its used room ends.
+/// Runs of free room in one of the slotted mesh's arrays (start → end, neighbours joined),
+/// and where its used room ends.
 #[derive(Default)]
 struct Room {
-    free: Vec<Range<u32>>,
+    free: BTreeMap<u32, u32>,
     end: u32,
 }
 
 impl Room {
     /// The first free run of `n` that fits, or room at the end.
     fn take(&mut self, n: u32) -> Range<u32> {
-        if let Some(k) = self.free.iter().position(|r| r.end - r.start >= n) {
-            let run = &mut self.free[k];
-            let taken = run.start..run.start + n;
-            run.start += n;
-            if run.start == run.end {
-                self.free.swap_remove(k);
+        let found = (self.free.iter()).find(|&(&start, &end)| end - start >= n);
+        if let Some((&start, &end)) = found {
+            self.free.remove(&start);
+            if start + n < end {
+                self.free.insert(start + n, end);
             }
-            return taken;
+            return start..start + n;
         }
         self.end += n;
         self.end - n..self.end
     }
 
+    /// Frees `run`, joined to the free runs beside it; free room at the end is no longer used.
     fn give_back(&mut self, run: Range<u32>) {
-        self.free.push(run);
+        let (mut start, mut end) = (run.start, run.end);
+        if let Some((&before, &before_end)) = self.free.range(..start).next_back()
+            && before_end == start
+        {
+            self.free.remove(&before);
+            start = before;
+        }
+        if let Some(after_end) = self.free.remove(&end) {
+            end = after_end;
+        }
+        if end == self.end {
+            self.end = start;
+        } else if start < end {
+            self.free.insert(start, end);
+        }
     }
 }
 
@@ -143,6 +158,12 @@ impl EdgeSlots {
             };
             slots.push(slot);
         }
+        // Zeros over room freed at the end, which is no longer held, are not sent.
+        for run in &mut runs {
+            let room = self.indices.end.saturating_sub(run.first_index) as usize;
+            run.indices.truncate(room);
+        }
+        runs.retain(|run| !run.vertices.is_empty() || !run.indices.is_empty());
         EdgeWrites {
             fresh,
             vertex_count: self.vertices.end,
