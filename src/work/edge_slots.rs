@@ -16,9 +16,10 @@ use std::ops::Range;
 /// before it is laid out anew.
 const LOOSE: u32 = 4096;
 
-/// The room a part of `n` vertices or indices is given: an eighth more, and a little.
+/// The room a part of `n` vertices or indices is given: an eighth more, and a little, in whole
+/// triangles, so that every slot's indices start on a triangle of the one draw of the mesh.
 fn with_spare(n: u32) -> u32 {
-    n + n / 8 + 16
+    (n + n / 8 + 16).next_multiple_of(3)
 }
 
 /// Runs of free room in one of the slotted mesh's arrays (start → end, neighbours joined),
@@ -294,6 +295,16 @@ mod tests {
                         .all(|i| slot.vertices.contains(i)));
                 }
                 prop_assert!(mesh.indices.iter().zip(&inside).all(|(&i, &s)| s || i == 0));
+                // One draw of the slotted mesh draws the edge's triangles, and only those.
+                let triangles = |m: &Mesh| {
+                    let mut t: Vec<[[u32; 3]; 3]> = (m.indices.chunks(3))
+                        .filter(|t| t[0] != t[1] || t[1] != t[2])
+                        .map(|t| [t[0], t[1], t[2]].map(|i| m.vertices[i as usize].position.map(f32::to_bits)))
+                        .collect();
+                    t.sort();
+                    t
+                };
+                prop_assert_eq!(triangles(mesh), triangles(&edge));
                 // The gaps stay within bounds.
                 let used = edge.vertices.len() as u32;
                 prop_assert!(writes.vertex_count <= 2 * used + LOOSE);
