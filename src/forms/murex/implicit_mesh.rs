@@ -77,8 +77,6 @@ pub struct ImplicitMesh {
     last_reach: BTreeMap<u32, u32>,
     /// Meshes of the pieces some later instance will change, by number.
     live: BTreeMap<u32, Mesh>,
-    /// Where each live piece lies in the edge, which joins them in the order of their numbers.
-    edge_parts: Vec<EdgePart>,
     /// Meshes of the instance being meshed, shown once all its pieces are done.
     pending: Vec<(u32, Mesh)>,
     /// What meshing each live piece left behind, for meshing it again.
@@ -135,7 +133,6 @@ impl ImplicitMesh {
             jobs,
             last_reach,
             live: BTreeMap::new(),
-            edge_parts: Vec::new(),
             pending: Vec::new(),
             caches: BTreeMap::new(),
             reach,
@@ -158,15 +155,8 @@ impl ImplicitMesh {
             }
         }
         edge.clear();
-        self.edge_parts.clear();
-        for (&id, m) in &self.live {
-            let (v0, i0) = (edge.vertices.len(), edge.indices.len());
+        for m in self.live.values() {
             edge.append(m);
-            self.edge_parts.push(EdgePart {
-                id,
-                vertices: v0..edge.vertices.len(),
-                indices: i0..edge.indices.len(),
-            });
         }
         self.shown = Some(instance);
     }
@@ -202,9 +192,21 @@ impl GrowingShape for ImplicitMesh {
         self.capacity()
     }
 
-    /// Each live piece is a part: a step changes the few it re-meshes.
+    /// Each live piece is a part: a step changes the few it re-meshes. The edge joins them in
+    /// the order of their numbers (`publish`), so each lies where those before it end.
     fn edge_parts(&self, _edge: &Mesh) -> Vec<EdgePart> {
-        self.edge_parts.clone()
+        let (mut v0, mut i0) = (0, 0);
+        (self.live.iter())
+            .map(|(&id, m)| {
+                let part = EdgePart {
+                    id,
+                    vertices: v0..v0 + m.vertices.len(),
+                    indices: i0..i0 + m.indices.len(),
+                };
+                (v0, i0) = (part.vertices.end, part.indices.end);
+                part
+            })
+            .collect()
     }
 
     fn bounds(&self) -> Bounds {
@@ -279,7 +281,6 @@ impl GrowingShape for ImplicitMesh {
         }
         self.pending.clear();
         self.live.clear();
-        self.edge_parts.clear();
         self.caches.clear();
         edge.clear();
         self.shown = Some(last);
