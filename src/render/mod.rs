@@ -315,23 +315,29 @@ impl Renderer {
     }
 
     /// Uploads what the generator just added: new mesh ranges, the ranges of the edge written
-    /// anew, new pattern rows (`rgba` holds the rows of `advance.rows`).
-    pub fn upload(&mut self, mesh: &Mesh, edge: &Mesh, advance: &Advance, rgba: &[u8]) {
+    /// anew, new pattern rows (`rgba` holds the rows of `advance.rows`). The bytes written,
+    /// which reach the GPU at the next [`Self::draw`] or [`Self::flush`].
+    pub fn upload(&mut self, mesh: &Mesh, edge: &Mesh, advance: &Advance, rgba: &[u8]) -> usize {
         let Some(shell) = self.shell.as_mut() else {
-            return;
+            return 0;
         };
         let (device, queue) = (&self.gpu.device, &self.gpu.queue);
         let added = (advance.vertices.clone(), advance.indices.clone());
-        shell
-            .mesh
-            .write(device, queue, mesh, &[added.0], &[added.1]);
+        let mut written = (shell.mesh).write(device, queue, mesh, &[added.0], &[added.1]);
         if let Some(runs) = &advance.edge {
-            (shell.edge).write(device, queue, edge, &runs.vertices, &runs.indices);
+            written += (shell.edge).write(device, queue, edge, &runs.vertices, &runs.indices);
         }
         if let Some(pattern) = shell.pattern.as_ref().filter(|_| !rgba.is_empty()) {
             pattern.write_rows(&self.gpu.queue, advance.rows.start as u32, rgba);
+            written += rgba.len();
         }
         shell.rows_grown = advance.rows.end as u32;
+        written
+    }
+
+    /// Hands the writes made since the last frame to the GPU without drawing.
+    pub fn flush(&self) {
+        self.gpu.queue.submit([]);
     }
 
     /// Lays the ground under `grown`, the part of the shell grown so far.

@@ -51,7 +51,7 @@ impl MeshBuffers {
 
     /// Takes `mesh` as the buffers' content, of which only the ranges `vertices` and
     /// `indices` differ from what they hold (the rest is as written before); when the mesh has
-    /// outgrown them, new buffers take all of it.
+    /// outgrown them, new buffers take all of it. The bytes written.
     pub fn write(
         &mut self,
         device: &wgpu::Device,
@@ -59,7 +59,7 @@ impl MeshBuffers {
         mesh: &Mesh,
         vertices: &[Range<usize>],
         indices: &[Range<usize>],
-    ) {
+    ) -> usize {
         let (vertex_count, index_count) = (mesh.vertices.len(), mesh.indices.len());
         if vertex_count > self.capacity.vertices || index_count > self.capacity.indices {
             let grown = Capacity {
@@ -71,22 +71,26 @@ impl MeshBuffers {
         }
         self.vertex_count = vertex_count;
         self.index_count = index_count as u32;
+        let mut written = 0;
         for run in vertices.iter().filter(|r| !r.is_empty()) {
             let offset = (run.start * size_of::<Vertex>()) as u64;
-            let bytes = bytemuck::cast_slice(&mesh.vertices[run.clone()]);
+            let bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices[run.clone()]);
             queue.write_buffer(&self.vertices, offset, bytes);
+            written += bytes.len();
         }
         for run in indices.iter().filter(|r| !r.is_empty()) {
             let offset = (run.start * size_of::<u32>()) as u64;
-            let bytes = bytemuck::cast_slice(&mesh.indices[run.clone()]);
+            let bytes: &[u8] = bytemuck::cast_slice(&mesh.indices[run.clone()]);
             queue.write_buffer(&self.indices, offset, bytes);
+            written += bytes.len();
         }
+        written
     }
 
-    /// Replaces the whole content (for the ground's quad).
-    pub fn replace(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, mesh: &Mesh) {
+    /// Replaces the whole content (for the ground's quad); the bytes written.
+    pub fn replace(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, mesh: &Mesh) -> usize {
         let all = (0..mesh.vertices.len(), 0..mesh.indices.len());
-        self.write(device, queue, mesh, &[all.0], &[all.1]);
+        self.write(device, queue, mesh, &[all.0], &[all.1])
     }
 
     pub fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>) {

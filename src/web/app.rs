@@ -47,6 +47,10 @@ use web_sys::{HtmlInputElement, HtmlProgressElement};
 
 /// Quiet time after an edit before the address bar is updated.
 const URL_DELAY_MS: f64 = 300.0;
+/// Least time between two updates of the progress bar and its text while the shell grows: a
+/// bar that moves ten times a second looks as smooth as one moved every frame, without an
+/// element written and laid out in each of the frames between.
+const PROGRESS_EVERY_MS: f64 = 100.0;
 
 pub struct App {
     viewer: Viewer,
@@ -68,8 +72,9 @@ pub struct App {
     support: Rc<RefCell<Support>>,
     /// A video being recorded.
     recording: Option<Recording>,
-    /// The rows done and in all that the progress bar and its text show.
-    progress_shown: (usize, usize),
+    /// The rows done and in all that the progress bar and its text show, and when they were
+    /// shown.
+    progress_shown: (usize, usize, f64),
 }
 
 fn say(problems: &[Problem]) {
@@ -115,7 +120,7 @@ impl App {
             in_gallery: false,
             url_due: None,
             recoveries: 0,
-            progress_shown: (0, 0),
+            progress_shown: (0, 0, f64::NEG_INFINITY),
             support: Rc::new(RefCell::new(Support::Checking)),
             recording: None,
         }
@@ -643,6 +648,7 @@ impl App {
         signal("preview", self.viewer.preview_state());
         let settled = self.viewer.growing().is_some_and(|g| g.settled());
         signal("settled", if settled { "true" } else { "false" });
+        self.show_progress();
         if !drawn {
             return Ok(());
         }
@@ -653,20 +659,10 @@ impl App {
         if replica.shell().is_none() {
             return Ok(());
         }
-        let (done, total) = (replica.rows_done(), replica.rows());
+        let done = replica.rows_done();
         signal("rows", &done.to_string());
         let whole = replica.is_done() && g.settled();
         signal("growth", if whole { "done" } else { "growing" });
-        if self.progress_shown != (done, total) {
-            self.progress_shown = (done, total);
-            if let Some(bar) =
-                element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
-            {
-                bar.set_max(total as f64);
-                bar.set_value(done as f64);
-            }
-            set_text("progress-text", &format!("{done} of {total} rows"));
-        }
         self.downloads.show_sizes(&self.viewer);
         if let Some(failure) = replica.failure() {
             show_message(failure);
@@ -692,6 +688,36 @@ impl App {
             signal("state", "growing");
         }
         Ok(())
+    }
+
+    /// Shows the rows grown on the progress bar and in its text, when they have changed, at
+    /// most every [`PROGRESS_EVERY_MS`] while the shell grows (called every frame, drawn or
+    /// not, so that the last rows of a growth paused or finished are shown too).
+    fn show_progress(&mut self) {
+        let Some(replica) = self
+            .viewer
+            .growing()
+            .map(|g| &g.replica)
+            .filter(|r| r.shell().is_some())
+        else {
+            return;
+        };
+        let (done, total) = (replica.rows_done(), replica.rows());
+        let (shown_done, shown_total, shown_at) = self.progress_shown;
+        let t = now();
+        if (shown_done, shown_total) == (done, total)
+            || (done < total && t - shown_at < PROGRESS_EVERY_MS)
+        {
+            return;
+        }
+        self.progress_shown = (done, total, t);
+        if let Some(bar) =
+            element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
+        {
+            bar.set_max(total as f64);
+            bar.set_value(done as f64);
+        }
+        set_text("progress-text", &format!("{done} of {total} rows"));
     }
 
     /// Takes in what the workers sent back: the shell's growth and pieces go to the viewer,

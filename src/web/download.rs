@@ -57,9 +57,6 @@ pub struct Downloads {
     after_finish: Option<AfterFinish>,
     /// The counts the sizes shown were estimated from, and when.
     shown: Option<(Counts, f64)>,
-    /// The text each file's size shows: a size unchanged is not written again (a write is a
-    /// call into the page and a layout of the menu).
-    sizes: Vec<(Download, String)>,
 }
 
 impl Downloads {
@@ -181,7 +178,7 @@ impl Downloads {
             }
             Ok(Some(bytes)) => {
                 let (what, text) = (job.what, format!("{} MB", megabytes(bytes.len() as f64)));
-                show_size(&mut self.sizes, what, text);
+                show_size(what, &text);
                 offer(&job.name, job.mime, &bytes)
             }
             Err(e) => Err(e.to_string()),
@@ -232,20 +229,14 @@ impl Downloads {
                 Some(Size::Pixels(w, h)) => format!("{w} × {h}"),
                 None => "none".to_string(),
             };
-            show_size(&mut self.sizes, what, text);
+            show_size(what, &text);
         }
     }
 }
 
-/// Shows `text` as the size of the file `what`, unless `shown` (what each size shows) says it
-/// shows it already.
-fn show_size(shown: &mut Vec<(Download, String)>, what: Download, text: String) {
-    if shown.iter().any(|(w, t)| *w == what && *t == text) {
-        return;
-    }
-    set_text(&format!("size-{}", what.name()), &text);
-    shown.retain(|(w, _)| *w != what);
-    shown.push((what, text));
+/// Shows `text` as the size of the file `what`.
+fn show_size(what: Download, text: &str) {
+    set_text(&format!("size-{}", what.name()), text);
 }
 
 /// Bytes in megabytes, to two significant figures (three from 10 MB).

@@ -3,6 +3,7 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
+use std::thread::LocalKey;
 use wasm_bindgen::JsCast;
 use web_sys::{Document, HtmlElement};
 
@@ -14,6 +15,24 @@ thread_local! {
         .expect("a browser page has a document");
     /// What each `data-<key>` was last set to by [`signal`] (only it writes them).
     static SIGNALLED: RefCell<HashMap<String, String>> = RefCell::default();
+    /// What each element's text was last set to by [`set_text`] (only it writes those).
+    static TEXTS: RefCell<HashMap<String, String>> = RefCell::default();
+}
+
+/// Writes `value` under `key` with `write` unless `memory` says it was the last written there;
+/// `write` says whether it could write (its element is on the page).
+fn write_once(
+    memory: &'static LocalKey<RefCell<HashMap<String, String>>>,
+    key: &str,
+    value: &str,
+    write: impl FnOnce() -> bool,
+) {
+    if memory.with_borrow(|m| m.get(key).is_some_and(|v| v == value)) {
+        return;
+    }
+    if write() {
+        memory.with_borrow_mut(|m| m.insert(key.to_string(), value.to_string()));
+    }
 }
 
 /// The document, which a page served to a browser always has.
@@ -30,22 +49,24 @@ pub fn element(id: &str) -> Option<HtmlElement> {
 /// `data-pattern-hash`). A value the attribute has already is not written again: most are set
 /// every frame, and each write is a call into the page and a change of the document.
 pub fn signal(key: &str, value: &str) {
-    let unchanged = SIGNALLED.with_borrow(|s| s.get(key).is_some_and(|v| v == value));
-    if unchanged {
-        return;
-    }
-    if let Some(body) = DOCUMENT.with(Document::body) {
-        // A dataset write fails only for keys with a hyphen, which this page never uses.
-        let _ = body.dataset().set(key, value);
-        SIGNALLED.with_borrow_mut(|s| s.insert(key.to_string(), value.to_string()));
-    }
+    write_once(&SIGNALLED, key, value, || {
+        DOCUMENT.with(Document::body).is_some_and(|body| {
+            // A dataset write fails only for keys with a hyphen, which this page never uses.
+            body.dataset().set(key, value).is_ok()
+        })
+    });
 }
 
-/// Sets an element's text (never HTML).
+/// Sets the text (never HTML) of the element with this id. A text the element shows already
+/// is not written again: some are set as often as every frame (the growth's progress, the
+/// files' sizes), and each write is a lookup, a call into the page and a layout.
 pub fn set_text(id: &str, text: &str) {
-    if let Some(e) = element(id) {
-        e.set_text_content(Some(text));
-    }
+    write_once(&TEXTS, id, text, || {
+        element(id).is_some_and(|e| {
+            e.set_text_content(Some(text));
+            true
+        })
+    });
 }
 
 /// Shows a message in words in the page's alert area.

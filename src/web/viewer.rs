@@ -22,6 +22,7 @@ use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::camera::OrbitCamera;
+use crate::view::draw_pacing::{DrawPacing, FrameDraw};
 use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
@@ -115,6 +116,8 @@ pub struct Viewer {
     /// Whether growth advances each frame, and how fast.
     pub playback: Playback,
     dirty: bool,
+    /// Whether this frame draws or leaves it to the next (after megabytes of uploads).
+    pacing: DrawPacing,
     /// Whether the camera follows the growing shell (else it frames the whole).
     follows: bool,
     /// One view, or Kawaguchi's four.
@@ -171,6 +174,7 @@ impl Viewer {
             growing: None,
             playback: Playback::new(1.0),
             dirty: true,
+            pacing: DrawPacing::default(),
             follows,
             layout: Layout::Single,
             last_frame: now(),
@@ -422,8 +426,12 @@ impl Viewer {
         self.renderer.set_ground(replica.grown());
         let row = replica.cells() * 4;
         let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
-        self.renderer
-            .upload(replica.mesh(), replica.edge().mesh(), advance, rgba);
+        self.pacing.uploaded((self.renderer).upload(
+            replica.mesh(),
+            replica.edge().mesh(),
+            advance,
+            rgba,
+        ));
         if let Some(planar) = &g.planar {
             planar.draw_rows(advance.rows.start as u32, rgba);
             planar.follow(advance.rows.end as u32);
@@ -692,6 +700,7 @@ impl Viewer {
         {
             self.dirty = true;
         }
+        let pacing = self.pacing.frame(self.dirty);
         if !self.dirty {
             return Ok(false);
         }
@@ -702,6 +711,10 @@ impl Viewer {
         else {
             return Ok(false);
         };
+        if pacing == FrameDraw::Defer {
+            self.renderer.flush();
+            return Ok(false);
+        }
         self.renderer
             .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.dirty = false;
