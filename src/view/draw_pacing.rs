@@ -1,13 +1,16 @@
-//! When a frame draws the shell, and when it leaves the drawing to the next: a frame that hands
-//! the GPU more than [`HEAVY_UPLOAD_BYTES`] (a reply that shows an instance of the implicit
-//! shell brings megabytes of re-meshed edge, whose copies into the page's copy, wgpu's staging
-//! and the GL buffers take a frame's share of the page's thread on their own) only hands them
-//! over, and the next frame draws: the shell shows a frame later instead of one frame taking
-//! twice as long. Never two frames in a row, so a page taking such replies one after another
-//! still draws every other frame.
+//! When a frame draws the shell, and when it leaves the drawing to the next. A reply that shows
+//! an instance of the implicit shell brings megabytes of re-meshed edge, and each stage of it
+//! takes a frame's share of the page's thread on its own: reading it (its `message` event copies
+//! and decodes it), taking it in (the copies into the page's copy, wgpu's staging and the GL
+//! buffers) and drawing. Past [`HEAVY_BYTES`] they go to three frames: the page takes in a reply
+//! that heavy a frame after the one it was read in (`web/workers.rs`), and a frame that hands the
+//! GPU that much only hands it over, the next frame drawing. The shell shows two frames later
+//! instead of one frame taking three times as long. A frame never leaves its drawing to the next
+//! twice in a row, so a page taking such replies one after another still draws every other frame.
 
-/// Bytes taken to the GPU in a frame beyond which the frame leaves its drawing to the next.
-pub const HEAVY_UPLOAD_BYTES: usize = 1 << 20;
+/// Bytes of a reply read, or handed to the GPU in a frame, beyond which the work is spread over
+/// frames.
+pub const HEAVY_BYTES: usize = 1 << 20;
 
 /// Bytes handed to the GPU since the last frame, and whether the last frame left its drawing
 /// to this one.
@@ -35,7 +38,7 @@ impl DrawPacing {
     /// Ends the frame: what it does when it has something to draw (`dirty`). A frame with
     /// nothing to draw defers nothing.
     pub fn frame(&mut self, dirty: bool) -> FrameDraw {
-        let heavy = std::mem::take(&mut self.uploaded) > HEAVY_UPLOAD_BYTES;
+        let heavy = std::mem::take(&mut self.uploaded) > HEAVY_BYTES;
         let defer = dirty && heavy && !self.deferred;
         self.deferred = defer;
         if defer {
@@ -55,8 +58,8 @@ mod tests {
         let mut pacing = DrawPacing::default();
         pacing.uploaded(64 << 10);
         assert_eq!(pacing.frame(true), FrameDraw::Draw, "a light frame draws");
-        pacing.uploaded(HEAVY_UPLOAD_BYTES / 2);
-        pacing.uploaded(HEAVY_UPLOAD_BYTES / 2 + 1);
+        pacing.uploaded(HEAVY_BYTES / 2);
+        pacing.uploaded(HEAVY_BYTES / 2 + 1);
         assert_eq!(pacing.frame(true), FrameDraw::Defer, "uploads add up");
         pacing.uploaded(8 << 20);
         assert_eq!(

@@ -3,9 +3,11 @@
 //! benchmarks), each running the core's host, with the core's [`Pool`] sharing requests out.
 //! Requests and replies cross as bytes in transferred `ArrayBuffer`s. A worker that throws, or
 //! keeps a request past its allowance, is terminated and replaced, and its jobs are sent again;
-//! the status line says so from the second time. Where workers cannot start (or with
-//! `workers=0`), one host runs on the page's own thread a frame's budget at a time, and the
-//! status line says so.
+//! the status line says so from the second time. A reply is read (copied and decoded) in its
+//! `message` event as it comes; one of megabytes is taken in a frame later, so that reading it
+//! and taking it in fall in different frames (see [`crate::view::draw_pacing`]). Where workers
+//! cannot start (or with `workers=0`), one host runs on the page's own thread a frame's budget
+//! at a time, and the status line says so.
 //!
 //! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
 //! first request, and `hang-workers=N` the next N spin forever on theirs without answering (see
@@ -17,6 +19,7 @@
 use super::clock::now;
 use super::debug;
 use super::page::{set_text, signal};
+use crate::view::draw_pacing::HEAVY_BYTES;
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
 use crate::work::pool::{Pool, SESSIONS, size_for};
@@ -31,7 +34,14 @@ use web_sys::{ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 /// What a worker's events leave for the next frame: a reply, read from its bytes when it came
 /// (in the message's own task, not in the frame), or its death.
 enum Event {
-    Reply(usize, u32, Box<Result<(u32, Reply), WireError>>),
+    Reply {
+        slot: usize,
+        generation: u32,
+        reply: Box<Result<(u32, Reply), WireError>>,
+        /// Whether it was read from more than [`HEAVY_BYTES`] and waits a frame before it is
+        /// taken in (see [`crate::view::draw_pacing`]).
+        waits: bool,
+    },
     Died(usize, u32, String),
 }
 
@@ -136,8 +146,13 @@ fn spawn(slot: usize, generation: u32, inbox: &Inbox, name: &str) -> Result<Slot
     let worker = Worker::new_with_options("./worker.js", &options)?;
     let to = Rc::clone(inbox);
     let on_message = Closure::<dyn FnMut(MessageEvent)>::new(move |e: MessageEvent| {
-        let reply = Box::new(decode_reply(&Uint8Array::new(&e.data()).to_vec()));
-        to.borrow_mut().push(Event::Reply(slot, generation, reply));
+        let bytes = Uint8Array::new(&e.data()).to_vec();
+        to.borrow_mut().push(Event::Reply {
+            slot,
+            generation,
+            reply: Box::new(decode_reply(&bytes)),
+            waits: bytes.len() > HEAVY_BYTES,
+        });
     });
     let to = Rc::clone(inbox);
     let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(move |e: ErrorEvent| {
@@ -266,7 +281,8 @@ impl Workers {
         }
     }
 
-    /// Sends what waits, replaces workers that died or hang, and returns what came back.
+    /// Sends what waits, replaces workers that died or hang, and returns what came back: a
+    /// reply of more than [`HEAVY_BYTES`], and what came after it, a frame after it was read.
     pub fn poll(&mut self) -> Polled {
         let mut polled = Polled::default();
         self.send();
@@ -289,11 +305,35 @@ impl Workers {
                 inbox,
                 faults,
             } => {
-                let events: Vec<Event> = std::mem::take(&mut *inbox.borrow_mut());
+                let mut events = std::mem::take(&mut *inbox.borrow_mut()).into_iter();
                 let mut dead = Vec::new();
-                for event in events {
+                while let Some(event) = events.next() {
                     match event {
-                        Event::Reply(slot, generation, reply) => {
+                        Event::Reply {
+                            slot,
+                            generation,
+                            reply,
+                            waits: true,
+                        } => {
+                            // Read in this frame's time: taken in, with all that came after
+                            // it, in the next.
+                            let mut later = vec![Event::Reply {
+                                slot,
+                                generation,
+                                reply,
+                                waits: false,
+                            }];
+                            later.extend(events.by_ref());
+                            let mut inbox = inbox.borrow_mut();
+                            later.append(&mut inbox);
+                            *inbox = later;
+                        }
+                        Event::Reply {
+                            slot,
+                            generation,
+                            reply,
+                            ..
+                        } => {
                             if slots[slot].generation != generation {
                                 continue;
                             }
