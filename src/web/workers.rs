@@ -307,27 +307,21 @@ impl Workers {
             } => {
                 let mut events = std::mem::take(&mut *inbox.borrow_mut()).into_iter();
                 let mut dead = Vec::new();
-                while let Some(event) = events.next() {
+                while let Some(mut event) = events.next() {
+                    if let Event::Reply { waits, .. } = &mut event
+                        && std::mem::take(waits)
+                    {
+                        // Read in this frame's time: taken in, with all that came after it,
+                        // in the next.
+                        let mut inbox = inbox.borrow_mut();
+                        let later: Vec<Event> = std::iter::once(event)
+                            .chain(events.by_ref())
+                            .chain(inbox.drain(..))
+                            .collect();
+                        *inbox = later;
+                        break;
+                    }
                     match event {
-                        Event::Reply {
-                            slot,
-                            generation,
-                            reply,
-                            waits: true,
-                        } => {
-                            // Read in this frame's time: taken in, with all that came after
-                            // it, in the next.
-                            let mut later = vec![Event::Reply {
-                                slot,
-                                generation,
-                                reply,
-                                waits: false,
-                            }];
-                            later.extend(events.by_ref());
-                            let mut inbox = inbox.borrow_mut();
-                            later.append(&mut inbox);
-                            *inbox = later;
-                        }
                         Event::Reply {
                             slot,
                             generation,
