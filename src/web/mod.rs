@@ -15,6 +15,7 @@ mod planar;
 mod record;
 mod recovery;
 mod share;
+mod shown_size;
 mod viewer;
 mod webcodecs;
 mod worker_host;

@@ -2,13 +2,16 @@
 //! 11–14): a 2D canvas one pixel per cell and row, written a few rows at a time, scrolled so
 //! that the newest rows stay in sight.
 
+use super::shown_size::ShownSize;
 use wasm_bindgen::{Clamped, JsCast};
-use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement, ImageData};
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, ImageData};
 
 pub struct Planar {
     canvas: HtmlCanvasElement,
     context: CanvasRenderingContext2d,
     cells: u32,
+    /// The box the canvas scrolls in, and the sizes both are shown at.
+    scroller: Option<(Element, ShownSize, ShownSize)>,
 }
 
 impl Planar {
@@ -28,13 +31,17 @@ impl Planar {
         canvas.set_width(cells);
         canvas.set_height(rows);
         let context = canvas.get_context("2d").ok()??.dyn_into().ok()?;
-        if let Some(scroller) = canvas.parent_element() {
+        let scroller = canvas.parent_element().and_then(|scroller| {
             scroller.set_scroll_top(0);
-        }
+            let shown = ShownSize::observe(&canvas).ok()?;
+            let view = ShownSize::observe(&scroller).ok()?;
+            Some((scroller, shown, view))
+        });
         Some(Self {
             canvas,
             context,
             cells,
+            scroller,
         })
     }
 
@@ -54,12 +61,12 @@ impl Planar {
 
     /// Scrolls the view so that row `row` stays in sight.
     pub fn follow(&self, row: u32) {
-        let Some(scroller) = self.canvas.parent_element() else {
+        let Some((scroller, shown, view)) = &self.scroller else {
             return;
         };
-        let scale = f64::from(self.canvas.client_height()) / f64::from(self.canvas.height().max(1));
+        let scale = f64::from(shown.css().1) / f64::from(self.canvas.height().max(1));
         let bottom = f64::from(row) * scale;
-        let view = f64::from(scroller.client_height());
+        let view = f64::from(view.css().1);
         if bottom > f64::from(scroller.scroll_top()) + view {
             scroller.set_scroll_top((bottom - view * 0.8).max(0.0) as i32);
         }

@@ -12,6 +12,7 @@ use super::debug;
 use super::page::show_message;
 use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
+use super::shown_size::ShownSize;
 use super::workers::Workers;
 use crate::generator::Advance;
 use crate::mesh::Bounds;
@@ -110,6 +111,8 @@ struct Previewing {
 pub struct Viewer {
     renderer: Renderer,
     canvas: HtmlCanvasElement,
+    /// The size the canvas is shown at, as the page last laid it out.
+    shown: ShownSize,
     planar_canvas: Option<HtmlCanvasElement>,
     pub pointers: Pointers,
     growing: Option<Growing>,
@@ -168,6 +171,7 @@ impl Viewer {
         renderer.set_background(background);
         Ok(Self {
             renderer,
+            shown: ShownSize::observe(&canvas)?,
             canvas,
             planar_canvas,
             pointers: Pointers::default(),
@@ -578,6 +582,10 @@ impl Viewer {
         } = reopened;
         renderer.set_background(self.background);
         if canvas != self.canvas {
+            match ShownSize::observe(&canvas) {
+                Ok(shown) => self.shown = shown,
+                Err(e) => self.gone = Some(e),
+            }
             self.replaced_canvas = Some(canvas.clone());
         }
         self.canvas = canvas;
@@ -637,13 +645,11 @@ impl Viewer {
         g.finishing = true;
     }
 
-    /// Keeps the drawing buffer at the canvas's size in device pixels.
+    /// Keeps the drawing buffer at the canvas's size in device pixels (its size as last laid
+    /// out, see `shown_size.rs`).
     fn fit_canvas(&mut self) {
         let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
-        let (width, height) = self.fixed_size.unwrap_or((
-            (f64::from(self.canvas.client_width()) * dpr).round() as u32,
-            (f64::from(self.canvas.client_height()) * dpr).round() as u32,
-        ));
+        let (width, height) = self.fixed_size.unwrap_or_else(|| self.shown.device(dpr));
         if width > 0 && height > 0 && (width, height) != (self.canvas.width(), self.canvas.height())
         {
             self.canvas.set_width(width);
@@ -743,7 +749,7 @@ impl Viewer {
 
     /// A pointer moved to (x, y) CSS pixels.
     pub fn pointer_moved(&mut self, id: i32, x: f32, y: f32) {
-        let height = self.canvas.client_height().max(1) as f32;
+        let height = self.shown.css().1.max(1) as f32;
         if let Some(g) = &mut self.growing
             && self.pointers.moved(id, x, y, height, &mut g.camera)
         {
