@@ -725,6 +725,12 @@ impl App {
     /// again where the page's copy stands.
     fn take_replies(&mut self) {
         let polled = self.workers.borrow_mut().poll();
+        if let Some(replaced) = &polled.replaced {
+            signal("workerDeaths", &replaced.deaths.to_string());
+            if let Some(words) = replaced.words() {
+                set_text("workers-status", &words);
+            }
+        }
         if let Some(lost) = polled.sessions_lost {
             self.viewer.resume(lost);
         }
@@ -742,6 +748,9 @@ impl App {
                     }
                 }
             }
+        }
+        if let Some(notice) = self.viewer.take_notice() {
+            show_message(&notice);
         }
     }
 

@@ -82,9 +82,10 @@ pub async fn start() -> Result<(), JsValue> {
         gallery::build(&groups);
     }
     let background = page::background();
-    let workers = Rc::new(RefCell::new(workers::Workers::start(
-        crate::generator::GROWTH_BUDGET_MS,
-    )));
+    let workers = workers::Workers::start(crate::generator::GROWTH_BUDGET_MS);
+    page::signal("workers", &workers.count().to_string());
+    page::set_text("workers-status", workers.status());
+    let workers = Rc::new(RefCell::new(workers));
     let viewers = async {
         let shared = || Rc::clone(&workers);
         let main = Viewer::new(

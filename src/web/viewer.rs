@@ -9,7 +9,6 @@
 use super::activity;
 use super::clock::now;
 use super::debug;
-use super::page::show_message;
 use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use super::shown_size::ShownSize;
@@ -144,6 +143,9 @@ pub struct Viewer {
     gone: Option<String>,
     /// A fresh canvas that took the old one's place, until the page moves its listeners.
     replaced_canvas: Option<HtmlCanvasElement>,
+    /// Words for the page to show, until it takes them (the viewer writes no words on the page
+    /// itself).
+    notice: Option<String>,
 }
 
 /// The state of the viewer's graphics device.
@@ -191,6 +193,7 @@ impl Viewer {
             lost_at: None,
             gone: None,
             replaced_canvas: None,
+            notice: None,
         })
     }
 
@@ -482,7 +485,7 @@ impl Viewer {
         p.pending = false;
         p.state = state;
         if let Some(message) = failure {
-            show_message(&message);
+            self.notice = Some(message);
         }
         if cells == 0 {
             return;
@@ -513,6 +516,11 @@ impl Viewer {
             planar.draw_rows(0, replica.rgba());
             planar.follow((replica.rgba().len() / (replica.cells() * 4).max(1)) as u32);
         }
+    }
+
+    /// Words the page should show since it last asked (why a preview stopped).
+    pub fn take_notice(&mut self) -> Option<String> {
+        self.notice.take()
     }
 
     /// The preview's state for the page's signal: "filling", "whole", "stopped", or "" for none.

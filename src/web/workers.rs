@@ -3,11 +3,12 @@
 //! benchmarks), each running the core's host, with the core's [`Pool`] sharing requests out.
 //! Requests and replies cross as bytes in transferred `ArrayBuffer`s. A worker that throws, or
 //! keeps a request past its allowance, is terminated and replaced, and its jobs are sent again;
-//! the status line says so from the second time. A reply is read (copied and decoded) in its
-//! `message` event as it comes; one of megabytes is taken in a frame later, so that reading it
-//! and taking it in fall in different frames (see [`crate::view::draw_pacing`]). Where workers
-//! cannot start (or with `workers=0`), one host runs on the page's own thread a frame's budget
-//! at a time, and the status line says so.
+//! from the second time the page's status line says so ([`Replaced::words`]). A reply is read
+//! (copied and decoded) in its `message` event as it comes; one of megabytes is taken in a
+//! frame later, so that reading it and taking it in fall in different frames (see
+//! [`crate::view::draw_pacing`]). Where workers cannot start (or with `workers=0`), one host
+//! runs on the page's own thread a frame's budget at a time, and [`Workers::status`] says so.
+//! Nothing here writes on the page: the page shows what these return.
 //!
 //! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
 //! first request, and `hang-workers=N` the next N spin forever on theirs without answering (see
@@ -18,7 +19,6 @@
 
 use super::clock::now;
 use super::debug;
-use super::page::{set_text, signal};
 use crate::view::draw_pacing::HEAVY_BYTES;
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
@@ -109,6 +109,30 @@ pub struct Polled {
     /// Whether the worker holding the sessions was replaced: its shells are gone with it,
     /// and these of its requests were lost unanswered.
     pub sessions_lost: Option<Vec<Request>>,
+    /// The last worker replaced since the last frame, if any.
+    pub replaced: Option<Replaced>,
+}
+
+/// A worker that died or hung and was replaced.
+pub struct Replaced {
+    /// Workers replaced since the page opened.
+    pub deaths: usize,
+    /// Why this one was, in words.
+    why: String,
+}
+
+impl Replaced {
+    /// The status line's words: none the first time (a worker's death is rare enough to
+    /// redo its work silently once), the count and the cause from the second.
+    pub fn words(&self) -> Option<String> {
+        (self.deaths >= 2).then(|| {
+            format!(
+                "A worker stopped ({}) for the {} time; it was replaced and its work done again.",
+                self.why,
+                ordinal(self.deaths)
+            )
+        })
+    }
 }
 
 pub struct Workers {
@@ -119,6 +143,8 @@ pub struct Workers {
     /// Least milliseconds a worker is given to grow the shell per request (`grow-budget=N` in
     /// the query sets another, for benchmarks).
     worker_growth_ms: f64,
+    /// Where the shells grow, in words for the status line.
+    status: String,
 }
 
 /// Least milliseconds a worker grows the shell per request: off the page's thread a request
@@ -182,18 +208,12 @@ impl Workers {
             hangs: query_number("hang-workers").unwrap_or(0),
         };
         let patience = if faults.hangs > 0 { TEST_PATIENCE } else { 1.0 };
-        let local = |why: &str| {
-            signal("workers", "0");
-            set_text(
-                "workers-status",
-                &format!("Growing on the page's own thread: {why}."),
-            );
-            Self {
-                pool: Pool::new(1),
-                backend: Backend::Local(Box::default()),
-                budget_ms,
-                worker_growth_ms: budget_ms,
-            }
+        let local = |why: &str| Self {
+            pool: Pool::new(1),
+            backend: Backend::Local(Box::default()),
+            budget_ms,
+            worker_growth_ms: budget_ms,
+            status: format!("Growing on the page's own thread: {why}."),
         };
         if size == 0 {
             return local("workers are off (workers=0 in the address)");
@@ -212,15 +232,11 @@ impl Workers {
                 }
             }
         }
-        signal("workers", &size.to_string());
-        set_text(
-            "workers-status",
-            &format!(
+        Self {
+            status: format!(
                 "Growing on {size} worker{}.",
                 if size == 1 { "" } else { "s" }
             ),
-        );
-        Self {
             pool: Pool::new(size).with_patience(patience),
             backend: Backend::Workers {
                 slots,
@@ -230,6 +246,19 @@ impl Workers {
             budget_ms,
             worker_growth_ms: query_number("grow-budget").map_or(WORKER_GROWTH_MS, |ms| ms as f64),
         }
+    }
+
+    /// The workers in the pool: 0 on the page's own thread.
+    pub fn count(&self) -> usize {
+        match &self.backend {
+            Backend::Workers { slots, .. } => slots.len(),
+            Backend::Local(_) => 0,
+        }
+    }
+
+    /// Where the shells grow, in words for the status line.
+    pub fn status(&self) -> &str {
+        &self.status
     }
 
     /// Milliseconds to grow the shell for in one request, where the page's own thread would
@@ -360,17 +389,10 @@ impl Workers {
                         Ok(fresh) => slots[slot] = fresh,
                         Err(_) => continue,
                     }
-                    signal("workerDeaths", &pool.deaths().to_string());
-                    if pool.deaths() >= 2 {
-                        set_text(
-                            "workers-status",
-                            &format!(
-                                "A worker stopped ({why}) for the {} time; it was replaced and \
-                                 its work done again.",
-                                ordinal(pool.deaths())
-                            ),
-                        );
-                    }
+                    polled.replaced = Some(Replaced {
+                        deaths: pool.deaths(),
+                        why,
+                    });
                 }
             }
         }
