@@ -16,7 +16,10 @@
 // directory holding a built page (`www` unless given; say, another commit's `www` beside
 // this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
 // frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser on
-// BACKEND (`WebGL2` unless set, or `WebGPU`).
+// BACKEND (`WebGL2` unless set, or `WebGPU`), each round beside a plain script's frames
+// (`floor/index.html`: a reply taken into a GPU buffer, a request posted, the progress moved,
+// 318,402 triangles drawn with raw WebGL2), the least a page that draws on its own thread
+// spends. `make bench` sets the same baseline beside the page's WebGL2 frames.
 import { launch, open, pageThread, session, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
 
@@ -133,6 +136,23 @@ const frameLine = (f) => `p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms
   + `p50 ${f.script50.toFixed(2)} ms, p99 ${f.script99.toFixed(2)} ms of all the thread's script, over ${f.frames} frames `
   + `(${f.rows} rows grown in ${f.seconds.toFixed(0)} s)`;
 
+/**
+ * The baseline of the frame figures: a plain script's frames (`floor/index.html`: a reply
+ * taken into a GPU buffer, a request posted, the progress moved, 318,402 triangles drawn
+ * with raw WebGL2), the least a page that draws on its own thread spends, measured as the
+ * page's are.
+ */
+async function plainScript(browser, least) {
+  const server = await serve(new URL('floor/', import.meta.url).pathname);
+  try {
+    return await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, 1, least);
+  } finally {
+    server.close();
+  }
+}
+
+const PLAIN = "a plain script drawing on the page's thread (raw WebGL2)";
+
 /** The benchmark's figures of one core (pattern rates, the Murex polygonized) on the page's thread and on a worker. */
 async function oneCore(browser, base) {
   const page = await browser.newPage();
@@ -224,6 +244,7 @@ export async function benchWorkers() {
       const f = await frameScript(browser, base, workers);
       console.log(`Murex growing, page script per frame, WebGL2, workers=${workers}: ${frameLine(f)}`);
     }
+    console.log(`beside it, ${PLAIN}: ${frameLine(await plainScript(browser, 200)).replace('rows grown', 'frames')}`);
     const webgpu = await launch('WebGPU');
     try {
       const f = await frameScript(webgpu, base, 1);
@@ -289,15 +310,18 @@ export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]
   try {
     console.log(`frames (Chromium ${browser.version()}, ${backend}), ${rounds} rounds of ${least} frames`);
     const all = new Map();
+    const record = (key, f) => all.set(key, [...(all.get(key) ?? []), f]);
     for (let round = 0; round < rounds; round += 1) {
       for (const [i, server] of servers.entries()) {
         for (const workers of sizes) {
           const f = await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, workers, least);
           console.log(`round ${round + 1}, ${roots[i]}, workers=${workers}: ${frameLine(f)}`);
-          const key = `${roots[i]}, workers=${workers}`;
-          all.set(key, [...(all.get(key) ?? []), f]);
+          record(`${roots[i]}, workers=${workers}`, f);
         }
       }
+      const f = await plainScript(browser, least);
+      console.log(`round ${round + 1}, ${PLAIN}: ${frameLine(f).replace('rows grown', 'frames')}`);
+      record(PLAIN, f);
     }
     for (const [key, fs] of all) {
       const wall = fs.flatMap((f) => f.wall);
