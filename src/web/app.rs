@@ -40,6 +40,7 @@ use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
+use crate::work::view_status::ViewStatus;
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
@@ -54,6 +55,9 @@ const PROGRESS_EVERY_MS: f64 = 100.0;
 
 pub struct App {
     viewer: Viewer,
+    /// What the viewer said of itself after the last frame (and nothing of a shell just
+    /// loaded until it has).
+    status: ViewStatus,
     /// Where shells, pictures and pieces grow.
     workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
@@ -109,6 +113,7 @@ impl App {
         set_text("backend", &format!("Drawn with {}", viewer.backend()));
         Self {
             viewer,
+            status: ViewStatus::default(),
             workers,
             pictures,
             map: MapView::default(),
@@ -143,6 +148,11 @@ impl App {
 
     pub fn viewer(&mut self) -> &mut Viewer {
         &mut self.viewer
+    }
+
+    /// Whether a shell is shown (the gallery shows none).
+    pub fn has_shell(&self) -> bool {
+        self.current.is_some()
     }
 
     /// Follows the URL fragment (closing the parameter map, whose tiles are links).
@@ -214,8 +224,9 @@ impl App {
                 .current
                 .as_ref()
                 .is_some_and(|(p, _)| p.id == preset.id)
-            && self.viewer.growing().is_some_and(|g| g.replica.is_done());
+            && self.status.shell.as_ref().is_some_and(|s| s.done);
         self.viewer.load(preset, &spec);
+        self.status = ViewStatus::default();
         if remesh {
             self.viewer.finish();
         }
@@ -257,7 +268,6 @@ impl App {
             if previews(key) {
                 say(&problems);
                 self.viewer.preview(&next);
-                signal("preview", self.viewer.preview_state());
             }
             return;
         }
@@ -560,8 +570,7 @@ impl App {
 
     /// Starts a download of the shell shown (written over the next frames).
     pub fn download(&mut self, what: Download) {
-        self.downloads
-            .start(what, &mut self.viewer, self.current.as_ref());
+        self.downloads.start(what, &mut self.viewer);
     }
 
     /// Test-only (see `debug.rs`): destroys both graphics devices, the main viewer's and the
@@ -593,7 +602,7 @@ impl App {
                 if self.in_gallery {
                     page::hide_message();
                 } else {
-                    let rows = self.viewer.growing().map_or(0, |g| g.replica.rows_done());
+                    let rows = self.status.shell.as_ref().map_or(0, |s| s.rows_done);
                     show_message(&format!(
                         "The graphics device was lost and has been opened again, with \
                          {backend}: the shell goes on from row {rows}."
@@ -618,7 +627,7 @@ impl App {
         if !self.survive()? {
             return Ok(());
         }
-        self.downloads.work(&mut self.viewer, self.current.as_ref());
+        self.downloads.show(self.viewer.work_file());
         self.take_replies();
         if self.recording.is_some() {
             self.record_frame();
@@ -645,42 +654,39 @@ impl App {
             return Ok(());
         }
         let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;
-        signal("preview", self.viewer.preview_state());
-        let settled = self.viewer.growing().is_some_and(|g| g.settled());
-        signal("settled", if settled { "true" } else { "false" });
+        self.status = self.viewer.status();
+        signal("preview", self.status.preview_signal());
+        let Some(shell) = &self.status.shell else {
+            signal("settled", "false");
+            return Ok(());
+        };
+        signal("settled", if shell.settled { "true" } else { "false" });
         self.show_progress();
         if !drawn {
             return Ok(());
         }
-        let Some(g) = self.viewer.growing() else {
+        let Some(shell) = &self.status.shell else {
             return Ok(());
         };
-        let replica = &g.replica;
-        if replica.shell().is_none() {
-            return Ok(());
-        }
-        let done = replica.rows_done();
-        signal("rows", &done.to_string());
-        let whole = replica.is_done() && g.settled();
+        signal("rows", &shell.rows_done.to_string());
+        let whole = shell.done && shell.settled;
         signal("growth", if whole { "done" } else { "growing" });
-        self.downloads.show_sizes(&self.viewer);
-        if let Some(failure) = replica.failure() {
+        self.downloads.show_sizes(shell);
+        if let Some(failure) = &shell.failure {
             show_message(failure);
             signal("state", "stopped");
-        } else if replica.is_done() && g.settled() && g.view_at_rest() {
-            if let Some(hash) = replica.pattern_hash() {
+        } else if shell.finished() {
+            if let Some(hash) = shell.pattern_hash {
                 signal("patternHash", &format!("{hash:016x}"));
             }
-            let (mesh, edge) = (replica.mesh(), replica.edge());
             signal(
                 "mesh",
                 &format!(
                     "{} vertices, {} triangles",
-                    mesh.vertices.len() + edge.vertex_count(),
-                    mesh.triangle_count() + edge.triangle_count()
+                    shell.counts.vertices, shell.counts.triangles
                 ),
             );
-            if let Some(hash) = replica.mesh_hash() {
+            if let Some(hash) = shell.mesh_hash {
                 signal("meshHash", &format!("{hash:016x}"));
             }
             signal("state", "grown");
@@ -694,15 +700,10 @@ impl App {
     /// most every [`PROGRESS_EVERY_MS`] while the shell grows (called every frame, drawn or
     /// not, so that the last rows of a growth paused or finished are shown too).
     fn show_progress(&mut self) {
-        let Some(replica) = self
-            .viewer
-            .growing()
-            .map(|g| &g.replica)
-            .filter(|r| r.shell().is_some())
-        else {
+        let Some(shell) = &self.status.shell else {
             return;
         };
-        let (done, total) = (replica.rows_done(), replica.rows());
+        let (done, total) = (shell.rows_done, shell.rows);
         let (shown_done, shown_total, shown_at) = self.progress_shown;
         let t = now();
         if (shown_done, shown_total) == (done, total)

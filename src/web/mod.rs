@@ -330,12 +330,7 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
         }
     })?;
     on(&document, "keydown", app, |a, e: KeyboardEvent| {
-        if typing(&e)
-            || e.ctrl_key()
-            || e.meta_key()
-            || e.alt_key()
-            || a.viewer().growing().is_none()
-        {
+        if typing(&e) || e.ctrl_key() || e.meta_key() || e.alt_key() || !a.has_shell() {
             return;
         }
         match e.key().as_str() {

@@ -13,6 +13,9 @@ use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use super::shown_size::ShownSize;
 use super::workers::Workers;
+use crate::export::Download;
+use crate::export::estimate::Counts;
+use crate::export::print_size::PrintSize;
 use crate::generator::Advance;
 use crate::mesh::Bounds;
 use crate::pattern::texture_layout::TextureLayout;
@@ -27,20 +30,22 @@ use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::PreviewState;
+use crate::work::file_writer::{FileStage, FileWriter, Source};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::replica::Replica;
+use crate::work::view_status::{ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;
 use web_sys::HtmlCanvasElement;
 
 /// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
-pub struct Growing {
-    pub preset: &'static Preset,
+struct Growing {
+    preset: &'static Preset,
     spec: ShellSpec,
     /// The link its worker grows it from.
     link: String,
-    pub replica: Replica,
+    replica: Replica,
     camera: OrbitCamera,
     planar: Option<Planar>,
     /// The planar view's cells and rows for this shell's pattern.
@@ -82,7 +87,7 @@ impl Growing {
     }
 
     /// Whether the view rests on what has grown (or where the user left it).
-    pub fn view_at_rest(&self) -> bool {
+    fn view_at_rest(&self) -> bool {
         self.camera.settled(self.replica.grown())
     }
 
@@ -91,8 +96,17 @@ impl Growing {
         panes(layout, &self.camera, self.replica.grown(), aspect)
     }
 
+    /// What a file of it is written from.
+    fn source(&self) -> Source<'_> {
+        Source {
+            preset: self.preset,
+            spec: &self.spec,
+            replica: &self.replica,
+        }
+    }
+
     /// Whether the shell stands where its worker left it, nothing asked of it unanswered.
-    pub fn settled(&self) -> bool {
+    fn settled(&self) -> bool {
         self.pending == 0 && self.replica.shell().is_some()
     }
 }
@@ -146,6 +160,8 @@ pub struct Viewer {
     /// Words for the page to show, until it takes them (the viewer writes no words on the page
     /// itself).
     notice: Option<String>,
+    /// A file of the shell being written.
+    writer: FileWriter,
 }
 
 /// The state of the viewer's graphics device.
@@ -194,17 +210,13 @@ impl Viewer {
             gone: None,
             replaced_canvas: None,
             notice: None,
+            writer: FileWriter::default(),
         })
     }
 
     /// "WebGPU" or "WebGL2".
     pub fn backend(&self) -> &'static str {
         self.renderer.backend()
-    }
-
-    /// The shell being grown.
-    pub fn growing(&self) -> Option<&Growing> {
-        self.growing.as_ref()
     }
 
     /// Follows a change of the page's theme.
@@ -523,12 +535,33 @@ impl Viewer {
         self.notice.take()
     }
 
-    /// The preview's state for the page's signal: "filling", "whole", "stopped", or "" for none.
-    pub fn preview_state(&self) -> &'static str {
-        self.growing
-            .as_ref()
-            .and_then(|g| g.preview.as_ref())
-            .map_or("", |p| p.state.signal())
+    /// What the page shows of this viewer: where its shell stands, and the preview.
+    pub fn status(&self) -> ViewStatus {
+        let Some(g) = &self.growing else {
+            return ViewStatus::default();
+        };
+        let r = &g.replica;
+        let (mesh, edge) = (r.mesh(), r.edge());
+        ViewStatus {
+            shell: r.shell().map(|_| ShellStatus {
+                session: r.session(),
+                rows_done: r.rows_done(),
+                rows: r.rows(),
+                done: r.is_done(),
+                settled: g.settled(),
+                at_rest: g.view_at_rest(),
+                failure: r.failure().map(str::to_string),
+                pattern_hash: r.pattern_hash(),
+                mesh_hash: r.mesh_hash(),
+                counts: Counts {
+                    vertices: mesh.vertices.len() + edge.vertex_count(),
+                    triangles: mesh.triangle_count() + edge.triangle_count(),
+                    pattern: (r.cells() > 0).then(|| (r.cells(), r.rgba().len() / (r.cells() * 4))),
+                    picture: (self.canvas.width() as usize, self.canvas.height() as usize),
+                },
+            }),
+            preview: g.preview.as_ref().map(|p| p.state),
+        }
     }
 
     /// Keeps a graphics device: when the browser took the renderer's away, opens another in
@@ -774,17 +807,33 @@ impl Viewer {
 
     /// Draws now and returns the canvas as a PNG data URL (read before the browser clears it).
     pub fn picture(&mut self) -> Result<String, String> {
-        if let Some(loss) = self.renderer.lost() {
-            return Err(format!("the graphics device was lost ({})", loss.reason));
+        picture(
+            &mut self.renderer,
+            &self.canvas,
+            self.growing.as_ref(),
+            self.layout,
+        )
+    }
+
+    /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the
+    /// next frames ([`Self::work_file`]); an implicit shell still growing is finished first.
+    pub fn write_file(&mut self, what: Download, size: PrintSize) {
+        if self.writer.busy() {
+            return;
         }
-        let Some(g) = &self.growing else {
-            return Err("nothing is drawn yet".into());
-        };
-        self.renderer
-            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
-        self.canvas
-            .to_data_url_with_type("image/png")
-            .map_err(|_| "the browser refused to read the canvas".to_string())
+        let source = self.growing.as_ref().map(Growing::source);
+        let (renderer, canvas, layout) = (&mut self.renderer, &self.canvas, self.layout);
+        let picture = || picture(renderer, canvas, self.growing.as_ref(), layout);
+        if self.writer.start(what, size, source, picture) {
+            self.finish();
+        }
+    }
+
+    /// Works on the file asked for by [`Self::write_file`] for a frame's budget: where it
+    /// stands, or `None` when none is asked for.
+    pub fn work_file(&mut self) -> Option<FileStage> {
+        self.writer
+            .work(self.growing.as_ref().map(Growing::source), &now)
     }
 
     pub fn canvas(&self) -> &HtmlCanvasElement {
@@ -842,4 +891,24 @@ impl Viewer {
         self.dirty = false;
         Ok(())
     }
+}
+
+/// Draws `growing` on `renderer` now and returns `canvas` as a PNG data URL (read before the
+/// browser clears it).
+fn picture(
+    renderer: &mut Renderer,
+    canvas: &HtmlCanvasElement,
+    growing: Option<&Growing>,
+    layout: Layout,
+) -> Result<String, String> {
+    if let Some(loss) = renderer.lost() {
+        return Err(format!("the graphics device was lost ({})", loss.reason));
+    }
+    let Some(g) = growing else {
+        return Err("nothing is drawn yet".into());
+    };
+    renderer.draw(&g.panes(layout, renderer.aspect()))?;
+    canvas
+        .to_data_url_with_type("image/png")
+        .map_err(|_| "the browser refused to read the canvas".to_string())
 }

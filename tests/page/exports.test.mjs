@@ -2,8 +2,9 @@
 // picture and the pattern, each with its size; the Oliva's GLB passes the Khronos glTF
 // validator and opens in three.js's GLTFLoader, drawn beside the page's own picture of it
 // (exports/oliva-page-and-three.png, in the README); the Murex at its own resolution is
-// written over many frames with a progress bar, into the file the command line writes; and
-// what cannot be exported says why instead of downloading anything.
+// written over many frames with a progress bar, into the file the command line writes; a mesh
+// of an implicit shell still growing is of the whole shell, finished first; and what cannot be
+// exported says why instead of downloading anything.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -224,6 +225,37 @@ test('the Murex at its own resolution is written over many frames with a progres
     assert.equal(a.json.images, undefined, 'no pattern texture beside the vertex colours');
     const report = await validator.validateBytes(new Uint8Array(glb.bytes));
     assert.equal(report.issues.numErrors, 0);
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test('a mesh asked of an implicit shell still growing is of the whole shell, finished first', async () => {
+  const link = 'v=1&preset=implicit-whorl&form.resolution=48&growth.speed=0.2';
+  const { page, errors } = await open(browser, `${base}#${link}`);
+  try {
+    await waitForState(page, ['growing']);
+    const stages = page.evaluate(() => new Promise((resolve) => {
+      const seen = [];
+      const frame = () => {
+        const stage = document.body.dataset.download ?? '';
+        if (seen.at(-1) !== stage) seen.push(stage);
+        if (stage === 'offered' || stage === 'refused') resolve(seen);
+        else requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+    }));
+    const stl = await download(page, 'stl', 'implicit-whorl-while-growing.stl');
+    assert.equal(stl.name, 'implicit-whorl.stl');
+    const seen = await stages;
+    assert.ok(seen.includes('finishing'), `stages: ${seen}`);
+    assert.equal(seen.at(-1), 'offered', `stages: ${seen}`);
+    assert.equal(await page.evaluate(() => document.body.dataset.growth), 'done', 'the shell was grown whole');
+    await waitForState(page, ['grown']);
+    const triangles = stl.bytes.readUInt32LE(80);
+    const mesh = await page.evaluate(() => document.body.dataset.mesh);
+    assert.equal(`${triangles}`, mesh.match(/(\d+) triangles/)[1], `the STL holds the whole shell (${mesh})`);
     assert.deepEqual(errors, []);
   } finally {
     await page.close();

@@ -1,0 +1,225 @@
+//! A file of the shell written where the viewer's copy of it is: the mesh in any format, the
+//! pattern as a PNG, or the picture as drawn. A file is written by the core in steps
+//! ([`Export`]), a frame's budget at a time, so that nothing freezes. A mesh of an implicit
+//! shell still growing is of the whole shell: the viewer first finishes it, its chunks shared by
+//! the pool of workers as the Finish control shares them, then writes it. The page asks for a
+//! file and is handed where it stands ([`FileStage`]) and, in the end, its bytes (the page
+//! offers them); it reads nothing of the shell itself.
+
+use super::replica::Replica;
+use crate::export::Download;
+use crate::export::job::Export;
+use crate::export::print_size::PrintSize;
+use crate::export::shell::Shell;
+use crate::generator::within;
+use crate::presets::Preset;
+use crate::spec::ShellSpec;
+use crate::spec::form::Form;
+
+/// Milliseconds of a frame an export may take.
+const EXPORT_BUDGET_MS: f64 = 8.0;
+
+/// Where a file asked for stands.
+pub enum FileStage {
+    /// The implicit shell is being finished before its mesh is written.
+    Finishing,
+    /// Being written: the file's name and the fraction done.
+    Writing { name: String, done: f64 },
+    /// Written whole.
+    Written(File),
+    /// It could not be made: why, in words.
+    Refused(String),
+}
+
+/// A file written whole.
+pub struct File {
+    pub what: Download,
+    pub name: String,
+    pub body: Body,
+}
+
+/// What a file holds: bytes of a type, or (the picture, as the canvas gives it) a data URL.
+pub enum Body {
+    Bytes { mime: &'static str, bytes: Vec<u8> },
+    Url(String),
+}
+
+/// A file being written in steps.
+struct Job {
+    export: Export,
+    name: String,
+    mime: &'static str,
+    what: Download,
+    /// The longest step lately (see [`within`]).
+    longest: f64,
+}
+
+/// The file asked for, from the moment it is asked for until it is handed over.
+enum Asked {
+    /// Waiting for the shell of `session` to be grown whole.
+    AfterFinish {
+        what: Download,
+        size: PrintSize,
+        session: u32,
+    },
+    Job(Job),
+    /// Made at once (the picture, the pattern's file), or refused, and not yet handed over.
+    Ready(FileStage),
+}
+
+/// The viewer's file under way, if any.
+#[derive(Default)]
+pub struct FileWriter {
+    asked: Option<Asked>,
+}
+
+/// What a file is written from: the shell's copy, what it was grown from, and the picture.
+pub struct Source<'a> {
+    pub preset: &'a Preset,
+    pub spec: &'a ShellSpec,
+    pub replica: &'a Replica,
+}
+
+impl FileWriter {
+    /// Whether a file is under way (another is not started meanwhile).
+    pub fn busy(&self) -> bool {
+        self.asked.is_some()
+    }
+
+    /// Starts the file `what` of `source` at `size` (GLB and 3MF). Returns whether the shell
+    /// must first be finished (an implicit shell still growing, for a mesh): the caller
+    /// finishes it. `picture` draws the view and reads it back, when the picture is asked for.
+    pub fn start(
+        &mut self,
+        what: Download,
+        size: PrintSize,
+        source: Option<Source>,
+        picture: impl FnOnce() -> Result<String, String>,
+    ) -> bool {
+        let Some(source) = source else {
+            self.asked = Some(Asked::Ready(FileStage::Refused("no shell is shown".into())));
+            return false;
+        };
+        let r = source.replica;
+        let implicit = matches!(source.spec.form, Form::Implicit(_));
+        if matches!(what, Download::Mesh(_)) && implicit && r.shell().is_some() && !r.is_done() {
+            self.asked = Some(Asked::AfterFinish {
+                what,
+                size,
+                session: r.session(),
+            });
+            return true;
+        }
+        let name = what.file_name(source.preset.id);
+        let made = match what {
+            Download::Picture => picture().map(|url| {
+                Asked::Ready(FileStage::Written(File {
+                    what,
+                    name,
+                    body: Body::Url(url),
+                }))
+            }),
+            _ => begin(what, name, size, &source).map(Asked::Job),
+        };
+        self.asked = Some(made.unwrap_or_else(|e| Asked::Ready(FileStage::Refused(e))));
+        false
+    }
+
+    /// Works on the file under way for this frame's budget: where it stands, or `None` when no
+    /// file is asked for. A file waiting for its shell to be finished starts once it is (and
+    /// is refused when another shell took its place).
+    pub fn work(&mut self, source: Option<Source>, now: &dyn Fn() -> f64) -> Option<FileStage> {
+        let writing = match self.asked.take()? {
+            Asked::AfterFinish {
+                what,
+                size,
+                session,
+            } => match source {
+                Some(s) if s.replica.session() == session && !s.replica.is_done() => {
+                    self.asked = Some(Asked::AfterFinish {
+                        what,
+                        size,
+                        session,
+                    });
+                    return Some(FileStage::Finishing);
+                }
+                Some(s) if s.replica.session() == session => {
+                    let name = what.file_name(s.preset.id);
+                    match begin(what, name.clone(), size, &s) {
+                        Ok(job) => {
+                            self.asked = Some(Asked::Job(job));
+                            FileStage::Writing { name, done: 0.0 }
+                        }
+                        Err(e) => FileStage::Refused(e),
+                    }
+                }
+                _ => FileStage::Refused(
+                    "the shell was changed before it was grown whole".to_string(),
+                ),
+            },
+            Asked::Ready(done) => done,
+            Asked::Job(mut job) => {
+                match job
+                    .export
+                    .work(within(now, EXPORT_BUDGET_MS, &mut job.longest))
+                {
+                    Ok(None) => {
+                        let writing = FileStage::Writing {
+                            name: job.name.clone(),
+                            done: job.export.progress(),
+                        };
+                        self.asked = Some(Asked::Job(job));
+                        return Some(writing);
+                    }
+                    Ok(Some(bytes)) => FileStage::Written(File {
+                        what: job.what,
+                        name: job.name,
+                        body: Body::Bytes {
+                            mime: job.mime,
+                            bytes,
+                        },
+                    }),
+                    Err(e) => FileStage::Refused(e.to_string()),
+                }
+            }
+        };
+        Some(writing)
+    }
+}
+
+/// The job that writes `what` (the pattern or a mesh) of `source` as `name`.
+fn begin(what: Download, name: String, size: PrintSize, source: &Source) -> Result<Job, String> {
+    let r = source.replica;
+    let (export, mime) = match what {
+        Download::Picture => return Err("the picture is not written in steps".into()),
+        Download::Pattern => {
+            if r.cells() == 0 {
+                return Err("this shell has no pattern".into());
+            }
+            let rows = r.rgba().len() / (r.cells() * 4);
+            (
+                Export::pattern(r.cells(), rows, r.rgba().to_vec()),
+                "image/png",
+            )
+        }
+        Download::Mesh(format) => {
+            let size = if format.sized() {
+                size
+            } else {
+                PrintSize::default()
+            };
+            let grown = r.for_export().ok_or("the shell is not built yet")?;
+            let shell =
+                Shell::of(grown, source.spec, source.preset, size).map_err(|e| e.to_string())?;
+            let export = Export::new(format, shell).map_err(|e| e.to_string())?;
+            (export, format.mime())
+        }
+    };
+    Ok(Job {
+        export,
+        name,
+        mime,
+        what,
+        longest: 0.0,
+    })
+}
