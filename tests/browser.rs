@@ -17,30 +17,23 @@ use seashells_core::view::camera::OrbitCamera;
 use seashells_core::view::panes::panes;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
-use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
+use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
-fn canvas(size: u32) -> HtmlCanvasElement {
-    let document = web_sys::window().unwrap().document().unwrap();
-    let canvas: HtmlCanvasElement = document
-        .create_element("canvas")
-        .unwrap()
-        .dyn_into()
-        .unwrap();
-    canvas.set_width(size);
-    canvas.set_height(size);
-    document.body().unwrap().append_child(&canvas).unwrap();
-    canvas
+/// A canvas off the page of `size` × `size` pixels, as the page's canvases draw (their
+/// drawing handed to an `OffscreenCanvas`).
+fn canvas(size: u32) -> OffscreenCanvas {
+    OffscreenCanvas::new(size, size).unwrap()
 }
 
 /// The RGBA pixels of a `size`-wide square of `canvas` from (`x`, `y`), read as drawn.
-fn pixels(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> Vec<u8> {
+fn pixels(canvas: &OffscreenCanvas, x: u32, y: u32, size: u32) -> Vec<u8> {
     let copy = self::canvas(canvas.width());
-    let context: CanvasRenderingContext2d =
+    let context: OffscreenCanvasRenderingContext2d =
         copy.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
     context
-        .draw_image_with_html_canvas_element(canvas, 0.0, 0.0)
+        .draw_image_with_offscreen_canvas(canvas, 0.0, 0.0)
         .unwrap();
     let [x, y, size] = [x, y, size].map(f64::from);
     context
@@ -52,7 +45,7 @@ fn pixels(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> Vec<u8> {
 
 /// Share of pixels that are not the black background in the square of `size` at (x, y) of
 /// the canvas, and the number of distinct grey levels among them (a lit surface has many).
-fn coverage_in(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> (f64, usize) {
+fn coverage_in(canvas: &OffscreenCanvas, x: u32, y: u32, size: u32) -> (f64, usize) {
     let data = pixels(canvas, x, y, size);
     let mut lit = 0;
     let mut shades = std::collections::BTreeSet::new();
@@ -68,7 +61,7 @@ fn coverage_in(canvas: &HtmlCanvasElement, x: u32, y: u32, size: u32) -> (f64, u
 
 /// A renderer on a new square canvas of `size`, with `id`'s shell grown whole and loaded, a
 /// camera framing it, and its bounds.
-async fn grown(id: &str, size: u32) -> (HtmlCanvasElement, Renderer, OrbitCamera, Bounds) {
+async fn grown(id: &str, size: u32) -> (OffscreenCanvas, Renderer, OrbitCamera, Bounds) {
     let canvas = canvas(size);
     let mut renderer = Renderer::new(canvas.clone())
         .await
@@ -127,7 +120,7 @@ async fn four_views_draw_the_shell_in_every_quarter() {
 }
 
 /// The colour at the centre of the canvas.
-fn centre(canvas: &HtmlCanvasElement) -> [u8; 3] {
+fn centre(canvas: &OffscreenCanvas) -> [u8; 3] {
     let half = canvas.width() / 2;
     let data = pixels(canvas, half, half, 1);
     [data[0], data[1], data[2]]

@@ -11,7 +11,7 @@ use seashells_core::export::{Download, MeshFormat};
 use seashells_core::presets::Preset;
 use seashells_core::share::link;
 use seashells_core::spec::ShellSpec;
-use seashells_core::work::file_writer::{Body, FileStage, FileWriter, Source};
+use seashells_core::work::file_writer::{Body, FileStage, FileWriter, Needs, Source};
 use seashells_core::work::host::{Budget, Host};
 use seashells_core::work::message::Reply;
 use seashells_core::work::message::Request;
@@ -81,11 +81,6 @@ fn source<'a>(preset: &'a Preset, spec: &'a ShellSpec, replica: &'a Replica) -> 
     }
 }
 
-/// No picture is asked for in these tests but the picture's own.
-fn no_picture() -> Result<String, String> {
-    panic!("only the picture draws")
-}
-
 /// Works on the file until it is written or refused.
 fn finish_file(writer: &mut FileWriter, source: impl Fn() -> Source<'static>) -> FileStage {
     let now = clock();
@@ -118,9 +113,12 @@ fn a_mesh_written_in_steps_is_the_exporters_file_of_the_same_shell() {
         Download::Mesh(MeshFormat::Glb),
         size,
         Some(source(preset, spec, replica)),
-        no_picture,
     );
-    assert!(!finish, "a swept shell is written as it stands");
+    assert_eq!(
+        finish,
+        Needs::Nothing,
+        "a swept shell is written as it stands"
+    );
     assert!(writer.busy());
     let FileStage::Written(file) = finish_file(&mut writer, || source(preset, spec, replica))
     else {
@@ -150,13 +148,13 @@ fn an_implicit_shell_still_growing_is_finished_before_its_mesh_is_written() {
     assert!(!growing.is_done());
     let mut writer = FileWriter::default();
     let what = Download::Mesh(MeshFormat::Stl);
-    assert!(
+    assert_eq!(
         writer.start(
             what,
             PrintSize::default(),
-            Some(source(preset, &spec, &growing)),
-            no_picture
+            Some(source(preset, &spec, &growing))
         ),
+        Needs::Finish,
         "the caller is told to finish it"
     );
     let now = clock();
@@ -192,12 +190,14 @@ fn a_mesh_waiting_for_a_shell_that_was_replaced_is_refused() {
     let (preset, spec, growing) = grown(text, 5, |r| r.shell().is_some());
     let mut writer = FileWriter::default();
     let what = Download::Mesh(MeshFormat::Obj);
-    assert!(writer.start(
-        what,
-        PrintSize::default(),
-        Some(source(preset, &spec, &growing)),
-        no_picture
-    ));
+    assert_eq!(
+        writer.start(
+            what,
+            PrintSize::default(),
+            Some(source(preset, &spec, &growing))
+        ),
+        Needs::Finish
+    );
     let other = Replica::new(6);
     let stage = writer.work(Some(source(preset, &spec, &other)), &clock());
     let Some(FileStage::Refused(why)) = stage else {
@@ -217,7 +217,7 @@ fn what_cannot_be_made_is_refused_with_its_reason() {
         why
     };
     let mut writer = FileWriter::default();
-    writer.start(Download::Pattern, PrintSize::default(), None, no_picture);
+    writer.start(Download::Pattern, PrintSize::default(), None);
     assert_eq!(refused(&mut writer, None), "no shell is shown");
 
     let (preset, spec, plain) = grown("v=1&preset=turbinate&form.spiral.whorls=2", 1, |r| {
@@ -227,7 +227,6 @@ fn what_cannot_be_made_is_refused_with_its_reason() {
         Download::Pattern,
         PrintSize::default(),
         Some(source(preset, &spec, &plain)),
-        no_picture,
     );
     assert_eq!(
         refused(&mut writer, Some(source(preset, &spec, &plain))),
@@ -239,19 +238,19 @@ fn what_cannot_be_made_is_refused_with_its_reason() {
         Download::Mesh(MeshFormat::Ply),
         PrintSize::default(),
         Some(source(preset, &spec, &unbuilt)),
-        no_picture,
     );
     assert_eq!(
         refused(&mut writer, Some(source(preset, &spec, &unbuilt))),
         "the shell is not built yet"
     );
 
-    writer.start(
+    let needs = writer.start(
         Download::Picture,
         PrintSize::default(),
         Some(source(preset, &spec, &plain)),
-        || Err("the graphics device was lost (test)".into()),
     );
+    assert_eq!(needs, Needs::Picture);
+    writer.picture_taken(Err("the graphics device was lost (test)".into()));
     assert_eq!(
         refused(&mut writer, Some(source(preset, &spec, &plain))),
         "the graphics device was lost (test)"
@@ -262,17 +261,32 @@ fn what_cannot_be_made_is_refused_with_its_reason() {
 fn the_picture_is_what_the_view_gives_named_for_the_preset() {
     let (preset, spec, replica) = grown("v=1&preset=turbinate", 1, |r| r.shell().is_some());
     let mut writer = FileWriter::default();
-    writer.start(
+    let needs = writer.start(
         Download::Picture,
         PrintSize::default(),
         Some(source(preset, &spec, &replica)),
-        || Ok("data:image/png;base64,AAAA".into()),
     );
-    let Some(FileStage::Written(file)) =
-        writer.work(Some(source(preset, &spec, &replica)), &clock())
+    assert_eq!(
+        needs,
+        Needs::Picture,
+        "the viewer is asked to read its canvas"
+    );
+    let now = clock();
+    for _ in 0..3 {
+        assert!(
+            matches!(
+                writer.work(Some(source(preset, &spec, &replica)), &now),
+                Some(FileStage::Writing { .. })
+            ),
+            "waits for the picture"
+        );
+    }
+    writer.picture_taken(Ok("blob:picture".into()));
+    let Some(FileStage::Written(file)) = writer.work(Some(source(preset, &spec, &replica)), &now)
     else {
         panic!("not written");
     };
     assert_eq!(file.name, "turbinate.png");
-    assert!(matches!(file.body, Body::Url(url) if url == "data:image/png;base64,AAAA"));
+    assert!(matches!(file.body, Body::Url(url) if url == "blob:picture"));
+    assert!(!writer.busy());
 }

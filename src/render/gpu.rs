@@ -1,4 +1,4 @@
-//! The browser's graphics device on one canvas: WebGPU when an adapter comes, WebGL2
+//! The browser's graphics device on one (offscreen) canvas: WebGPU when an adapter comes, WebGL2
 //! otherwise, the canvas configured in an 8-bit colour format, and a watch that records a lost
 //! device (WebGPU's device-lost callback, WebGL's `webglcontextlost` and
 //! `webglcontextrestored` events) apart from an uncaptured error, so that the page can open a
@@ -40,7 +40,7 @@ pub(super) struct Watch {
 
 impl Gpu {
     /// Opens a device on `canvas` and configures the canvas for it.
-    pub(super) async fn open(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
+    pub(super) async fn open(canvas: web_sys::OffscreenCanvas) -> Result<Self, String> {
         let (width, height) = (canvas.width().max(1), canvas.height().max(1));
         let (surface, adapter, backend) = adapter(canvas.clone()).await?;
         let (device, queue) = adapter
@@ -85,7 +85,7 @@ impl Gpu {
 
 /// The canvas's surface and an adapter for it, with the backend's name.
 async fn adapter(
-    canvas: web_sys::HtmlCanvasElement,
+    canvas: web_sys::OffscreenCanvas,
 ) -> Result<(wgpu::Surface<'static>, wgpu::Adapter, &'static str), String> {
     let instance = wgpu::util::new_instance_with_webgpu_detection(wgpu::InstanceDescriptor {
         backends: wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
@@ -93,7 +93,7 @@ async fn adapter(
     })
     .await;
     let surface = instance
-        .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+        .create_surface(wgpu::SurfaceTarget::OffscreenCanvas(canvas))
         .map_err(|e| {
             format!("This browser offers neither WebGPU nor WebGL2 on this page ({e}).")
         })?;
@@ -136,7 +136,7 @@ fn watch(device: &wgpu::Device) -> Arc<Mutex<Watch>> {
 
 /// An event listener on a canvas, removed when dropped (its closure goes with it).
 pub(super) struct CanvasListener {
-    canvas: web_sys::HtmlCanvasElement,
+    canvas: web_sys::OffscreenCanvas,
     kind: &'static str,
     closure: Closure<dyn FnMut(web_sys::Event)>,
 }
@@ -153,7 +153,7 @@ impl Drop for CanvasListener {
 /// Watches a WebGL2 canvas for the browser taking its context away, and giving it back. The
 /// loss is accepted (`preventDefault`), which asks the browser to restore the context later.
 fn watch_context(
-    canvas: &web_sys::HtmlCanvasElement,
+    canvas: &web_sys::OffscreenCanvas,
     watch: &Arc<Mutex<Watch>>,
 ) -> Vec<CanvasListener> {
     let listen = |kind: &'static str, seen: fn(&mut Watch)| {
@@ -164,7 +164,7 @@ fn watch_context(
                 seen(&mut w);
             }
         });
-        // Adding a listener to an element cannot fail.
+        // Adding a listener to a canvas cannot fail.
         let _ = canvas.add_event_listener_with_callback(kind, closure.as_ref().unchecked_ref());
         CanvasListener {
             canvas: canvas.clone(),

@@ -178,7 +178,7 @@ fn create_targets(
 
 impl Renderer {
     /// Sets up wgpu on the canvas: WebGPU if an adapter comes, WebGL2 otherwise.
-    pub async fn new(canvas: web_sys::HtmlCanvasElement) -> Result<Self, String> {
+    pub async fn new(canvas: web_sys::OffscreenCanvas) -> Result<Self, String> {
         let gpu = Gpu::open(canvas).await?;
         let device = &gpu.device;
         let layout = pipeline::bind_group_layout(device, GLOBALS_SIZE);

@@ -18,6 +18,7 @@
 
 use super::activity;
 use super::clock::now;
+use super::debug::Loss;
 use super::dom;
 use super::download::Downloads;
 use super::gallery::Pictures;
@@ -490,7 +491,7 @@ impl App {
         let speed = self.viewer.playback.speed;
         let plan = RecordingPlan::new(rows, speed, record::options());
         self.viewer.fix_size(Some((plan.width, plan.height)));
-        match Recording::start(plan, preset.id, &support, self.viewer.canvas()) {
+        match Recording::start(plan, preset.id, &support, &self.viewer.canvas().element) {
             Ok(recording) => {
                 signal("record", "recording");
                 record::show_recording(Some(&recording));
@@ -573,11 +574,11 @@ impl App {
         self.downloads.start(what, &mut self.viewer);
     }
 
-    /// Test-only (see `debug.rs`): destroys both graphics devices, the main viewer's and the
-    /// gallery pictures', as a driver reset would.
-    pub fn destroy_devices(&self) {
-        self.viewer.destroy_device();
-        self.pictures.destroy_device();
+    /// Test-only (see `debug.rs`): takes both graphics devices away, the main viewer's and the
+    /// gallery pictures', as a driver reset or the browser would.
+    pub fn take_devices(&self, loss: Loss) -> Result<(), String> {
+        self.viewer.take_device(loss)?;
+        self.pictures.take_device(loss)
     }
 
     /// Keeps the main viewer's graphics device, saying in words when it was lost and when it

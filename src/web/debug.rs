@@ -1,14 +1,25 @@
 //! Test-only hooks, exported from the wasm module for the page tests
 //! (`tests/page/survive.test.mjs`, `tests/page/workers.test.mjs`) to force what a user's
-//! machine does rarely: a destroyed graphics device, a panic, a worker that throws. They are
+//! machine does rarely: a destroyed graphics device, a lost WebGL context, a panic, a worker
+//! that throws. They are
 //! not part of the page's interface; calling one does to the page what the event itself would,
 //! and the page must survive it.
 
 use std::cell::{Cell, RefCell};
 use wasm_bindgen::prelude::*;
 
-/// Destroys the page's graphics devices; says why it could not.
-pub type Destroy = Box<dyn Fn() -> Result<(), String>>;
+/// How a test takes the page's graphics devices away.
+#[derive(Clone, Copy, Debug)]
+pub enum Loss {
+    /// `GPUDevice.destroy()`, as a driver reset would (WebGPU; nothing on WebGL2).
+    Destroy,
+    /// `WEBGL_lose_context`'s `loseContext()`, given back after this many milliseconds if
+    /// asked (WebGL2).
+    Context { restore_after_ms: Option<i32> },
+}
+
+/// Takes the page's graphics devices away; says why it could not.
+pub type Destroy = Box<dyn Fn(Loss) -> Result<(), String>>;
 
 thread_local! {
     static DESTROY: RefCell<Option<Destroy>> = const { RefCell::new(None) };
@@ -16,7 +27,8 @@ thread_local! {
     static CRASH_ON_FILL: Cell<bool> = const { Cell::new(false) };
 }
 
-/// Remembers how to reach the page's devices, for [`debug_destroy_device`].
+/// Remembers how to reach the page's devices, for [`debug_destroy_device`] and
+/// [`debug_lose_context`].
 pub fn register(destroy: Destroy) {
     DESTROY.with(|d| *d.borrow_mut() = Some(destroy));
 }
@@ -26,8 +38,21 @@ pub fn register(destroy: Destroy) {
 /// `WEBGL_lose_context` instead.
 #[wasm_bindgen]
 pub fn debug_destroy_device() -> Result<(), JsValue> {
+    take_devices(Loss::Destroy)
+}
+
+/// Test-only: takes the WebGL contexts of the page's canvases away (`WEBGL_lose_context`, as
+/// the browser would), the main viewer's and the gallery pictures', and gives them back after
+/// `restore_after_ms` if given. The canvases draw off the page's layout, so a test cannot ask
+/// their contexts itself.
+#[wasm_bindgen]
+pub fn debug_lose_context(restore_after_ms: Option<i32>) -> Result<(), JsValue> {
+    take_devices(Loss::Context { restore_after_ms })
+}
+
+fn take_devices(loss: Loss) -> Result<(), JsValue> {
     DESTROY.with(|d| match d.borrow().as_ref() {
-        Some(destroy) => destroy().map_err(JsValue::from),
+        Some(destroy) => destroy(loss).map_err(JsValue::from),
         None => Err("the page has not started".into()),
     })
 }

@@ -78,7 +78,13 @@ impl Downloads {
                     show_size(file.what, &format!("{} MB", megabytes(bytes.len() as f64)));
                     offer(&file.name, mime, &bytes)
                 }
-                Body::Url(url) => offer_url(&file.name, &url),
+                Body::Url(url) => {
+                    let offered = offer_url(&file.name, &url);
+                    // The picture's object URL is no longer needed once the click has started
+                    // the download.
+                    let _ = Url::revoke_object_url(&url);
+                    offered
+                }
             },
             FileStage::Refused(e) => Err(e),
         };

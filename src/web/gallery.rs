@@ -2,11 +2,12 @@
 //! name, the figure it reproduces, a line of description and a picture of the shell. The cards
 //! are plain links to the preset's fragment, so the browser's history does the navigation; the
 //! shells are grown whole by the pool of workers and drawn by a second viewer on a small
-//! off-screen canvas as they come.
+//! off-screen canvas as they come, each card's picture a PNG read back from it.
 
 use super::clock::now;
+use super::debug::Loss;
 use super::dom::{append, attr, create, typed};
-use super::viewer::{Device, Viewer};
+use super::viewer::{Device, Viewer, object_url};
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
@@ -156,7 +157,7 @@ impl Pictures {
             self.ask_again(preset, workers);
             return;
         }
-        let Ok(url) = picture else {
+        let Ok(blob) = picture else {
             return;
         };
         self.lately.push_back((preset, now()));
@@ -167,7 +168,12 @@ impl Pictures {
             .flatten()
             .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
         if let Some(img) = image {
-            img.set_src(&url);
+            wasm_bindgen_futures::spawn_local(async move {
+                // A picture the browser could not read leaves the card as it was.
+                if let Ok(url) = object_url(blob).await {
+                    img.set_src(&url);
+                }
+            });
         }
     }
 
@@ -176,9 +182,9 @@ impl Pictures {
         self.viewer.set_background(srgb);
     }
 
-    /// Test-only (see `debug.rs`): destroys the pictures' graphics device.
-    pub fn destroy_device(&self) {
-        self.viewer.destroy_device();
+    /// Test-only (see `debug.rs`): takes the pictures' graphics device away.
+    pub fn take_device(&self, loss: Loss) -> Result<(), String> {
+        self.viewer.take_device(loss)
     }
 
     /// Whether every picture is drawn, and the last of them long enough ago that a lost

@@ -16,6 +16,7 @@ mod record;
 mod recovery;
 mod share;
 mod shown_size;
+mod view_canvas;
 mod viewer;
 mod webcodecs;
 mod worker_host;
@@ -114,11 +115,10 @@ pub async fn start() -> Result<(), JsValue> {
         workers,
     )));
     let weak = Rc::downgrade(&app);
-    debug::register(Box::new(move || {
+    debug::register(Box::new(move |loss| {
         let app = weak.upgrade().ok_or("the page has ended")?;
         let app = app.try_borrow().map_err(|_| "the page is busy")?;
-        app.destroy_devices();
-        Ok(())
+        app.take_devices(loss)
     }));
     let weak = Rc::downgrade(&app);
     app.borrow_mut()
@@ -236,7 +236,7 @@ fn listen_canvas(app: &Shared, canvas: &EventTarget) -> Result<(), JsValue> {
     on(canvas, "pointerdown", app, |a, e: PointerEvent| {
         let v = a.viewer();
         // Capture keeps the drag alive outside the canvas; failing that, it ends at the edge.
-        let _ = v.canvas().set_pointer_capture(e.pointer_id());
+        let _ = v.canvas().element.set_pointer_capture(e.pointer_id());
         v.pointers
             .press(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
     })?;

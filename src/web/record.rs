@@ -11,6 +11,7 @@
 use super::clock::now;
 use super::download;
 use super::page::{element, set_text, signal};
+use super::view_canvas::ViewCanvas;
 use super::viewer::Viewer;
 use super::webcodecs::{self, CanvasCaptureTrack, EncodedVideoChunk, VideoEncoder, VideoFrame};
 use crate::export::webm::{VideoCodec, WebmWriter};
@@ -366,8 +367,9 @@ impl Recording {
         Step::Working
     }
 
-    /// Hands the canvas, just drawn, to the encoder as frame `next`.
-    fn capture(&self, canvas: &HtmlCanvasElement) -> Result<(), String> {
+    /// Hands the canvas, just drawn, to the encoder as frame `next` (`MediaRecorder` takes
+    /// the element's stream).
+    fn capture(&self, canvas: &ViewCanvas) -> Result<(), String> {
         match &self.sink {
             Sink::Codec { encoder, .. } => {
                 let (at, next_at) = (
@@ -378,7 +380,7 @@ impl Recording {
                     ("timestamp", (at as f64).into()),
                     ("duration", ((next_at - at) as f64).into()),
                 ]);
-                let frame = VideoFrame::new(canvas, &init)
+                let frame = VideoFrame::new(&canvas.offscreen, &init)
                     .map_err(|e| format!("the canvas could not be read ({})", describe(&e)))?;
                 let options =
                     webcodecs::object(&[("keyFrame", self.plan.is_keyframe(self.next).into())]);

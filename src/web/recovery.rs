@@ -6,11 +6,10 @@
 //! its place in the page. The shell itself lives outside the renderer and is uploaded again by
 //! the viewer.
 
+use super::view_canvas::ViewCanvas;
 use crate::render::Renderer;
 use std::cell::RefCell;
 use std::rc::Rc;
-use wasm_bindgen::JsCast;
-use web_sys::HtmlCanvasElement;
 
 /// Milliseconds a lost WebGL context is given to come back before a fresh canvas is used.
 pub const RESTORE_WAIT_MS: f64 = 1500.0;
@@ -18,7 +17,7 @@ pub const RESTORE_WAIT_MS: f64 = 1500.0;
 /// A renderer opened again, and the canvas it draws on (the old one, or its fresh copy).
 pub struct Reopened {
     pub renderer: Renderer,
-    pub canvas: HtmlCanvasElement,
+    pub canvas: ViewCanvas,
 }
 
 /// A renderer being opened, in the background (opening a device takes the browser's time).
@@ -28,7 +27,7 @@ pub struct Reopening {
 
 impl Reopening {
     /// Starts opening a renderer for `canvas`; with `fresh`, on a copy of it at once.
-    pub fn start(canvas: HtmlCanvasElement, fresh: bool) -> Self {
+    pub fn start(canvas: ViewCanvas, fresh: bool) -> Self {
         let slot = Rc::new(RefCell::new(None));
         let filled = Rc::clone(&slot);
         wasm_bindgen_futures::spawn_local(async move {
@@ -44,33 +43,20 @@ impl Reopening {
     }
 }
 
-async fn reopen(canvas: HtmlCanvasElement, fresh: bool) -> Result<Reopened, String> {
+async fn reopen(canvas: ViewCanvas, fresh: bool) -> Result<Reopened, String> {
     let mut first = None;
     if !fresh {
-        match Renderer::new(canvas.clone()).await {
+        match Renderer::new(canvas.offscreen.clone()).await {
             Ok(renderer) => return Ok(Reopened { renderer, canvas }),
             Err(e) => first = Some(e),
         }
     }
-    let canvas = fresh_copy(&canvas)?;
-    match Renderer::new(canvas.clone()).await {
+    let canvas = canvas.fresh_copy()?;
+    match Renderer::new(canvas.offscreen.clone()).await {
         Ok(renderer) => Ok(Reopened { renderer, canvas }),
         Err(e) => Err(match first {
             Some(first) => format!("{first} On a fresh canvas: {e}"),
             None => e,
         }),
     }
-}
-
-/// A copy of `canvas` (its id, classes, size and label, but no context) in its place.
-fn fresh_copy(canvas: &HtmlCanvasElement) -> Result<HtmlCanvasElement, String> {
-    let copy: HtmlCanvasElement = canvas
-        .clone_node()
-        .ok()
-        .and_then(|n| n.dyn_into().ok())
-        .ok_or("the canvas could not be copied")?;
-    canvas
-        .replace_with_with_node_1(&copy)
-        .map_err(|_| "the canvas could not be replaced")?;
-    Ok(copy)
 }

@@ -8,10 +8,11 @@
 
 use super::activity;
 use super::clock::now;
-use super::debug;
+use super::debug::{self, Loss};
 use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use super::shown_size::ShownSize;
+use super::view_canvas::{ViewCanvas, lose_context};
 use super::workers::Workers;
 use crate::export::Download;
 use crate::export::estimate::Counts;
@@ -30,13 +31,14 @@ use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::PreviewState;
-use crate::work::file_writer::{FileStage, FileWriter, Source};
+use crate::work::file_writer::{FileStage, FileWriter, Needs, Source};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::replica::Replica;
 use crate::work::view_status::{ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;
+use wasm_bindgen::JsCast;
 use web_sys::HtmlCanvasElement;
 
 /// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
@@ -123,7 +125,7 @@ struct Previewing {
 
 pub struct Viewer {
     renderer: Renderer,
-    canvas: HtmlCanvasElement,
+    canvas: ViewCanvas,
     /// The size the canvas is shown at, as the page last laid it out.
     shown: ShownSize,
     planar_canvas: Option<HtmlCanvasElement>,
@@ -157,6 +159,8 @@ pub struct Viewer {
     gone: Option<String>,
     /// A fresh canvas that took the old one's place, until the page moves its listeners.
     replaced_canvas: Option<HtmlCanvasElement>,
+    /// The picture asked for as a file, once the browser has read it from the canvas.
+    picture_read: Rc<RefCell<Option<Result<String, String>>>>,
     /// Words for the page to show, until it takes them (the viewer writes no words on the page
     /// itself).
     notice: Option<String>,
@@ -185,11 +189,13 @@ impl Viewer {
         follows: bool,
         workers: Rc<RefCell<Workers>>,
     ) -> Result<Self, String> {
-        let mut renderer = Renderer::new(canvas.clone()).await?;
+        let shown = ShownSize::observe(&canvas)?;
+        let canvas = ViewCanvas::hand_over(canvas)?;
+        let mut renderer = Renderer::new(canvas.offscreen.clone()).await?;
         renderer.set_background(background);
         Ok(Self {
             renderer,
-            shown: ShownSize::observe(&canvas)?,
+            shown,
             canvas,
             planar_canvas,
             pointers: Pointers::default(),
@@ -209,6 +215,7 @@ impl Viewer {
             lost_at: None,
             gone: None,
             replaced_canvas: None,
+            picture_read: Rc::default(),
             notice: None,
             writer: FileWriter::default(),
         })
@@ -557,7 +564,10 @@ impl Viewer {
                     vertices: mesh.vertices.len() + edge.vertex_count(),
                     triangles: mesh.triangle_count() + edge.triangle_count(),
                     pattern: (r.cells() > 0).then(|| (r.cells(), r.rgba().len() / (r.cells() * 4))),
-                    picture: (self.canvas.width() as usize, self.canvas.height() as usize),
+                    picture: {
+                        let (width, height) = self.canvas.size();
+                        (width as usize, height as usize)
+                    },
                 },
             }),
             preview: g.preview.as_ref().map(|p| p.state),
@@ -623,11 +633,11 @@ impl Viewer {
         } = reopened;
         renderer.set_background(self.background);
         if canvas != self.canvas {
-            match ShownSize::observe(&canvas) {
+            match ShownSize::observe(&canvas.element) {
                 Ok(shown) => self.shown = shown,
                 Err(e) => self.gone = Some(e),
             }
-            self.replaced_canvas = Some(canvas.clone());
+            self.replaced_canvas = Some(canvas.element.clone());
         }
         self.canvas = canvas;
         self.renderer = renderer;
@@ -648,9 +658,16 @@ impl Viewer {
         self.replaced_canvas.take()
     }
 
-    /// Test-only (see `debug.rs`): destroys the graphics device as a driver reset would.
-    pub fn destroy_device(&self) {
-        self.renderer.destroy_device();
+    /// Test-only (see `debug.rs`): takes the graphics device away as a driver reset (WebGPU) or
+    /// the browser (WebGL2) would.
+    pub fn take_device(&self, loss: Loss) -> Result<(), String> {
+        match loss {
+            Loss::Destroy => {
+                self.renderer.destroy_device();
+                Ok(())
+            }
+            Loss::Context { restore_after_ms } => lose_context(&self.canvas, restore_after_ms),
+        }
     }
 
     /// Asks the shell's worker to grow up to `rows` rows, stopping early when `budget_ms`
@@ -691,10 +708,8 @@ impl Viewer {
     fn fit_canvas(&mut self) {
         let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
         let (width, height) = self.fixed_size.unwrap_or_else(|| self.shown.device(dpr));
-        if width > 0 && height > 0 && (width, height) != (self.canvas.width(), self.canvas.height())
-        {
-            self.canvas.set_width(width);
-            self.canvas.set_height(height);
+        if width > 0 && height > 0 && (width, height) != self.canvas.size() {
+            self.canvas.set_size((width, height));
             self.renderer.resize(width, height);
             self.dirty = true;
         }
@@ -805,8 +820,9 @@ impl Viewer {
         }
     }
 
-    /// Draws now and returns the canvas as a PNG data URL (read before the browser clears it).
-    pub fn picture(&mut self) -> Result<String, String> {
+    /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
+    /// browser clears the drawing).
+    pub fn picture(&mut self) -> Result<js_sys::Promise, String> {
         picture(
             &mut self.renderer,
             &self.canvas,
@@ -822,21 +838,35 @@ impl Viewer {
             return;
         }
         let source = self.growing.as_ref().map(Growing::source);
-        let (renderer, canvas, layout) = (&mut self.renderer, &self.canvas, self.layout);
-        let picture = || picture(renderer, canvas, self.growing.as_ref(), layout);
-        if self.writer.start(what, size, source, picture) {
-            self.finish();
+        match self.writer.start(what, size, source) {
+            Needs::Nothing => {}
+            Needs::Finish => self.finish(),
+            Needs::Picture => {
+                let slot = Rc::clone(&self.picture_read);
+                let read = self.picture();
+                wasm_bindgen_futures::spawn_local(async move {
+                    let url = match read {
+                        Ok(blob) => object_url(blob).await,
+                        Err(e) => Err(e),
+                    };
+                    *slot.borrow_mut() = Some(url);
+                });
+            }
         }
     }
 
     /// Works on the file asked for by [`Self::write_file`] for a frame's budget: where it
     /// stands, or `None` when none is asked for.
     pub fn work_file(&mut self) -> Option<FileStage> {
+        if let Some(read) = self.picture_read.borrow_mut().take() {
+            self.writer.picture_taken(read);
+        }
         self.writer
             .work(self.growing.as_ref().map(Growing::source), &now)
     }
 
-    pub fn canvas(&self) -> &HtmlCanvasElement {
+    /// The canvas the viewer draws on.
+    pub fn canvas(&self) -> &ViewCanvas {
         &self.canvas
     }
 
@@ -846,6 +876,7 @@ impl Viewer {
         self.fixed_size = size;
         let _ = self
             .canvas
+            .element
             .class_list()
             .toggle_with_force("fixed", size.is_some());
         self.dirty = true;
@@ -893,14 +924,14 @@ impl Viewer {
     }
 }
 
-/// Draws `growing` on `renderer` now and returns `canvas` as a PNG data URL (read before the
-/// browser clears it).
+/// Draws `growing` on `renderer` now and reads `canvas` back: the promise of a PNG `Blob`
+/// (asked for in the same task as the drawing, before the browser clears it).
 fn picture(
     renderer: &mut Renderer,
-    canvas: &HtmlCanvasElement,
+    canvas: &ViewCanvas,
     growing: Option<&Growing>,
     layout: Layout,
-) -> Result<String, String> {
+) -> Result<js_sys::Promise, String> {
     if let Some(loss) = renderer.lost() {
         return Err(format!("the graphics device was lost ({})", loss.reason));
     }
@@ -909,6 +940,18 @@ fn picture(
     };
     renderer.draw(&g.panes(layout, renderer.aspect()))?;
     canvas
-        .to_data_url_with_type("image/png")
+        .offscreen
+        .convert_to_blob()
         .map_err(|_| "the browser refused to read the canvas".to_string())
+}
+
+/// The address of the `Blob` `blob` will give, for a link or an image to show.
+pub async fn object_url(blob: js_sys::Promise) -> Result<String, String> {
+    let blob: web_sys::Blob = wasm_bindgen_futures::JsFuture::from(blob)
+        .await
+        .ok()
+        .and_then(|b| b.dyn_into().ok())
+        .ok_or("the browser could not read the canvas")?;
+    web_sys::Url::create_object_url_with_blob(&blob)
+        .map_err(|_| "the browser refused the picture's address".to_string())
 }

@@ -40,7 +40,7 @@ extern "C" {
 
     #[wasm_bindgen(constructor, catch)]
     pub fn new(
-        canvas: &web_sys::HtmlCanvasElement,
+        canvas: &web_sys::OffscreenCanvas,
         init: &js_sys::Object,
     ) -> Result<VideoFrame, JsValue>;
 

@@ -38,7 +38,8 @@ pub struct File {
     pub body: Body,
 }
 
-/// What a file holds: bytes of a type, or (the picture, as the canvas gives it) a data URL.
+/// What a file holds: bytes of a type, or (the picture, as the browser reads it from the
+/// canvas) the address of its data.
 pub enum Body {
     Bytes { mime: &'static str, bytes: Vec<u8> },
     Url(String),
@@ -63,8 +64,22 @@ enum Asked {
         session: u32,
     },
     Job(Job),
-    /// Made at once (the picture, the pattern's file), or refused, and not yet handed over.
+    /// The picture, named so, being read from the canvas.
+    Picture {
+        name: String,
+    },
+    /// Made, or refused, and not yet handed over.
     Ready(FileStage),
+}
+
+/// What the viewer must do for a file it was just asked for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Needs {
+    Nothing,
+    /// Finish the shell (an implicit shell still growing, for its mesh).
+    Finish,
+    /// Draw the view and read it back, then hand it over ([`FileWriter::picture_taken`]).
+    Picture,
 }
 
 /// The viewer's file under way, if any.
@@ -86,19 +101,12 @@ impl FileWriter {
         self.asked.is_some()
     }
 
-    /// Starts the file `what` of `source` at `size` (GLB and 3MF). Returns whether the shell
-    /// must first be finished (an implicit shell still growing, for a mesh): the caller
-    /// finishes it. `picture` draws the view and reads it back, when the picture is asked for.
-    pub fn start(
-        &mut self,
-        what: Download,
-        size: PrintSize,
-        source: Option<Source>,
-        picture: impl FnOnce() -> Result<String, String>,
-    ) -> bool {
+    /// Starts the file `what` of `source` at `size` (GLB and 3MF), and says what the viewer
+    /// must do for it.
+    pub fn start(&mut self, what: Download, size: PrintSize, source: Option<Source>) -> Needs {
         let Some(source) = source else {
             self.asked = Some(Asked::Ready(FileStage::Refused("no shell is shown".into())));
-            return false;
+            return Needs::Nothing;
         };
         let r = source.replica;
         let implicit = matches!(source.spec.form, Form::Implicit(_));
@@ -108,21 +116,34 @@ impl FileWriter {
                 size,
                 session: r.session(),
             });
-            return true;
+            return Needs::Finish;
         }
         let name = what.file_name(source.preset.id);
-        let made = match what {
-            Download::Picture => picture().map(|url| {
-                Asked::Ready(FileStage::Written(File {
-                    what,
-                    name,
-                    body: Body::Url(url),
-                }))
-            }),
-            _ => begin(what, name, size, &source).map(Asked::Job),
+        if matches!(what, Download::Picture) {
+            self.asked = Some(Asked::Picture { name });
+            return Needs::Picture;
+        }
+        self.asked = Some(match begin(what, name, size, &source) {
+            Ok(job) => Asked::Job(job),
+            Err(e) => Asked::Ready(FileStage::Refused(e)),
+        });
+        Needs::Nothing
+    }
+
+    /// The picture asked for, as read from the canvas: the address of its data, or why it could
+    /// not be read.
+    pub fn picture_taken(&mut self, read: Result<String, String>) {
+        let Some(Asked::Picture { name }) = self.asked.take() else {
+            return;
         };
-        self.asked = Some(made.unwrap_or_else(|e| Asked::Ready(FileStage::Refused(e))));
-        false
+        self.asked = Some(Asked::Ready(match read {
+            Ok(url) => FileStage::Written(File {
+                what: Download::Picture,
+                name,
+                body: Body::Url(url),
+            }),
+            Err(e) => FileStage::Refused(e),
+        }));
     }
 
     /// Works on the file under way for this frame's budget: where it stands, or `None` when no
@@ -157,6 +178,14 @@ impl FileWriter {
                     "the shell was changed before it was grown whole".to_string(),
                 ),
             },
+            Asked::Picture { name } => {
+                let stage = FileStage::Writing {
+                    name: name.clone(),
+                    done: 0.0,
+                };
+                self.asked = Some(Asked::Picture { name });
+                return Some(stage);
+            }
             Asked::Ready(done) => done,
             Asked::Job(mut job) => {
                 match job

@@ -169,3 +169,21 @@ export async function session(backend = 'WebGL2') {
     },
   };
 }
+
+/**
+ * The gallery cards' pictures as shown: for each card, its preset, the image's address and the
+ * image's pixels as PNG bytes (drawn from the decoded image, since the page's policy lets no
+ * script fetch the object URLs it shows).
+ */
+export function cardPictures(page) {
+  return page.$$eval('a.card', (cards) => Promise.all(cards.map(async (card) => {
+    const img = card.querySelector('img');
+    const src = img.src;
+    if (!src.startsWith('blob:')) return { preset: card.dataset.preset, src, png: null };
+    await img.decode();
+    const c = new OffscreenCanvas(img.naturalWidth, img.naturalHeight);
+    c.getContext('2d').drawImage(img, 0, 0);
+    const blob = await c.convertToBlob({ type: 'image/png' });
+    return { preset: card.dataset.preset, src, png: [...new Uint8Array(await blob.arrayBuffer())] };
+  })));
+}

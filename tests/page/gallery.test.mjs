@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readdirSync, readFileSync } from 'node:fs';
-import { open, session, waitForState } from './browser.mjs';
+import { open, session, waitForState, cardPictures } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -38,9 +38,10 @@ test('the gallery lists every preset in its group, each with a picture of its sh
     const groups = await page.$$eval('.group h2', (hs) => hs.map((h) => h.textContent));
     assert.deepEqual(groups, ['Shell shapes', 'Pigmentation patterns', 'Cellular automaton', "Kawaguchi's GROWTH", 'Implicit surfaces']);
     await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 240_000 });
-    const pictures = await page.$$eval('a.card img', (imgs) => imgs.map((i) => i.src));
-    assert.ok(pictures.every((src) => src.startsWith('data:image/png')), 'every card has its picture');
-    assert.equal(new Set(pictures).size, pictures.length, 'every picture is a different shell');
+    // Each card shows a PNG read back from the pictures' canvas, by an object URL.
+    const pictures = await cardPictures(page);
+    assert.ok(pictures.every((p) => p.png !== null), 'every card has its picture');
+    assert.equal(new Set(pictures.map((p) => p.png.join(','))).size, pictures.length, 'every picture is a different shell');
     await page.screenshot({ path: `${SHOTS}gallery.png`, fullPage: true });
     assert.deepEqual(errors, []);
   } finally {

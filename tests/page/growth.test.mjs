@@ -92,7 +92,17 @@ test('without WebGPU or WebGL2 the page says so in words', async () => {
     args: ['--no-sandbox', '--disable-gpu', '--disable-webgl', '--disable-3d-apis', '--disable-features=WebGPU'],
   });
   try {
-    const { page } = await open(browser, base);
+    // Chromium's flags take WebGL away from canvas elements but not from an OffscreenCanvas,
+    // which the page draws on: there, a browser without the APIs gives no context either.
+    const context = await browser.newContext();
+    await context.addInitScript(() => {
+      const get = OffscreenCanvas.prototype.getContext;
+      OffscreenCanvas.prototype.getContext = function getContext(kind, ...rest) {
+        return ['webgl', 'webgl2', 'webgpu'].includes(kind) ? null : get.call(this, kind, ...rest);
+      };
+    });
+    const page = await context.newPage();
+    await page.goto(base);
     const state = await waitForState(page, ['growing', 'grown', 'error']);
     assert.equal(state.state, 'error');
     const message = await page.textContent('#message');

@@ -4,12 +4,13 @@
 // restarted; the finished shell then has the hashes of a fresh load. After a panic the page says
 // what it was doing and offers a button that reloads the link, which grows the same shell again.
 // The device is destroyed and the panic forced through test-only hooks exported by the wasm
-// module (src/web/debug.rs); the context is lost with WEBGL_lose_context. Screenshots after each
+// module (src/web/debug.rs), the context lost with WEBGL_lose_context by another (the canvases
+// draw off the page's layout, so the test cannot reach their contexts). Screenshots after each
 // recovery are kept in tests/page/screenshots/ for people to look at.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { session, open, waitForState, measureCanvas, measurePng, differing } from './browser.mjs';
+import { session, open, waitForState, measureCanvas, measurePng, differing, cardPictures } from './browser.mjs';
 
 const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
@@ -19,11 +20,11 @@ const LINK = '#v=1&preset=stripes&growth.speed=8';
 const PAUSE_AT = 150;
 
 /** Calls one of the wasm module's test-only hooks (src/web/debug.rs) in the page. */
-function hook(page, name) {
-  return page.evaluate(async (name) => {
+function hook(page, name, ...args) {
+  return page.evaluate(async ([name, args]) => {
     const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
-    module[name]();
-  }, name);
+    module[name](...args);
+  }, [name, args]);
 }
 
 /** The page's hashes of the finished shell. */
@@ -130,19 +131,15 @@ const LOSSES = [
   {
     name: 'a lost WebGL context that the browser gives back is drawn on again',
     backend: 'WebGL2',
-    lose: (page) => page.evaluate(() => {
-      const lose = document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context');
-      lose.loseContext();
-      setTimeout(() => lose.restoreContext(), 300);
-    }),
+    // The canvases draw off the page's layout (transferControlToOffscreen): the hook loses
+    // their contexts with WEBGL_lose_context, here given back 300 ms later.
+    lose: (page) => hook(page, 'debug_lose_context', 300),
     back: { backend: 'WebGL2', sameCanvas: true, shot: 'webgl-restored' },
   },
   {
     name: 'a lost WebGL context that never comes back is replaced by a fresh canvas',
     backend: 'WebGL2',
-    lose: (page) => page.evaluate(() => {
-      document.getElementById('shell').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
-    }),
+    lose: (page) => hook(page, 'debug_lose_context'),
     back: { backend: 'WebGL2', sameCanvas: false, shot: 'webgl-not-restored' },
   },
 ];
@@ -199,10 +196,9 @@ for (const backend of ['WebGL2', 'WebGPU']) {
 
 /** Every card's picture, measured as the canvas is (`measurePng`: blank shows no share). */
 async function pictures(page) {
-  const cards = await page.$$eval('a.card', (as) => as.map((a) => [a.dataset.preset, a.querySelector('img').src]));
-  return Promise.all(cards.map(async ([preset, src]) => {
-    const png = src.startsWith('data:image/png;base64,') ? Buffer.from(src.split(',')[1], 'base64') : null;
-    return { preset, src, cover: png ? (await measurePng(page, png)).share : 0 };
+  return Promise.all((await cardPictures(page)).map(async ({ preset, src, png }) => {
+    const bytes = png ? Buffer.from(png) : null;
+    return { preset, src, png: bytes !== null, digest: bytes?.toString('base64'), cover: bytes ? (await measurePng(page, bytes)).share : 0 };
   }));
 }
 
@@ -213,26 +209,22 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       const { page } = await open(run.browser, run.base);
       await waitForState(page, ['gallery']);
       await page.waitForFunction(
-        () => [...document.querySelectorAll('a.card img')].filter((i) => i.src.startsWith('data:')).length >= 4,
+        () => [...document.querySelectorAll('a.card img')].filter((i) => i.src.startsWith('blob:')).length >= 4,
         null, { timeout: 120_000 },
       );
       if (backend === 'WebGPU') {
         await hook(page, 'debug_destroy_device');
       } else {
         // Both canvases lose their contexts, which never come back: fresh canvases take over.
-        await page.evaluate(() => {
-          for (const id of ['shell', 'picture-canvas']) {
-            document.getElementById(id).getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
-          }
-        });
+        await hook(page, 'debug_lose_context');
       }
       await page.waitForFunction(() => document.body.dataset.recoveries === '1', null, { timeout: 60_000 });
       await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 300_000 });
       assert.equal(await page.evaluate(() => document.body.dataset.state), 'gallery');
       assert.equal(await page.isVisible('#message'), false, 'the gallery shows no message once drawn again');
       const drawn = await pictures(page);
-      assert.ok(drawn.every((p) => p.src.startsWith('data:image/png')), 'every card has its picture');
-      assert.equal(new Set(drawn.map((p) => p.src)).size, drawn.length, 'every picture is a different shell');
+      assert.ok(drawn.every((p) => p.png), 'every card has its picture');
+      assert.equal(new Set(drawn.map((p) => p.digest)).size, drawn.length, 'every picture is a different shell');
       const blank = drawn.filter((p) => p.cover < 0.02).map((p) => `${p.preset} ${p.cover}`);
       assert.deepEqual(blank, [], 'no picture is blank');
       await page.screenshot({ path: `${SHOTS}survive-gallery-${backend}.png`, fullPage: true });
