@@ -7,7 +7,8 @@
 use super::clock::now;
 use super::debug::Loss;
 use super::dom::{append, attr, create, typed};
-use super::viewer::{Device, Viewer, object_url};
+use super::view_canvas::object_url;
+use super::viewer::{Device, Viewer};
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;

@@ -91,3 +91,15 @@ pub fn lose_context(canvas: &ViewCanvas, restore_after_ms: Option<i32>) -> Resul
     }
     Ok(())
 }
+
+/// The address of the `Blob` that `blob` (a promise, as `convertToBlob` gives) resolves to, for
+/// a link or an image to show.
+pub async fn object_url(blob: js_sys::Promise) -> Result<String, String> {
+    let blob: web_sys::Blob = wasm_bindgen_futures::JsFuture::from(blob)
+        .await
+        .ok()
+        .and_then(|b| b.dyn_into().ok())
+        .ok_or("the browser could not read the canvas")?;
+    web_sys::Url::create_object_url_with_blob(&blob)
+        .map_err(|_| "the browser refused the picture's address".to_string())
+}

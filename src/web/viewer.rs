@@ -12,7 +12,7 @@ use super::debug::{self, Loss};
 use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use super::shown_size::ShownSize;
-use super::view_canvas::{ViewCanvas, lose_context};
+use super::view_canvas::{ViewCanvas, lose_context, object_url};
 use super::workers::Workers;
 use crate::export::Download;
 use crate::export::estimate::Counts;
@@ -38,7 +38,6 @@ use crate::work::view_status::{ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;
-use wasm_bindgen::JsCast;
 use web_sys::HtmlCanvasElement;
 
 /// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
@@ -823,12 +822,18 @@ impl Viewer {
     /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
     /// browser clears the drawing).
     pub fn picture(&mut self) -> Result<js_sys::Promise, String> {
-        picture(
-            &mut self.renderer,
-            &self.canvas,
-            self.growing.as_ref(),
-            self.layout,
-        )
+        if let Some(loss) = self.renderer.lost() {
+            return Err(format!("the graphics device was lost ({})", loss.reason));
+        }
+        let Some(g) = &self.growing else {
+            return Err("nothing is drawn yet".into());
+        };
+        self.renderer
+            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
+        self.canvas
+            .offscreen
+            .convert_to_blob()
+            .map_err(|_| "the browser refused to read the canvas".to_string())
     }
 
     /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the
@@ -922,36 +927,4 @@ impl Viewer {
         self.dirty = false;
         Ok(())
     }
-}
-
-/// Draws `growing` on `renderer` now and reads `canvas` back: the promise of a PNG `Blob`
-/// (asked for in the same task as the drawing, before the browser clears it).
-fn picture(
-    renderer: &mut Renderer,
-    canvas: &ViewCanvas,
-    growing: Option<&Growing>,
-    layout: Layout,
-) -> Result<js_sys::Promise, String> {
-    if let Some(loss) = renderer.lost() {
-        return Err(format!("the graphics device was lost ({})", loss.reason));
-    }
-    let Some(g) = growing else {
-        return Err("nothing is drawn yet".into());
-    };
-    renderer.draw(&g.panes(layout, renderer.aspect()))?;
-    canvas
-        .offscreen
-        .convert_to_blob()
-        .map_err(|_| "the browser refused to read the canvas".to_string())
-}
-
-/// The address of the `Blob` `blob` will give, for a link or an image to show.
-pub async fn object_url(blob: js_sys::Promise) -> Result<String, String> {
-    let blob: web_sys::Blob = wasm_bindgen_futures::JsFuture::from(blob)
-        .await
-        .ok()
-        .and_then(|b| b.dyn_into().ok())
-        .ok_or("the browser could not read the canvas")?;
-    web_sys::Url::create_object_url_with_blob(&blob)
-        .map_err(|_| "the browser refused the picture's address".to_string())
 }
