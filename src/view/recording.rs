@@ -61,6 +61,18 @@ pub struct RecordingOptions {
     pub turntable_s: u32,
 }
 
+/// One video frame a recording asks of the viewer: the shell grown to `row`, the camera eased
+/// by `dt` seconds of video (not of the clock) and turned by `turn` radians about the vertical,
+/// drawn, and read as the frame shown at `timestamp_us` for `duration_us`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameAsk {
+    pub row: usize,
+    pub dt: f32,
+    pub turn: f32,
+    pub timestamp_us: u64,
+    pub duration_us: u64,
+}
+
 /// The frames of one recording.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RecordingPlan {
@@ -127,6 +139,18 @@ impl RecordingPlan {
     /// The video's length in microseconds.
     pub fn duration_us(&self) -> u64 {
         self.timestamp_us(self.frames())
+    }
+
+    /// What frame `frame` asks of the viewer, the camera having turned `turned` radians so far.
+    pub fn ask(&self, frame: usize, turned: f32) -> FrameAsk {
+        let at = self.timestamp_us(frame);
+        FrameAsk {
+            row: self.rows_at(frame),
+            dt: self.frame_s(),
+            turn: self.turn_at(frame) - turned,
+            timestamp_us: at,
+            duration_us: self.timestamp_us(frame + 1) - at,
+        }
     }
 
     /// Whether frame `frame` is encoded as a key frame.
@@ -201,6 +225,27 @@ mod tests {
             577,
             "the turntable shows the whole shell"
         );
+    }
+
+    #[test]
+    fn the_frames_asked_add_up_to_the_plan() {
+        let plan = RecordingPlan::new(577, 200.0, options(30, 3));
+        let mut turned = 0.0;
+        let mut shown = 0;
+        for frame in 0..plan.frames() {
+            let ask = plan.ask(frame, turned);
+            assert_eq!(ask.row, plan.rows_at(frame));
+            assert_eq!(
+                ask.timestamp_us, shown,
+                "each frame starts where the last ended"
+            );
+            assert!(ask.duration_us > 0);
+            assert_eq!(ask.dt, plan.frame_s());
+            turned += ask.turn;
+            shown += ask.duration_us;
+        }
+        assert!((turned - TAU).abs() < 1e-5, "one whole turn");
+        assert_eq!(shown, plan.duration_us());
     }
 
     #[test]

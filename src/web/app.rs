@@ -490,15 +490,15 @@ impl App {
         self.load(preset, spec);
         let speed = self.viewer.playback.speed;
         let plan = RecordingPlan::new(rows, speed, record::options());
-        self.viewer.fix_size(Some((plan.width, plan.height)));
-        match Recording::start(plan, preset.id, &support, &self.viewer.canvas().element) {
+        let size = (plan.width, plan.height);
+        match Recording::start(plan, preset.id, &support) {
             Ok(recording) => {
+                self.viewer.record_at(Some(size));
                 signal("record", "recording");
                 record::show_recording(Some(&recording));
                 self.recording = Some(recording);
             }
             Err(e) => {
-                self.viewer.fix_size(None);
                 signal("record", "failed");
                 set_text(
                     "record-status",
@@ -514,7 +514,7 @@ impl App {
             return;
         };
         recording.cancel();
-        self.viewer.fix_size(None);
+        self.viewer.record_at(None);
         record::show_recording(None);
         signal("record", "cancelled");
         set_text(
@@ -523,13 +523,22 @@ impl App {
         );
     }
 
-    /// One animation frame of a recording under way.
+    /// One animation frame of a recording under way: the frame the viewer drew goes to the
+    /// encoder, the next is asked for (and worked on in the viewer's frame).
     fn record_frame(&mut self) {
         let Some(recording) = &mut self.recording else {
             return;
         };
-        let step = recording.step(&mut self.viewer);
+        let mut step = recording.step();
+        if let Some(frame) = self.viewer.take_recorded()
+            && let Err(e) = recording.took(frame)
+        {
+            step = Step::Failed(e);
+        }
         if let Step::Working = step {
+            if let Some(ask) = recording.ask() {
+                self.viewer.ask_frame(ask);
+            }
             record::show_recording(Some(recording));
             return;
         }
@@ -540,7 +549,7 @@ impl App {
             recording.plan().frames(),
             recording.plan().duration_us() as f64 / 1e6,
         );
-        self.viewer.fix_size(None);
+        self.viewer.record_at(None);
         record::show_recording(None);
         signal("recordFrames", &recording.frames_done().to_string());
         let outcome = match step {
@@ -632,6 +641,7 @@ impl App {
         self.take_replies();
         if self.recording.is_some() {
             self.record_frame();
+            self.viewer.frame(GROWTH_BUDGET_MS)?;
             return Ok(());
         }
         if self.in_gallery {

@@ -10,13 +10,12 @@
 
 use super::clock::now;
 use super::download;
-use super::page::{element, set_text, signal};
-use super::view_canvas::ViewCanvas;
-use super::viewer::Viewer;
-use super::webcodecs::{self, CanvasCaptureTrack, EncodedVideoChunk, VideoEncoder, VideoFrame};
+use super::page::{self, element, set_text, signal};
+use super::webcodecs::{
+    self, CanvasCaptureTrack, Context2d, EncodedVideoChunk, VideoEncoder, VideoFrame, describe,
+};
 use crate::export::webm::{VideoCodec, WebmWriter};
-use crate::generator::GROWTH_BUDGET_MS;
-use crate::view::recording::{RecordingOptions, RecordingPlan, VideoSize};
+use crate::view::recording::{FrameAsk, RecordingOptions, RecordingPlan, VideoSize};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
@@ -147,8 +146,10 @@ enum Sink {
         _output: Closure<dyn FnMut(EncodedVideoChunk, JsValue)>,
         _error: Closure<dyn FnMut(JsValue)>,
     },
+    /// `MediaRecorder` records a canvas of the page's own, on which each frame is drawn.
     Stream {
         recorder: web_sys::MediaRecorder,
+        canvas: Context2d,
         track: CanvasCaptureTrack,
         mime: String,
         _data: Closure<dyn FnMut(web_sys::BlobEvent)>,
@@ -178,15 +179,8 @@ pub struct Recording {
     started: f64,
     /// Every frame is captured; waiting for the encoder to finish.
     flushing: bool,
-}
-
-fn describe(e: &JsValue) -> String {
-    e.as_string()
-        .or_else(|| {
-            e.dyn_ref::<js_sys::Error>()
-                .map(|e| String::from(e.message()))
-        })
-        .unwrap_or_else(|| format!("{e:?}"))
+    /// The next frame is asked of the viewer and not yet drawn.
+    asked: bool,
 }
 
 fn codec_sink(
@@ -253,9 +247,21 @@ fn codec_sink(
 fn stream_sink(
     plan: &RecordingPlan,
     mime: &str,
-    canvas: &HtmlCanvasElement,
     collected: &Rc<RefCell<Collected>>,
 ) -> Result<Sink, String> {
+    let canvas: HtmlCanvasElement = page::document()
+        .create_element("canvas")
+        .ok()
+        .and_then(|e| e.dyn_into().ok())
+        .ok_or("the page could not make a canvas to record")?;
+    canvas.set_width(plan.width);
+    canvas.set_height(plan.height);
+    let context: Context2d = canvas
+        .get_context("2d")
+        .ok()
+        .flatten()
+        .ok_or("the canvas to record has no 2D drawing")?
+        .unchecked_into();
     let stream = canvas
         .capture_stream_with_frame_request_rate(0.0)
         .map_err(|e| format!("the canvas cannot be captured ({})", describe(&e)))?;
@@ -286,6 +292,7 @@ fn stream_sink(
         .map_err(|e| format!("MediaRecorder could not start ({})", describe(&e)))?;
     Ok(Sink::Stream {
         recorder,
+        canvas: context,
         track,
         mime: mime.to_string(),
         _data: data,
@@ -294,18 +301,17 @@ fn stream_sink(
 }
 
 impl Recording {
-    /// Starts recording the shell `viewer` has just started growing, with what `support`
+    /// Starts recording the shell the viewer has just started growing, with what `support`
     /// offers, as `plan` says.
     pub fn start(
         plan: RecordingPlan,
         preset: &'static str,
         support: &Support,
-        canvas: &HtmlCanvasElement,
     ) -> Result<Self, String> {
         let collected = Rc::new(RefCell::new(Collected::default()));
         let sink = match support {
             Support::WebCodecs(codec) => codec_sink(&plan, *codec, &collected)?,
-            Support::MediaRecorder(mime) => stream_sink(&plan, mime, canvas, &collected)?,
+            Support::MediaRecorder(mime) => stream_sink(&plan, mime, &collected)?,
             other => return Err(other.note()),
         };
         Ok(Self {
@@ -317,6 +323,7 @@ impl Recording {
             turned: 0.0,
             started: now(),
             flushing: false,
+            asked: false,
         })
     }
 
@@ -330,18 +337,24 @@ impl Recording {
         self.next
     }
 
-    /// Works on the recording for one animation frame: grows towards the next video frame's
-    /// row within the growth budget and, once there, draws and captures it.
-    pub fn step(&mut self, viewer: &mut Viewer) -> Step {
+    /// Where the recording stands, once a frame: failed, working, or every frame encoded.
+    pub fn step(&self) -> Step {
         if let Some(e) = self.collected.borrow_mut().error.take() {
             return Step::Failed(e);
         }
-        if self.flushing {
-            return if self.collected.borrow().finished {
-                Step::Done
-            } else {
-                Step::Working
-            };
+        if self.flushing && self.collected.borrow().finished {
+            Step::Done
+        } else {
+            Step::Working
+        }
+    }
+
+    /// The next video frame to ask of the viewer, when it is time to: none is asked and not
+    /// yet drawn, the encoder has room (or, for `MediaRecorder`'s real-time pace, the clock has
+    /// reached it).
+    pub fn ask(&mut self) -> Option<FrameAsk> {
+        if self.flushing || self.asked {
+            return None;
         }
         let waiting = match &self.sink {
             Sink::Codec { encoder, .. } => encoder.encode_queue_size() > MAX_QUEUE,
@@ -349,46 +362,44 @@ impl Recording {
                 now() < self.started + self.plan.timestamp_us(self.next) as f64 / 1000.0
             }
         };
-        if waiting || !viewer.grow_to(self.plan.rows_at(self.next), GROWTH_BUDGET_MS) {
-            return Step::Working;
+        if waiting {
+            return None;
         }
-        let turn = self.plan.turn_at(self.next);
-        if let Err(e) = viewer.draw_recorded(self.plan.frame_s(), turn - self.turned) {
-            return Step::Failed(e);
-        }
-        self.turned = turn;
-        if let Err(e) = self.capture(viewer.canvas()) {
-            return Step::Failed(e);
-        }
+        self.asked = true;
+        Some(self.plan.ask(self.next, self.turned))
+    }
+
+    /// Takes the frame asked for, as the viewer drew it (or why it could not), and hands it to
+    /// the encoder.
+    pub fn took(&mut self, frame: Result<VideoFrame, String>) -> Result<(), String> {
+        self.asked = false;
+        let frame = frame?;
+        let captured = self.capture(&frame);
+        frame.close();
+        captured?;
+        self.turned = self.plan.turn_at(self.next);
         self.next += 1;
         if self.next == self.plan.frames() {
             self.end();
         }
-        Step::Working
+        Ok(())
     }
 
-    /// Hands the canvas, just drawn, to the encoder as frame `next` (`MediaRecorder` takes
-    /// the element's stream).
-    fn capture(&self, canvas: &ViewCanvas) -> Result<(), String> {
+    /// Hands frame `next`, just drawn, to the encoder (or draws it on the canvas
+    /// `MediaRecorder` records).
+    fn capture(&self, frame: &VideoFrame) -> Result<(), String> {
         match &self.sink {
             Sink::Codec { encoder, .. } => {
-                let (at, next_at) = (
-                    self.plan.timestamp_us(self.next),
-                    self.plan.timestamp_us(self.next + 1),
-                );
-                let init = webcodecs::object(&[
-                    ("timestamp", (at as f64).into()),
-                    ("duration", ((next_at - at) as f64).into()),
-                ]);
-                let frame = VideoFrame::new(&canvas.offscreen, &init)
-                    .map_err(|e| format!("the canvas could not be read ({})", describe(&e)))?;
                 let options =
                     webcodecs::object(&[("keyFrame", self.plan.is_keyframe(self.next).into())]);
-                let encoded = encoder.encode(&frame, &options);
-                frame.close();
-                encoded.map_err(|e| format!("the frame could not be encoded ({})", describe(&e)))
+                encoder
+                    .encode(frame, &options)
+                    .map_err(|e| format!("the frame could not be encoded ({})", describe(&e)))
             }
-            Sink::Stream { track, .. } => {
+            Sink::Stream { canvas, track, .. } => {
+                canvas
+                    .draw_frame(frame, 0.0, 0.0)
+                    .map_err(|e| format!("the frame could not be drawn ({})", describe(&e)))?;
                 track.request_frame();
                 Ok(())
             }

@@ -13,6 +13,7 @@ use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
 use super::shown_size::ShownSize;
 use super::view_canvas::{ViewCanvas, lose_context, object_url};
+use super::webcodecs::{self, VideoFrame};
 use super::workers::Workers;
 use crate::export::Download;
 use crate::export::estimate::Counts;
@@ -31,6 +32,7 @@ use crate::view::gestures::{Pointers, wheel_zoom};
 use crate::view::panes::{Pane, panes};
 use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::PreviewState;
+use crate::view::recording::FrameAsk;
 use crate::work::file_writer::{FileStage, FileWriter, Needs, Source};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::replica::Replica;
@@ -141,8 +143,13 @@ pub struct Viewer {
     layout: Layout,
     /// When the last frame was drawn, milliseconds.
     last_frame: f64,
-    /// The drawing size a recording asks for, instead of the canvas's own.
+    /// The drawing size a recording asks for, instead of the canvas's own: while it is set,
+    /// the viewer grows and draws only the frames the recording asks for.
     fixed_size: Option<(u32, u32)>,
+    /// A recording's video frame asked for and not yet drawn.
+    asked: Option<FrameAsk>,
+    /// A recording's video frame drawn and not yet taken.
+    recorded: Option<Result<VideoFrame, String>>,
     /// Where the shells grow.
     workers: Rc<RefCell<Workers>>,
     /// The last session started (each load starts one; replies of older ones are dropped).
@@ -206,6 +213,8 @@ impl Viewer {
             layout: Layout::Single,
             last_frame: now(),
             fixed_size: None,
+            asked: None,
+            recorded: None,
             workers,
             session: 0,
             owed: 0,
@@ -724,6 +733,10 @@ impl Viewer {
         if self.reopening.is_some() || self.renderer.lost().is_some() {
             return Ok(false);
         }
+        if self.fixed_size.is_some() {
+            self.work_recording(budget_ms);
+            return Ok(false);
+        }
         self.fit_canvas();
         if let Some(g) = &mut self.growing
             && let Some(preview) = &mut g.preview
@@ -875,10 +888,18 @@ impl Viewer {
         &self.canvas
     }
 
-    /// Draws at `size` pixels whatever the canvas's size on the page (a recording's frames;
-    /// the page shows them scaled to fit), or, with `None`, at the canvas's size again.
-    pub fn fix_size(&mut self, size: Option<(u32, u32)>) {
+    /// Records at `size` pixels, whatever the canvas's size on the page (the page shows the
+    /// frames scaled to fit): growth and drawing follow the frames asked for
+    /// ([`Self::ask_frame`]) instead of the playback. With `None`, back to the canvas's size
+    /// and the playback; a frame asked for or drawn and not taken is dropped.
+    pub fn record_at(&mut self, size: Option<(u32, u32)>) {
         self.fixed_size = size;
+        if size.is_none() {
+            self.asked = None;
+            if let Some(Ok(frame)) = self.recorded.take() {
+                frame.close();
+            }
+        }
         let _ = self
             .canvas
             .element
@@ -887,44 +908,58 @@ impl Viewer {
         self.dirty = true;
     }
 
-    /// Grows towards row `row` within `budget_ms`; says whether the shell now stands exactly
-    /// there (its shape caught up with the rows), or has ended.
-    pub fn grow_to(&mut self, row: usize, budget_ms: f64) -> bool {
-        self.end_preview();
-        let Some(g) = &mut self.growing else {
-            return true;
-        };
-        if !g.settled() {
-            return false;
-        }
-        let r = &g.replica;
-        if r.is_done() || (r.rows_done() >= row && r.caught_up()) {
-            return true;
-        }
-        let behind = row.saturating_sub(r.rows_done());
-        self.grow(behind, budget_ms);
-        false
+    /// Asks for a recording's video frame: grown to over the next frames, then drawn and read
+    /// ([`Self::take_recorded`]).
+    pub fn ask_frame(&mut self, ask: FrameAsk) {
+        self.asked = Some(ask);
     }
 
-    /// Draws a recording's frame: the camera eased by `dt` seconds of video (not of the
-    /// clock) and turned by `turn` radians about the vertical.
-    pub fn draw_recorded(&mut self, dt: f32, turn: f32) -> Result<(), String> {
-        if let Some(failure) = self.renderer.failure() {
-            return Err(failure);
+    /// The video frame asked for, once drawn (or why it could not be).
+    pub fn take_recorded(&mut self) -> Option<Result<VideoFrame, String>> {
+        self.recorded.take()
+    }
+
+    /// A recording's part of an animation frame: grows towards the frame asked for within
+    /// `budget_ms` and, once the shell stands exactly there (its shape caught up with the
+    /// rows) or has ended, draws and reads it.
+    fn work_recording(&mut self, budget_ms: f64) {
+        let Some(ask) = self.asked else { return };
+        let Some(g) = &self.growing else {
+            self.asked = None;
+            self.recorded = Some(Err("no shell is loaded".into()));
+            return;
+        };
+        if !g.settled() {
+            return;
         }
-        if let Some(loss) = self.renderer.lost() {
-            return Err(format!("the graphics device was lost ({})", loss.reason));
+        let r = &g.replica;
+        let there = r.is_done() || (r.rows_done() >= ask.row && r.caught_up());
+        if !there {
+            let behind = ask.row.saturating_sub(r.rows_done());
+            self.grow(behind, budget_ms);
+            return;
         }
+        self.asked = None;
+        self.recorded = Some(self.draw_recorded(&ask));
+    }
+
+    /// Draws the frame `ask` asks for and reads it as a video frame.
+    fn draw_recorded(&mut self, ask: &FrameAsk) -> Result<VideoFrame, String> {
         self.fit_canvas();
         let Some(g) = &mut self.growing else {
             return Err("no shell is loaded".into());
         };
-        g.camera.follow(g.replica.grown(), dt);
-        g.camera.yaw += turn;
+        g.camera.follow(g.replica.grown(), ask.dt);
+        g.camera.yaw += ask.turn;
         self.renderer
             .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.last_frame = now();
         self.dirty = false;
-        Ok(())
+        let init = webcodecs::object(&[
+            ("timestamp", (ask.timestamp_us as f64).into()),
+            ("duration", (ask.duration_us as f64).into()),
+        ]);
+        VideoFrame::new(&self.canvas.offscreen, &init)
+            .map_err(|e| format!("the canvas could not be read ({})", webcodecs::describe(&e)))
     }
 }

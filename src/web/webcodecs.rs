@@ -1,8 +1,9 @@
 //! The few parts of WebCodecs the recording uses (web-sys has them only behind an unstable
-//! flag): a `VideoEncoder`, a `VideoFrame` taken from the canvas, the `EncodedVideoChunk`s
-//! that come out; and a canvas stream's `requestFrame`, for `MediaRecorder` where WebCodecs
-//! is missing.
+//! flag): a `VideoEncoder`, a `VideoFrame` taken from the viewer's canvas, the
+//! `EncodedVideoChunk`s that come out; and, for `MediaRecorder` where WebCodecs is missing, a
+//! 2D canvas that draws those frames and its stream's `requestFrame`.
 
+use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen]
@@ -62,6 +63,12 @@ extern "C" {
     #[wasm_bindgen(method, js_name = copyTo)]
     pub fn copy_to(this: &EncodedVideoChunk, destination: &js_sys::Uint8Array);
 
+    /// A canvas's 2D drawing, which draws a video frame (web-sys's `drawImage` takes none).
+    pub type Context2d;
+
+    #[wasm_bindgen(method, catch, js_name = drawImage)]
+    pub fn draw_frame(this: &Context2d, frame: &VideoFrame, x: f64, y: f64) -> Result<(), JsValue>;
+
     /// The track of a canvas's capture stream, which sends a frame when asked.
     pub type CanvasCaptureTrack;
 
@@ -87,4 +94,14 @@ pub fn object(properties: &[(&str, JsValue)]) -> js_sys::Object {
         let _ = js_sys::Reflect::set(&o, &JsValue::from_str(key), value);
     }
     o
+}
+
+/// A JavaScript error (or whatever was thrown) in words.
+pub fn describe(e: &JsValue) -> String {
+    e.as_string()
+        .or_else(|| {
+            e.dyn_ref::<js_sys::Error>()
+                .map(|e| String::from(e.message()))
+        })
+        .unwrap_or_else(|| format!("{e:?}"))
 }
