@@ -41,6 +41,7 @@ use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
+use crate::work::view_command::ViewCommand;
 use crate::work::view_status::ViewStatus;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -73,6 +74,8 @@ pub struct App {
     url_due: Option<f64>,
     /// How many times the main viewer's graphics device was lost and opened again.
     recoveries: u32,
+    /// Whether growth advances each frame (Play or Pause).
+    playing: bool,
     /// What the browser can record video with (found out after the start).
     support: Rc<RefCell<Support>>,
     /// A video being recorded.
@@ -126,6 +129,7 @@ impl App {
             in_gallery: false,
             url_due: None,
             recoveries: 0,
+            playing: false,
             progress_shown: (0, 0, f64::NEG_INFINITY),
             support: Rc::new(RefCell::new(Support::Checking)),
             recording: None,
@@ -183,10 +187,10 @@ impl App {
             .as_ref()
             .is_some_and(|(p, s)| p.id == preset.id && *s == spec);
         if !same {
-            self.load(preset, spec);
-            if presentation.ui.embedded() && share::reduced_motion() {
-                // An embed for a reader who asked for less motion: the grown shell, still.
-                self.viewer.finish();
+            // An embed for a reader who asked for less motion: the grown shell, still.
+            let still = presentation.ui.embedded() && share::reduced_motion();
+            self.load(preset, spec, still);
+            if still {
                 self.set_playing(false);
             }
         }
@@ -213,9 +217,10 @@ impl App {
         page::document().set_title(&title);
     }
 
-    /// Shows `spec`, grown from its apex; an implicit shell that was grown whole when one of
-    /// its values changed is remeshed whole at once instead, its chunks shared by the pool.
-    fn load(&mut self, preset: &'static Preset, spec: ShellSpec) {
+    /// Shows `spec`, grown from its apex (with `finish`, to its end at once); an implicit shell
+    /// that was grown whole when one of its values changed is remeshed whole at once instead,
+    /// its chunks shared by the pool.
+    fn load(&mut self, preset: &'static Preset, spec: ShellSpec, finish: bool) {
         self.stop_recording("the shell was changed");
         signal("state", "loading");
         signal("patternHash", "");
@@ -226,11 +231,12 @@ impl App {
                 .as_ref()
                 .is_some_and(|(p, _)| p.id == preset.id)
             && self.status.shell.as_ref().is_some_and(|s| s.done);
-        self.viewer.load(preset, &spec);
+        self.viewer.command(ViewCommand::Load {
+            preset,
+            spec: Box::new(spec.clone()),
+            finish: finish || remesh,
+        });
         self.status = ViewStatus::default();
-        if remesh {
-            self.viewer.finish();
-        }
         set_text("title", &preset.name);
         set_text("source", &preset.source);
         page::document().set_title(&format!("{} — Seashells", preset.name));
@@ -268,11 +274,11 @@ impl App {
         if change == Change::Moving {
             if previews(key) {
                 say(&problems);
-                self.viewer.preview(&next);
+                self.viewer.command(ViewCommand::Preview(Box::new(next)));
             }
             return;
         }
-        self.viewer.end_preview();
+        self.viewer.command(ViewCommand::EndPreview);
         say(&problems);
         if self.current.as_ref().is_some_and(|(_, s)| *s == next) {
             if let (Some(panel), Some((_, s))) = (&self.panel, &self.current) {
@@ -280,7 +286,7 @@ impl App {
             }
             return;
         }
-        self.load(preset, next);
+        self.load(preset, next, false);
         self.url_due = Some(now() + URL_DELAY_MS);
     }
 
@@ -306,7 +312,7 @@ impl App {
         self.presentation = presentation;
         share::apply_ui(presentation.ui);
         let layout = presentation.layout;
-        self.viewer.set_layout(layout);
+        self.viewer.command(ViewCommand::Layout(layout));
         signal("layout", layout.name());
         if let Some(button) = element("views") {
             dom::attr(
@@ -362,19 +368,20 @@ impl App {
     }
 
     pub fn set_playing(&mut self, playing: bool) {
-        self.viewer.playback.playing = playing;
+        self.playing = playing;
+        self.viewer.command(ViewCommand::Play(playing));
         signal("playing", if playing { "true" } else { "false" });
         set_text("play", if playing { "Pause" } else { "Play" });
     }
 
     pub fn toggle_playing(&mut self) {
-        self.set_playing(!self.viewer.playback.playing);
+        self.set_playing(!self.playing);
     }
 
     pub fn restart(&mut self) {
         self.stop_recording("growth was restarted");
         if let Some((preset, spec)) = self.current.clone() {
-            self.load(preset, spec);
+            self.load(preset, spec, false);
         }
     }
 
@@ -382,13 +389,13 @@ impl App {
     pub fn step(&mut self) {
         self.stop_recording("growth was moved by hand");
         self.set_playing(false);
-        self.viewer.grow(1, GROWTH_BUDGET_MS);
+        self.viewer.command(ViewCommand::Grow(1));
     }
 
     /// Grows the shell to its end at once.
     pub fn finish(&mut self) {
         self.stop_recording("growth was moved by hand");
-        self.viewer.finish();
+        self.viewer.command(ViewCommand::Finish);
     }
 
     /// Sets the growth speed in rows per frame (part of the link; growth goes on).
@@ -405,7 +412,7 @@ impl App {
             _ => speed,
         };
         spec.growth.speed = speed;
-        self.viewer.playback.speed = speed;
+        self.viewer.command(ViewCommand::Speed(speed));
         if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
             input.set_value(&crate::spec::fields::display(speed));
         }
@@ -413,11 +420,13 @@ impl App {
     }
 
     pub fn speed(&self) -> f64 {
-        self.viewer.playback.speed
+        self.current
+            .as_ref()
+            .map_or(1.0, |(_, spec)| spec.growth.speed)
     }
 
     pub fn reset_camera(&mut self) {
-        self.viewer.reset_camera();
+        self.viewer.command(ViewCommand::ResetCamera);
     }
 
     /// Full screen for the viewer, or back.
@@ -487,13 +496,13 @@ impl App {
         };
         self.close_map();
         let rows = spec.growth.rows.max(2) as usize;
-        self.load(preset, spec);
-        let speed = self.viewer.playback.speed;
+        let speed = spec.growth.speed;
+        self.load(preset, spec, false);
         let plan = RecordingPlan::new(rows, speed, record::options());
         let size = (plan.width, plan.height);
         match Recording::start(plan, preset.id, &support) {
             Ok(recording) => {
-                self.viewer.record_at(Some(size));
+                self.viewer.command(ViewCommand::RecordAt(Some(size)));
                 signal("record", "recording");
                 record::show_recording(Some(&recording));
                 self.recording = Some(recording);
@@ -514,7 +523,7 @@ impl App {
             return;
         };
         recording.cancel();
-        self.viewer.record_at(None);
+        self.viewer.command(ViewCommand::RecordAt(None));
         record::show_recording(None);
         signal("record", "cancelled");
         set_text(
@@ -537,7 +546,7 @@ impl App {
         }
         if let Step::Working = step {
             if let Some(ask) = recording.ask() {
-                self.viewer.ask_frame(ask);
+                self.viewer.command(ViewCommand::AskFrame(ask));
             }
             record::show_recording(Some(recording));
             return;
@@ -549,7 +558,7 @@ impl App {
             recording.plan().frames(),
             recording.plan().duration_us() as f64 / 1e6,
         );
-        self.viewer.record_at(None);
+        self.viewer.command(ViewCommand::RecordAt(None));
         record::show_recording(None);
         signal("recordFrames", &recording.frames_done().to_string());
         let outcome = match step {
@@ -580,7 +589,9 @@ impl App {
 
     /// Starts a download of the shell shown (written over the next frames).
     pub fn download(&mut self, what: Download) {
-        self.downloads.start(what, &mut self.viewer);
+        if let Some(command) = self.downloads.start(what) {
+            self.viewer.command(command);
+        }
     }
 
     /// Test-only (see `debug.rs`): takes both graphics devices away, the main viewer's and the
@@ -792,7 +803,8 @@ impl App {
 
     /// Follows a change of the page's light or dark theme.
     pub fn theme_changed(&mut self) {
-        self.viewer.set_background(page::background());
+        self.viewer
+            .command(ViewCommand::Background(page::background()));
         self.pictures.set_background(page::background());
     }
 }

@@ -9,11 +9,11 @@
 
 use super::clock::now;
 use super::page::{self, element, set_text, show_message, signal};
-use super::viewer::Viewer;
 use crate::export::Download;
 use crate::export::estimate::{Counts, Size};
 use crate::export::print_size::PrintSize;
 use crate::work::file_writer::{Body, FileStage};
+use crate::work::view_command::ViewCommand;
 use crate::work::view_status::ShellStatus;
 use wasm_bindgen::JsCast;
 use web_sys::{
@@ -35,11 +35,11 @@ pub struct Downloads {
 }
 
 impl Downloads {
-    /// Asks `viewer` for the file `what` of the shell it shows, at the height the field asks
-    /// for; a message says why when it cannot be made.
-    pub fn start(&mut self, what: Download, viewer: &mut Viewer) {
+    /// What to ask the viewer for the file `what` of the shell it shows, at the height the
+    /// field asks for; a message says why when it cannot be made.
+    pub fn start(&mut self, what: Download) -> Option<ViewCommand> {
         if self.busy {
-            return;
+            return None;
         }
         let size = match what {
             Download::Mesh(format) if format.sized() => height(),
@@ -49,9 +49,12 @@ impl Downloads {
             Ok(size) => {
                 self.busy = true;
                 set_buttons_enabled(false);
-                viewer.write_file(what, size);
+                Some(ViewCommand::WriteFile { what, size })
             }
-            Err(e) => refuse(&e),
+            Err(e) => {
+                refuse(&e);
+                None
+            }
         }
     }
 

@@ -14,6 +14,7 @@ use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::ShellSpec;
 use crate::work::message::{Request, WholeShell};
+use crate::work::view_command::ViewCommand;
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
 
@@ -180,7 +181,7 @@ impl Pictures {
 
     /// Follows a change of the page's theme (pictures already drawn keep theirs).
     pub fn set_background(&mut self, srgb: [u8; 3]) {
-        self.viewer.set_background(srgb);
+        self.viewer.command(ViewCommand::Background(srgb));
     }
 
     /// Test-only (see `debug.rs`): takes the pictures' graphics device away.

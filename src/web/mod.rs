@@ -23,6 +23,7 @@ mod worker_host;
 mod workers;
 
 use crate::export::Download;
+use crate::work::view_command::{PointerChange, ViewCommand};
 use app::App;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -234,19 +235,33 @@ fn typing(e: &KeyboardEvent) -> bool {
 /// Listens to the shell's canvas: orbit, zoom, reset (again on a fresh canvas that replaced it).
 fn listen_canvas(app: &Shared, canvas: &EventTarget) -> Result<(), JsValue> {
     on(canvas, "pointerdown", app, |a, e: PointerEvent| {
-        let v = a.viewer();
         // Capture keeps the drag alive outside the canvas; failing that, it ends at the edge.
-        let _ = v.canvas().element.set_pointer_capture(e.pointer_id());
-        v.pointers
-            .press(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
+        if let Some(canvas) = e
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+        {
+            let _ = canvas.set_pointer_capture(e.pointer_id());
+        }
+        a.viewer()
+            .command(ViewCommand::Pointer(PointerChange::Down {
+                id: e.pointer_id(),
+                x: e.client_x() as f32,
+                y: e.client_y() as f32,
+            }));
     })?;
     on(canvas, "pointermove", app, |a, e: PointerEvent| {
         a.viewer()
-            .pointer_moved(e.pointer_id(), e.client_x() as f32, e.client_y() as f32);
+            .command(ViewCommand::Pointer(PointerChange::Move {
+                id: e.pointer_id(),
+                x: e.client_x() as f32,
+                y: e.client_y() as f32,
+            }));
     })?;
     for kind in ["pointerup", "pointercancel"] {
         on(canvas, kind, app, |a, e: PointerEvent| {
-            a.viewer().pointers.release(e.pointer_id())
+            a.viewer().command(ViewCommand::Pointer(PointerChange::Up {
+                id: e.pointer_id(),
+            }));
         })?;
     }
     on(canvas, "wheel", app, |a, e: WheelEvent| {
@@ -256,7 +271,7 @@ fn listen_canvas(app: &Shared, canvas: &EventTarget) -> Result<(), JsValue> {
             return;
         }
         e.prevent_default();
-        a.viewer().wheel(e.delta_y());
+        a.viewer().command(ViewCommand::Wheel(e.delta_y()));
     })?;
     on(canvas, "dblclick", app, |a, _: Event| a.reset_camera())?;
     Ok(())

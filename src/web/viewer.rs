@@ -18,7 +18,7 @@ use super::workers::Workers;
 use crate::export::Download;
 use crate::export::estimate::Counts;
 use crate::export::print_size::PrintSize;
-use crate::generator::Advance;
+use crate::generator::{Advance, GROWTH_BUDGET_MS};
 use crate::mesh::Bounds;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
@@ -36,6 +36,7 @@ use crate::view::recording::FrameAsk;
 use crate::work::file_writer::{FileStage, FileWriter, Needs, Source};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::replica::Replica;
+use crate::work::view_command::{PointerChange, ViewCommand};
 use crate::work::view_status::{ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
@@ -130,10 +131,10 @@ pub struct Viewer {
     /// The size the canvas is shown at, as the page last laid it out.
     shown: ShownSize,
     planar_canvas: Option<HtmlCanvasElement>,
-    pub pointers: Pointers,
+    pointers: Pointers,
     growing: Option<Growing>,
     /// Whether growth advances each frame, and how fast.
-    pub playback: Playback,
+    playback: Playback,
     dirty: bool,
     /// Whether this frame draws or leaves it to the next (after megabytes of uploads).
     pacing: DrawPacing,
@@ -235,10 +236,47 @@ impl Viewer {
     }
 
     /// Follows a change of the page's theme.
-    pub fn set_background(&mut self, srgb: [u8; 3]) {
+    fn set_background(&mut self, srgb: [u8; 3]) {
         self.background = srgb;
         self.renderer.set_background(srgb);
         self.dirty = true;
+    }
+
+    /// Does what the page asks (see [`ViewCommand`]).
+    pub fn command(&mut self, command: ViewCommand) {
+        match command {
+            ViewCommand::Load {
+                preset,
+                spec,
+                finish,
+            } => {
+                self.load(preset, &spec);
+                if finish {
+                    self.finish();
+                }
+            }
+            ViewCommand::Preview(spec) => self.preview(&spec),
+            ViewCommand::EndPreview => self.end_preview(),
+            ViewCommand::Grow(rows) => self.grow(rows, GROWTH_BUDGET_MS),
+            ViewCommand::Finish => self.finish(),
+            ViewCommand::Play(playing) => self.playback.playing = playing,
+            ViewCommand::Speed(speed) => self.playback.speed = speed,
+            ViewCommand::Layout(layout) => {
+                self.layout = layout;
+                self.dirty = true;
+            }
+            ViewCommand::ResetCamera => self.reset_camera(),
+            ViewCommand::Pointer(change) => self.pointer(change),
+            ViewCommand::Wheel(delta) => {
+                if let Some(camera) = self.camera_mut() {
+                    camera.zoom_by(wheel_zoom(delta));
+                }
+            }
+            ViewCommand::Background(srgb) => self.set_background(srgb),
+            ViewCommand::RecordAt(size) => self.record_at(size),
+            ViewCommand::AskFrame(ask) => self.asked = Some(ask),
+            ViewCommand::WriteFile { what, size } => self.write_file(what, size),
+        }
     }
 
     /// Drops the shell (after one that could not be built): nothing is drawn or grown.
@@ -249,7 +287,7 @@ impl Viewer {
     /// Starts growing `spec` from its apex on a worker, dropping the shell grown before and
     /// the work still waiting for it; nothing more of it reaches the screen. The worker's
     /// answer comes in a later frame ([`Self::take`]).
-    pub fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) {
+    fn load(&mut self, preset: &'static Preset, spec: &ShellSpec) {
         activity::set(format!("loading {}", preset.id));
         self.session = self.session.wrapping_add(1);
         let link = link::encode(preset, spec);
@@ -476,7 +514,7 @@ impl Viewer {
     /// next frames, while the shell's growth waits (until [`Self::end_preview`] or another
     /// spec is loaded). Values that give no pattern at all are refused with the reason, in a
     /// message, when the worker answers.
-    pub fn preview(&mut self, spec: &ShellSpec) {
+    fn preview(&mut self, spec: &ShellSpec) {
         let Some(g) = &mut self.growing else { return };
         self.session = self.session.wrapping_add(1);
         let link = link::encode(g.preset, spec);
@@ -529,7 +567,7 @@ impl Viewer {
     }
 
     /// Back from a preview to the growing shell's own pattern in the planar view.
-    pub fn end_preview(&mut self) {
+    fn end_preview(&mut self) {
         let Some(g) = &mut self.growing else { return };
         if g.preview.take().is_none() {
             return;
@@ -680,7 +718,7 @@ impl Viewer {
 
     /// Asks the shell's worker to grow up to `rows` rows, stopping early when `budget_ms`
     /// has passed.
-    pub fn grow(&mut self, rows: usize, budget_ms: f64) {
+    fn grow(&mut self, rows: usize, budget_ms: f64) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
         if g.finishing || g.replica.is_done() {
@@ -697,7 +735,7 @@ impl Viewer {
 
     /// Asks the shell's worker to grow the rest of the shell at once (what splits is shared
     /// among the pool when it answers).
-    pub fn finish(&mut self) {
+    fn finish(&mut self) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
         if g.finishing || g.replica.is_done() {
@@ -795,14 +833,8 @@ impl Viewer {
         Ok(true)
     }
 
-    /// Shows one view or Kawaguchi's four.
-    pub fn set_layout(&mut self, layout: Layout) {
-        self.layout = layout;
-        self.dirty = true;
-    }
-
     /// Back to the first view: following the growth again on the main view.
-    pub fn reset_camera(&mut self) {
+    fn reset_camera(&mut self) {
         let follows = self.follows;
         if let Some(camera) = self.camera_mut() {
             camera.reset(follows);
@@ -810,25 +842,24 @@ impl Viewer {
     }
 
     /// The camera of the shell being grown.
-    pub fn camera_mut(&mut self) -> Option<&mut OrbitCamera> {
+    fn camera_mut(&mut self) -> Option<&mut OrbitCamera> {
         self.dirty = true;
         self.growing.as_mut().map(|g| &mut g.camera)
     }
 
-    /// A pointer moved to (x, y) CSS pixels.
-    pub fn pointer_moved(&mut self, id: i32, x: f32, y: f32) {
-        let height = self.shown.css().1.max(1) as f32;
-        if let Some(g) = &mut self.growing
-            && self.pointers.moved(id, x, y, height, &mut g.camera)
-        {
-            self.dirty = true;
-        }
-    }
-
-    /// A wheel turned by `delta` pixels.
-    pub fn wheel(&mut self, delta: f64) {
-        if let Some(camera) = self.camera_mut() {
-            camera.zoom_by(wheel_zoom(delta));
+    /// A pointer pressed, moved (turning or zooming the camera), or let go.
+    fn pointer(&mut self, change: PointerChange) {
+        match change {
+            PointerChange::Down { id, x, y } => self.pointers.press(id, x, y),
+            PointerChange::Move { id, x, y } => {
+                let height = self.shown.css().1.max(1) as f32;
+                if let Some(g) = &mut self.growing
+                    && self.pointers.moved(id, x, y, height, &mut g.camera)
+                {
+                    self.dirty = true;
+                }
+            }
+            PointerChange::Up { id } => self.pointers.release(id),
         }
     }
 
@@ -851,7 +882,7 @@ impl Viewer {
 
     /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the
     /// next frames ([`Self::work_file`]); an implicit shell still growing is finished first.
-    pub fn write_file(&mut self, what: Download, size: PrintSize) {
+    fn write_file(&mut self, what: Download, size: PrintSize) {
         if self.writer.busy() {
             return;
         }
@@ -883,16 +914,11 @@ impl Viewer {
             .work(self.growing.as_ref().map(Growing::source), &now)
     }
 
-    /// The canvas the viewer draws on.
-    pub fn canvas(&self) -> &ViewCanvas {
-        &self.canvas
-    }
-
     /// Records at `size` pixels, whatever the canvas's size on the page (the page shows the
     /// frames scaled to fit): growth and drawing follow the frames asked for
     /// ([`Self::ask_frame`]) instead of the playback. With `None`, back to the canvas's size
     /// and the playback; a frame asked for or drawn and not taken is dropped.
-    pub fn record_at(&mut self, size: Option<(u32, u32)>) {
+    fn record_at(&mut self, size: Option<(u32, u32)>) {
         self.fixed_size = size;
         if size.is_none() {
             self.asked = None;
@@ -906,12 +932,6 @@ impl Viewer {
             .class_list()
             .toggle_with_force("fixed", size.is_some());
         self.dirty = true;
-    }
-
-    /// Asks for a recording's video frame: grown to over the next frames, then drawn and read
-    /// ([`Self::take_recorded`]).
-    pub fn ask_frame(&mut self, ask: FrameAsk) {
-        self.asked = Some(ask);
     }
 
     /// The video frame asked for, once drawn (or why it could not be).

@@ -6,8 +6,9 @@
 //! [`replica::Replica`], which joins pieces in a fixed order so that the number of workers
 //! cannot change a bit, and shares jobs out among its workers with a [`pool::Pool`], which
 //! also knows what to do again when a worker dies or hangs. A file of the shell is written
-//! where that copy is ([`file_writer::FileWriter`]); what the page reads of a viewer once a
-//! frame is plain data ([`view_status::ViewStatus`]).
+//! where that copy is ([`file_writer::FileWriter`]); what the page asks of a viewer and what it
+//! reads of it once a frame are plain data ([`view_command::ViewCommand`],
+//! [`view_status::ViewStatus`]).
 
 pub(crate) mod edge_slots;
 pub mod file_writer;
@@ -16,5 +17,6 @@ pub mod message;
 pub mod pool;
 pub mod replica;
 pub mod slotted_edge;
+pub mod view_command;
 pub mod view_status;
 pub mod wire;

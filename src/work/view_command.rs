@@ -1,0 +1,63 @@
+//! What the page asks of its viewer: every change the page makes to what is grown and how it
+//! is shown, as plain data. The page sends these and reads back a [`ViewStatus`]
+//! (`view_status.rs`), so that the viewer can run where the page's thread is not (a worker
+//! holding the canvas) and be driven exactly as it is on the page's own thread.
+//!
+//! [`ViewStatus`]: super::view_status::ViewStatus
+
+use crate::export::Download;
+use crate::export::print_size::PrintSize;
+use crate::presets::Preset;
+use crate::share::presentation::Layout;
+use crate::spec::ShellSpec;
+use crate::view::recording::FrameAsk;
+
+/// One thing the page asks of its viewer.
+#[derive(Clone, Debug)]
+pub enum ViewCommand {
+    /// Grow `spec` of `preset` from its apex, dropping the shell grown before; with `finish`,
+    /// to its end at once (an implicit shell remeshed whole, an embed for a reader who asked
+    /// for less motion).
+    Load {
+        preset: &'static Preset,
+        spec: Box<ShellSpec>,
+        finish: bool,
+    },
+    /// Show the whole pattern of `spec` in the planar view while growth waits (a slider of
+    /// the pattern being dragged).
+    Preview(Box<ShellSpec>),
+    /// Back from a preview to the growing shell's own pattern.
+    EndPreview,
+    /// Grow this many rows (a step, paused).
+    Grow(usize),
+    /// Grow the rest of the shell at once.
+    Finish,
+    /// Whether growth advances each frame.
+    Play(bool),
+    /// Rows grown per frame while playing.
+    Speed(f64),
+    /// One view, or Kawaguchi's four.
+    Layout(Layout),
+    /// Back to the first view (following the growth again on the main view).
+    ResetCamera,
+    /// A pointer pressed, moved, or let go over the canvas.
+    Pointer(PointerChange),
+    /// A wheel turned by this many pixels.
+    Wheel(f64),
+    /// The clear colour, as sRGB bytes (the page's theme changed).
+    Background([u8; 3]),
+    /// Record at this size (`None`: back to the canvas's own size and the playback).
+    RecordAt(Option<(u32, u32)>),
+    /// A recording's next video frame.
+    AskFrame(FrameAsk),
+    /// Write this file of the shell shown (GLB and 3MF at `size`).
+    WriteFile { what: Download, size: PrintSize },
+}
+
+/// A pointer over the canvas, at CSS pixels from the page's top left.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PointerChange {
+    Down { id: i32, x: f32, y: f32 },
+    Move { id: i32, x: f32, y: f32 },
+    Up { id: i32 },
+}
