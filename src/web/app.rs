@@ -25,8 +25,11 @@ use super::gallery::Pictures;
 use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
+use super::planar::PlanarView;
 use super::record::{self, Recording, Step, Support};
 use super::share;
+use super::shown_size::ShownSize;
+use super::view_canvas::ViewCanvas;
 use super::viewer::{Device, Viewer};
 use super::workers::Workers;
 use crate::export::Download;
@@ -46,7 +49,7 @@ use crate::work::view_status::ViewStatus;
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
-use web_sys::{HtmlInputElement, HtmlProgressElement};
+use web_sys::{HtmlCanvasElement, HtmlInputElement, HtmlProgressElement};
 
 /// Quiet time after an edit before the address bar is updated.
 const URL_DELAY_MS: f64 = 300.0;
@@ -57,6 +60,14 @@ const PROGRESS_EVERY_MS: f64 = 100.0;
 
 pub struct App {
     viewer: Viewer,
+    /// The size the main viewer's canvas is shown at, and what the viewer was last told of it
+    /// (CSS pixels and the device pixel ratio).
+    shown: Option<ShownSize>,
+    told_shown: (u32, u32, f64),
+    /// A fresh canvas that took the main viewer's place, until the page moves its listeners.
+    replaced_canvas: Option<HtmlCanvasElement>,
+    /// The planar view beside the main viewer, drawn as the viewer says.
+    planar: Option<PlanarView>,
     /// What the viewer said of itself after the last frame (and nothing of a shell just
     /// loaded until it has).
     status: ViewStatus,
@@ -105,6 +116,14 @@ fn previews(key: &str) -> bool {
         .any(|f| f.key == key && f.section == Section::Pattern)
 }
 
+/// Marks the main canvas as drawn at a recording's size, which the page shows scaled to fit
+/// (or, with `false`, at its own size again).
+fn fix_canvas(fixed: bool) {
+    if let Some(canvas) = element("shell") {
+        let _ = canvas.class_list().toggle_with_force("fixed", fixed);
+    }
+}
+
 fn location_hash() -> String {
     web_sys::window()
         .and_then(|w| w.location().hash().ok())
@@ -115,8 +134,16 @@ impl App {
     pub fn new(viewer: Viewer, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
         signal("backend", viewer.backend());
         set_text("backend", &format!("Drawn with {}", viewer.backend()));
+        let shown = element("shell").and_then(|e| ShownSize::observe(&e).ok());
+        let planar = element("planar")
+            .and_then(|e| e.dyn_into().ok())
+            .map(PlanarView::new);
         Self {
             viewer,
+            shown,
+            told_shown: (0, 0, 0.0),
+            replaced_canvas: None,
+            planar,
             status: ViewStatus::default(),
             workers,
             pictures,
@@ -503,6 +530,7 @@ impl App {
         match Recording::start(plan, preset.id, &support) {
             Ok(recording) => {
                 self.viewer.command(ViewCommand::RecordAt(Some(size)));
+                fix_canvas(true);
                 signal("record", "recording");
                 record::show_recording(Some(&recording));
                 self.recording = Some(recording);
@@ -524,6 +552,7 @@ impl App {
         };
         recording.cancel();
         self.viewer.command(ViewCommand::RecordAt(None));
+        fix_canvas(false);
         record::show_recording(None);
         signal("record", "cancelled");
         set_text(
@@ -559,6 +588,7 @@ impl App {
             recording.plan().duration_us() as f64 / 1e6,
         );
         self.viewer.command(ViewCommand::RecordAt(None));
+        fix_canvas(false);
         record::show_recording(None);
         signal("recordFrames", &recording.frames_done().to_string());
         let outcome = match step {
@@ -604,7 +634,18 @@ impl App {
     /// Keeps the main viewer's graphics device, saying in words when it was lost and when it
     /// is back; returns whether the frame may draw.
     fn survive(&mut self) -> Result<bool, String> {
-        match self.viewer.survive() {
+        let device = match self.viewer.survive() {
+            Device::NeedsCanvas(reason) => {
+                // The canvas cannot be drawn on again: a fresh copy takes its place.
+                let fresh = ViewCanvas::replace("shell")?;
+                self.viewer.give_canvas(fresh.offscreen);
+                self.canvas_replaced(&fresh.element);
+                self.replaced_canvas = Some(fresh.element);
+                Device::Reopening(reason)
+            }
+            device => device,
+        };
+        match device {
             Device::Ready => Ok(true),
             Device::Reopening(reason) => {
                 show_message(&format!(
@@ -632,15 +673,51 @@ impl App {
                 Ok(true)
             }
             Device::Gone(message) => Err(message),
+            Device::NeedsCanvas(_) => unreachable!("a fresh canvas was given above"),
         }
     }
 
     /// One animation frame.
     pub fn frame(&mut self) -> Result<(), String> {
+        self.tell_shown();
         let outcome = self.work_and_draw();
+        for update in self.viewer.take_planar() {
+            if let Some(planar) = &mut self.planar {
+                planar.apply(update);
+            }
+        }
         // What this frame asked goes out now, to be worked on before the next frame.
         self.workers.borrow_mut().send();
         outcome
+    }
+
+    /// Tells the viewer the size its canvas is shown at, when the page's layout or the pixel
+    /// ratio changed it.
+    fn tell_shown(&mut self) {
+        let Some(shown) = &self.shown else { return };
+        let (width, height) = shown.css();
+        let pixel_ratio = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
+        if (width, height, pixel_ratio) != self.told_shown {
+            self.told_shown = (width, height, pixel_ratio);
+            self.viewer.command(ViewCommand::Shown {
+                width,
+                height,
+                pixel_ratio,
+            });
+        }
+    }
+
+    /// A fresh canvas that took the main viewer's old one's place since the last call: the
+    /// page listens to it instead.
+    pub fn take_replaced_canvas(&mut self) -> Option<HtmlCanvasElement> {
+        self.replaced_canvas.take()
+    }
+
+    /// A fresh canvas took the main viewer's place (a lost device opened again): its size is
+    /// observed instead.
+    fn canvas_replaced(&mut self, canvas: &HtmlCanvasElement) {
+        self.shown = ShownSize::observe(canvas).ok();
+        self.told_shown = (0, 0, 0.0);
     }
 
     /// What a frame does: takes in the workers' replies, grows, draws.

@@ -7,7 +7,7 @@
 use super::clock::now;
 use super::debug::Loss;
 use super::dom::{append, attr, create, typed};
-use super::view_canvas::object_url;
+use super::view_canvas::{ViewCanvas, object_url};
 use super::viewer::{Device, Viewer};
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
@@ -137,7 +137,16 @@ impl Pictures {
     /// Keeps the pictures' graphics device and draws the next shell waiting for it. After a
     /// loss, the pictures drawn just before it are grown and drawn again on the next device.
     pub fn work(&mut self, workers: &mut Workers) {
-        if self.viewer.survive() != Device::Ready {
+        let mut device = self.viewer.survive();
+        if matches!(device, Device::NeedsCanvas(_)) {
+            // The canvas cannot be drawn on again: a fresh copy takes its place (or, failing
+            // that, the pictures are drawn no more).
+            match ViewCanvas::replace("picture-canvas") {
+                Ok(fresh) => self.viewer.give_canvas(fresh.offscreen),
+                Err(e) => device = Device::Gone(e),
+            }
+        }
+        if device != Device::Ready {
             while let Some((preset, _)) = self.lately.pop_front() {
                 self.ask_again(preset, workers);
             }

@@ -14,6 +14,7 @@ mod panel;
 mod planar;
 mod record;
 mod recovery;
+mod scope;
 mod share;
 mod shown_size;
 mod view_canvas;
@@ -27,6 +28,7 @@ use crate::work::view_command::{PointerChange, ViewCommand};
 use app::App;
 use std::cell::RefCell;
 use std::rc::Rc;
+use view_canvas::ViewCanvas;
 use viewer::Viewer;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
@@ -90,16 +92,16 @@ pub async fn start() -> Result<(), JsValue> {
     let workers = Rc::new(RefCell::new(workers));
     let viewers = async {
         let shared = || Rc::clone(&workers);
-        let main = Viewer::new(
-            canvas("shell")?,
-            Some(canvas("planar")?),
+        let offscreen = |id| Ok::<_, String>(ViewCanvas::hand_over(canvas(id)?)?.offscreen);
+        let main = Viewer::new(offscreen("shell")?, true, background, true, shared()).await?;
+        let pictures = Viewer::new(
+            offscreen("picture-canvas")?,
+            false,
             background,
-            true,
+            false,
             shared(),
         )
         .await?;
-        let pictures =
-            Viewer::new(canvas("picture-canvas")?, None, background, false, shared()).await?;
         Ok::<_, String>((main, pictures))
     };
     let (main, pictures) = match viewers.await {
@@ -163,7 +165,7 @@ fn run(app: Shared) {
     *callback.borrow_mut() = Some(Closure::new(move || {
         let outcome = app.borrow_mut().frame();
         // A fresh canvas took the old one's place (a lost device opened again): listen to it.
-        let replaced = app.borrow_mut().viewer().take_replaced_canvas();
+        let replaced = app.borrow_mut().take_replaced_canvas();
         if let Some(canvas) = replaced
             && let Err(e) = listen_canvas(&app, &canvas.into())
         {

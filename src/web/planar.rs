@@ -1,12 +1,47 @@
 //! The planar representation beside the shell (the left halves of Fowler et al.'s figures
 //! 11–14): a 2D canvas one pixel per cell and row, written a few rows at a time, scrolled so
-//! that the newest rows stay in sight.
+//! that the newest rows stay in sight. It draws what the viewer tells it
+//! ([`PlanarUpdate`]), on the page's thread wherever the viewer runs.
 
 use super::shown_size::ShownSize;
+use crate::work::planar_update::PlanarUpdate;
 use wasm_bindgen::{Clamped, JsCast};
 use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, ImageData};
 
-pub struct Planar {
+/// The planar view's canvas, and the pattern it shows (none: hidden).
+pub struct PlanarView {
+    canvas: HtmlCanvasElement,
+    shown: Option<Planar>,
+}
+
+impl PlanarView {
+    pub fn new(canvas: HtmlCanvasElement) -> Self {
+        Self {
+            canvas,
+            shown: None,
+        }
+    }
+
+    /// Shows what the viewer says.
+    pub fn apply(&mut self, update: PlanarUpdate) {
+        match update {
+            PlanarUpdate::Open(pattern) => self.shown = Planar::new(self.canvas.clone(), pattern),
+            PlanarUpdate::Rows { first, rgba } => {
+                if let Some(planar) = &self.shown {
+                    planar.draw_rows(first, &rgba);
+                }
+            }
+            PlanarUpdate::Follow(row) => {
+                if let Some(planar) = &self.shown {
+                    planar.follow(row);
+                }
+            }
+        }
+    }
+}
+
+/// A pattern shown in the planar view.
+struct Planar {
     canvas: HtmlCanvasElement,
     context: CanvasRenderingContext2d,
     cells: u32,
@@ -16,7 +51,7 @@ pub struct Planar {
 
 impl Planar {
     /// Sizes the canvas for a cells × rows pattern, or hides its figure when there is none.
-    pub fn new(canvas: HtmlCanvasElement, pattern: Option<(u32, u32)>) -> Option<Self> {
+    fn new(canvas: HtmlCanvasElement, pattern: Option<(u32, u32)>) -> Option<Self> {
         let figure = canvas.closest("figure").ok().flatten();
         let Some((cells, rows)) = pattern else {
             if let Some(f) = figure {
@@ -46,7 +81,7 @@ impl Planar {
     }
 
     /// Draws rows `first..` from `rgba` (`cells × 4` bytes a row).
-    pub fn draw_rows(&self, first: u32, rgba: &[u8]) {
+    fn draw_rows(&self, first: u32, rgba: &[u8]) {
         let rows = (rgba.len() / (self.cells as usize * 4)) as u32;
         if rows == 0 {
             return;
@@ -60,7 +95,7 @@ impl Planar {
     }
 
     /// Scrolls the view so that row `row` stays in sight.
-    pub fn follow(&self, row: u32) {
+    fn follow(&self, row: u32) {
         let Some((scroller, shown, view)) = &self.scroller else {
             return;
         };

@@ -45,13 +45,6 @@ impl ShownSize {
     pub(crate) fn css(&self) -> (u32, u32) {
         self.size.get()
     }
-
-    /// The same in device pixels at `pixel_ratio` (device pixels per CSS pixel), rounded.
-    pub(crate) fn device(&self, pixel_ratio: f64) -> (u32, u32) {
-        let (w, h) = self.css();
-        let scale = |n: u32| (f64::from(n) * pixel_ratio).round() as u32;
-        (scale(w), scale(h))
-    }
 }
 
 impl Drop for ShownSize {

@@ -1,14 +1,14 @@
 //! A canvas of the page whose drawing is handed to an `OffscreenCanvas`
-//! (`transferControlToOffscreen`): the element stays in the page, laid out, pointed at and
-//! captured as a video stream; the renderer draws on the offscreen canvas, which a worker could
-//! hold as well as the page's thread. The element then shows what is drawn there.
+//! (`transferControlToOffscreen`): the element stays in the page, laid out and pointed at; the
+//! viewer draws on the offscreen canvas, which a worker could hold as well as the page's
+//! thread. The element then shows what is drawn there.
 
+use super::scope;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{HtmlCanvasElement, OffscreenCanvas};
 
 /// A canvas of the page and the offscreen canvas that draws it.
-#[derive(Clone, PartialEq)]
 pub struct ViewCanvas {
     pub element: HtmlCanvasElement,
     pub offscreen: OffscreenCanvas,
@@ -28,37 +28,25 @@ impl ViewCanvas {
         Ok(Self { element, offscreen })
     }
 
-    /// A copy of the element (its id, classes, size and label, but no context) in its place,
-    /// handed over afresh: what draws after a context that cannot be had again.
-    pub fn fresh_copy(&self) -> Result<Self, String> {
-        let copy: HtmlCanvasElement = self
-            .element
+    /// A copy of the page's canvas `#id` (its id, classes, size and label, but no context) in
+    /// its place, handed over afresh: what draws after a context that cannot be had again.
+    pub fn replace(id: &str) -> Result<Self, String> {
+        let old = super::page::element(id).ok_or_else(|| format!("the page has no #{id}"))?;
+        let copy: HtmlCanvasElement = old
             .clone_node()
             .ok()
             .and_then(|n| n.dyn_into().ok())
             .ok_or("the canvas could not be copied")?;
-        self.element
-            .replace_with_with_node_1(&copy)
+        old.replace_with_with_node_1(&copy)
             .map_err(|_| "the canvas could not be replaced")?;
         Self::hand_over(copy)
-    }
-
-    /// The drawing's size in pixels.
-    pub fn size(&self) -> (u32, u32) {
-        (self.offscreen.width(), self.offscreen.height())
-    }
-
-    /// Sets the drawing's size in pixels.
-    pub fn set_size(&self, (width, height): (u32, u32)) {
-        self.offscreen.set_width(width);
-        self.offscreen.set_height(height);
     }
 }
 
 /// Test-only (see `debug.rs`): takes the canvas's WebGL context away with
 /// `WEBGL_lose_context`, as the browser would, and gives it back after `restore_after_ms` if
 /// asked. Says why when the canvas has no WebGL2 context.
-pub fn lose_context(canvas: &ViewCanvas, restore_after_ms: Option<i32>) -> Result<(), String> {
+pub fn lose_context(canvas: &OffscreenCanvas, restore_after_ms: Option<i32>) -> Result<(), String> {
     let call = |target: &JsValue, method: &str, args: &js_sys::Array| {
         js_sys::Reflect::get(target, &method.into())
             .ok()
@@ -67,7 +55,6 @@ pub fn lose_context(canvas: &ViewCanvas, restore_after_ms: Option<i32>) -> Resul
             .filter(|v| !v.is_null() && !v.is_undefined())
     };
     let context: JsValue = canvas
-        .offscreen
         .get_context("webgl2")
         .ok()
         .flatten()
@@ -81,13 +68,9 @@ pub fn lose_context(canvas: &ViewCanvas, restore_after_ms: Option<i32>) -> Resul
     .ok_or("the browser has no WEBGL_lose_context")?;
     call(&lose, "loseContext", &js_sys::Array::new());
     if let Some(ms) = restore_after_ms {
-        let restore = Closure::once_into_js(move || {
+        scope::after(ms, move || {
             call(&lose, "restoreContext", &js_sys::Array::new());
         });
-        web_sys::window()
-            .ok_or("no window")?
-            .set_timeout_with_callback_and_timeout_and_arguments_0(restore.unchecked_ref(), ms)
-            .map_err(|_| "the context's return could not be scheduled")?;
     }
     Ok(())
 }

@@ -9,10 +9,8 @@
 use super::activity;
 use super::clock::now;
 use super::debug::{self, Loss};
-use super::planar::Planar;
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
-use super::shown_size::ShownSize;
-use super::view_canvas::{ViewCanvas, lose_context, object_url};
+use super::view_canvas::{lose_context, object_url};
 use super::webcodecs::{self, VideoFrame};
 use super::workers::Workers;
 use crate::export::Download;
@@ -35,13 +33,14 @@ use crate::view::preview::PreviewState;
 use crate::view::recording::FrameAsk;
 use crate::work::file_writer::{FileStage, FileWriter, Needs, Source};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
+use crate::work::planar_update::PlanarUpdate;
 use crate::work::replica::Replica;
 use crate::work::view_command::{PointerChange, ViewCommand};
 use crate::work::view_status::{ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;
-use web_sys::HtmlCanvasElement;
+use web_sys::OffscreenCanvas;
 
 /// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
 struct Growing {
@@ -51,7 +50,8 @@ struct Growing {
     link: String,
     replica: Replica,
     camera: OrbitCamera,
-    planar: Option<Planar>,
+    /// Whether the planar view shows a pattern (this shell's, or the one previewed).
+    planar_open: bool,
     /// The planar view's cells and rows for this shell's pattern.
     planar_size: Option<(u32, u32)>,
     /// The pattern of values being dragged, computed by a worker and shown in the planar
@@ -127,10 +127,16 @@ struct Previewing {
 
 pub struct Viewer {
     renderer: Renderer,
-    canvas: ViewCanvas,
-    /// The size the canvas is shown at, as the page last laid it out.
-    shown: ShownSize,
-    planar_canvas: Option<HtmlCanvasElement>,
+    /// The canvas it draws on (a page's canvas handed its drawing over).
+    canvas: OffscreenCanvas,
+    /// The size the canvas is shown at, in CSS pixels, as the page last laid it out (none
+    /// said yet: the drawing keeps its size).
+    shown: (u32, u32),
+    /// Device pixels per CSS pixel.
+    pixel_ratio: f64,
+    /// Whether this viewer has a planar view beside it, and what it is to show next.
+    planar: bool,
+    planar_updates: Vec<PlanarUpdate>,
     pointers: Pointers,
     growing: Option<Growing>,
     /// Whether growth advances each frame, and how fast.
@@ -164,8 +170,6 @@ pub struct Viewer {
     lost_at: Option<f64>,
     /// Why no renderer could be opened again: the viewer draws no more.
     gone: Option<String>,
-    /// A fresh canvas that took the old one's place, until the page moves its listeners.
-    replaced_canvas: Option<HtmlCanvasElement>,
     /// The picture asked for as a file, once the browser has read it from the canvas.
     picture_read: Rc<RefCell<Option<Result<String, String>>>>,
     /// Words for the page to show, until it takes them (the viewer writes no words on the page
@@ -182,6 +186,9 @@ pub enum Device {
     Ready,
     /// Lost (why, in words), and being opened again.
     Reopening(String),
+    /// Lost (why, in words), and to be opened again on a fresh canvas, which the page makes in
+    /// its canvas's place and gives ([`Viewer::give_canvas`]).
+    NeedsCanvas(String),
     /// Opened again just now, with this backend.
     Reopened(&'static str),
     /// Lost for good: no device could be opened again (why, in words).
@@ -190,21 +197,21 @@ pub enum Device {
 
 impl Viewer {
     pub async fn new(
-        canvas: HtmlCanvasElement,
-        planar_canvas: Option<HtmlCanvasElement>,
+        canvas: OffscreenCanvas,
+        planar: bool,
         background: [u8; 3],
         follows: bool,
         workers: Rc<RefCell<Workers>>,
     ) -> Result<Self, String> {
-        let shown = ShownSize::observe(&canvas)?;
-        let canvas = ViewCanvas::hand_over(canvas)?;
-        let mut renderer = Renderer::new(canvas.offscreen.clone()).await?;
+        let mut renderer = Renderer::new(canvas.clone()).await?;
         renderer.set_background(background);
         Ok(Self {
             renderer,
-            shown,
+            shown: (0, 0),
+            pixel_ratio: 1.0,
             canvas,
-            planar_canvas,
+            planar,
+            planar_updates: Vec::new(),
             pointers: Pointers::default(),
             growing: None,
             playback: Playback::new(1.0),
@@ -223,7 +230,6 @@ impl Viewer {
             reopening: None,
             lost_at: None,
             gone: None,
-            replaced_canvas: None,
             picture_read: Rc::default(),
             notice: None,
             writer: FileWriter::default(),
@@ -272,6 +278,14 @@ impl Viewer {
                     camera.zoom_by(wheel_zoom(delta));
                 }
             }
+            ViewCommand::Shown {
+                width,
+                height,
+                pixel_ratio,
+            } => {
+                self.shown = (width, height);
+                self.pixel_ratio = pixel_ratio;
+            }
             ViewCommand::Background(srgb) => self.set_background(srgb),
             ViewCommand::RecordAt(size) => self.record_at(size),
             ViewCommand::AskFrame(ask) => self.asked = Some(ask),
@@ -310,7 +324,7 @@ impl Viewer {
             link,
             replica: Replica::new(self.session),
             camera: OrbitCamera::framing(&placeholder, DVec3::Z, 0.0, 0.0),
-            planar: None,
+            planar_open: false,
             planar_size: None,
             preview: None,
             pending: 1,
@@ -331,7 +345,7 @@ impl Viewer {
             link: String::new(),
             replica,
             camera: OrbitCamera::framing(&shell.bounds, shell.front, 0.0, 0.0),
-            planar: None,
+            planar_open: false,
             planar_size: None,
             preview: None,
             pending: 0,
@@ -358,10 +372,10 @@ impl Viewer {
             camera = camera.following(&grown);
         }
         g.camera = camera;
-        g.planar = self
-            .planar_canvas
-            .clone()
-            .and_then(|c| Planar::new(c, pattern));
+        g.planar_open = self.planar && pattern.is_some();
+        if self.planar {
+            self.planar_updates.push(PlanarUpdate::Open(pattern));
+        }
         self.upload(&advance);
     }
 
@@ -504,9 +518,14 @@ impl Viewer {
             advance,
             rgba,
         ));
-        if let Some(planar) = &g.planar {
-            planar.draw_rows(advance.rows.start as u32, rgba);
-            planar.follow(advance.rows.end as u32);
+        if g.planar_open {
+            self.planar_updates.extend([
+                PlanarUpdate::Rows {
+                    first: advance.rows.start as u32,
+                    rgba: rgba.to_vec(),
+                },
+                PlanarUpdate::Follow(advance.rows.end as u32),
+            ]);
         }
     }
 
@@ -555,15 +574,15 @@ impl Viewer {
         if cells == 0 {
             return;
         }
+        if !self.planar {
+            return;
+        }
         if first == 0 {
-            g.planar = self
-                .planar_canvas
-                .clone()
-                .and_then(|c| Planar::new(c, Some((cells, rows))));
+            g.planar_open = true;
+            self.planar_updates
+                .push(PlanarUpdate::Open(Some((cells, rows))));
         }
-        if let Some(planar) = &g.planar {
-            planar.draw_rows(first, &rgba);
-        }
+        self.planar_updates.push(PlanarUpdate::Rows { first, rgba });
     }
 
     /// Back from a preview to the growing shell's own pattern in the planar view.
@@ -572,15 +591,26 @@ impl Viewer {
         if g.preview.take().is_none() {
             return;
         }
-        g.planar = self
-            .planar_canvas
-            .clone()
-            .and_then(|c| Planar::new(c, g.planar_size));
-        if let Some(planar) = &g.planar {
-            let replica = &g.replica;
-            planar.draw_rows(0, replica.rgba());
-            planar.follow((replica.rgba().len() / (replica.cells() * 4).max(1)) as u32);
+        if !self.planar {
+            return;
         }
+        g.planar_open = g.planar_size.is_some();
+        self.planar_updates.push(PlanarUpdate::Open(g.planar_size));
+        if g.planar_open {
+            let replica = &g.replica;
+            self.planar_updates.extend([
+                PlanarUpdate::Rows {
+                    first: 0,
+                    rgba: replica.rgba().to_vec(),
+                },
+                PlanarUpdate::Follow((replica.rgba().len() / (replica.cells() * 4).max(1)) as u32),
+            ]);
+        }
+    }
+
+    /// What the planar view is to show since the page last asked.
+    pub fn take_planar(&mut self) -> Vec<PlanarUpdate> {
+        std::mem::take(&mut self.planar_updates)
     }
 
     /// Words the page should show since it last asked (why a preview stopped).
@@ -611,8 +641,8 @@ impl Viewer {
                     triangles: mesh.triangle_count() + edge.triangle_count(),
                     pattern: (r.cells() > 0).then(|| (r.cells(), r.rgba().len() / (r.cells() * 4))),
                     picture: {
-                        let (width, height) = self.canvas.size();
-                        (width as usize, height as usize)
+                        let c = &self.canvas;
+                        (c.width() as usize, c.height() as usize)
                     },
                 },
             }),
@@ -627,9 +657,11 @@ impl Viewer {
         if let Some(gone) = &self.gone {
             return Device::Gone(gone.clone());
         }
-        if let Some(reopening) = &self.reopening {
+        let reason = self.loss_reason();
+        if let Some(reopening) = &mut self.reopening {
             return match reopening.take() {
-                None => Device::Reopening(self.loss_reason()),
+                None if reopening.needs_canvas() => Device::NeedsCanvas(reason),
+                None => Device::Reopening(reason),
                 Some(Ok(reopened)) => {
                     self.reopening = None;
                     self.lost_at = None;
@@ -639,8 +671,8 @@ impl Viewer {
                 Some(Err(e)) => {
                     self.reopening = None;
                     let gone = format!(
-                        "The graphics device was lost ({}) and none could be opened again: {e}",
-                        self.loss_reason()
+                        "The graphics device was lost ({reason}) and none could be opened again: \
+                         {e}"
                     );
                     self.gone = Some(gone.clone());
                     Device::Gone(gone)
@@ -678,13 +710,6 @@ impl Viewer {
             canvas,
         } = reopened;
         renderer.set_background(self.background);
-        if canvas != self.canvas {
-            match ShownSize::observe(&canvas.element) {
-                Ok(shown) => self.shown = shown,
-                Err(e) => self.gone = Some(e),
-            }
-            self.replaced_canvas = Some(canvas.element.clone());
-        }
         self.canvas = canvas;
         self.renderer = renderer;
         let everything = self.growing.as_ref().and_then(|g| {
@@ -698,10 +723,12 @@ impl Viewer {
         self.dirty = true;
     }
 
-    /// A fresh canvas that took the old one's place since the last call: the page listens to
-    /// it instead.
-    pub fn take_replaced_canvas(&mut self) -> Option<HtmlCanvasElement> {
-        self.replaced_canvas.take()
+    /// The fresh canvas the viewer asked for ([`Device::NeedsCanvas`]), to open a renderer
+    /// on.
+    pub fn give_canvas(&mut self, canvas: OffscreenCanvas) {
+        if let Some(reopening) = &mut self.reopening {
+            reopening.give_canvas(canvas);
+        }
     }
 
     /// Test-only (see `debug.rs`): takes the graphics device away as a driver reset (WebGPU) or
@@ -749,13 +776,17 @@ impl Viewer {
         g.finishing = true;
     }
 
-    /// Keeps the drawing buffer at the canvas's size in device pixels (its size as last laid
-    /// out, see `shown_size.rs`).
+    /// Keeps the drawing buffer at the canvas's size in device pixels (its size as the page
+    /// last said it was laid out).
     fn fit_canvas(&mut self) {
-        let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
-        let (width, height) = self.fixed_size.unwrap_or_else(|| self.shown.device(dpr));
-        if width > 0 && height > 0 && (width, height) != self.canvas.size() {
-            self.canvas.set_size((width, height));
+        let scale = |n: u32| (f64::from(n) * self.pixel_ratio).round() as u32;
+        let (width, height) = self
+            .fixed_size
+            .unwrap_or((scale(self.shown.0), scale(self.shown.1)));
+        let c = &self.canvas;
+        if width > 0 && height > 0 && (width, height) != (c.width(), c.height()) {
+            c.set_width(width);
+            c.set_height(height);
             self.renderer.resize(width, height);
             self.dirty = true;
         }
@@ -852,7 +883,7 @@ impl Viewer {
         match change {
             PointerChange::Down { id, x, y } => self.pointers.press(id, x, y),
             PointerChange::Move { id, x, y } => {
-                let height = self.shown.css().1.max(1) as f32;
+                let height = self.shown.1.max(1) as f32;
                 if let Some(g) = &mut self.growing
                     && self.pointers.moved(id, x, y, height, &mut g.camera)
                 {
@@ -875,7 +906,6 @@ impl Viewer {
         self.renderer
             .draw(&g.panes(self.layout, self.renderer.aspect()))?;
         self.canvas
-            .offscreen
             .convert_to_blob()
             .map_err(|_| "the browser refused to read the canvas".to_string())
     }
@@ -914,8 +944,7 @@ impl Viewer {
             .work(self.growing.as_ref().map(Growing::source), &now)
     }
 
-    /// Records at `size` pixels, whatever the canvas's size on the page (the page shows the
-    /// frames scaled to fit): growth and drawing follow the frames asked for
+    /// Records at `size` pixels, whatever the canvas's size on the page: growth and drawing follow the frames asked for
     /// ([`Self::ask_frame`]) instead of the playback. With `None`, back to the canvas's size
     /// and the playback; a frame asked for or drawn and not taken is dropped.
     fn record_at(&mut self, size: Option<(u32, u32)>) {
@@ -926,11 +955,6 @@ impl Viewer {
                 frame.close();
             }
         }
-        let _ = self
-            .canvas
-            .element
-            .class_list()
-            .toggle_with_force("fixed", size.is_some());
         self.dirty = true;
     }
 
@@ -979,7 +1003,7 @@ impl Viewer {
             ("timestamp", (ask.timestamp_us as f64).into()),
             ("duration", (ask.duration_us as f64).into()),
         ]);
-        VideoFrame::new(&self.canvas.offscreen, &init)
+        VideoFrame::new(&self.canvas, &init)
             .map_err(|e| format!("the canvas could not be read ({})", webcodecs::describe(&e)))
     }
 }

@@ -19,6 +19,7 @@
 
 use super::clock::now;
 use super::debug;
+use super::scope;
 use crate::view::draw_pacing::HEAVY_BYTES;
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Reply, Request, decode_reply, encode_request};
@@ -155,8 +156,7 @@ const WORKER_GROWTH_MS: f64 = 24.0;
 
 /// The page address's query parameter `key`, as a number.
 fn query_number(key: &str) -> Option<usize> {
-    let search = web_sys::window()?.location().search().ok()?;
-    search
+    scope::search()
         .trim_start_matches('?')
         .split('&')
         .find_map(|pair| pair.strip_prefix(key)?.strip_prefix('='))
@@ -199,9 +199,8 @@ fn spawn(slot: usize, generation: u32, inbox: &Inbox, name: &str) -> Result<Slot
 impl Workers {
     /// The pool this browser gets, or the page's own thread where workers cannot start.
     pub fn start(budget_ms: f64) -> Self {
-        let cores = web_sys::window().map_or(1, |w| w.navigator().hardware_concurrency() as usize);
         let size = query_number("workers")
-            .unwrap_or_else(|| size_for(cores))
+            .unwrap_or_else(|| size_for(scope::cores()))
             .min(8);
         let mut faults = Faults {
             throws: query_number("crash-workers").unwrap_or(0),

@@ -7,13 +7,14 @@
 //! cannot change a bit, and shares jobs out among its workers with a [`pool::Pool`], which
 //! also knows what to do again when a worker dies or hangs. A file of the shell is written
 //! where that copy is ([`file_writer::FileWriter`]); what the page asks of a viewer and what it
-//! reads of it once a frame are plain data ([`view_command::ViewCommand`],
-//! [`view_status::ViewStatus`]).
+//! reads of it are plain data ([`view_command::ViewCommand`], [`view_status::ViewStatus`],
+//! [`planar_update::PlanarUpdate`]).
 
 pub(crate) mod edge_slots;
 pub mod file_writer;
 pub mod host;
 pub mod message;
+pub mod planar_update;
 pub mod pool;
 pub mod replica;
 pub mod slotted_edge;

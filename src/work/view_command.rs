@@ -44,6 +44,14 @@ pub enum ViewCommand {
     Pointer(PointerChange),
     /// A wheel turned by this many pixels.
     Wheel(f64),
+    /// The size the canvas is shown at on the page, in CSS pixels, and the device pixels in
+    /// each: the drawing is kept at that size in device pixels, and a drag turns the camera by
+    /// its share of the height.
+    Shown {
+        width: u32,
+        height: u32,
+        pixel_ratio: f64,
+    },
     /// The clear colour, as sRGB bytes (the page's theme changed).
     Background([u8; 3]),
     /// Record at this size (`None`: back to the canvas's own size and the playback).
