@@ -31,9 +31,9 @@ use super::share;
 use super::shown_size::ShownSize;
 use super::view_canvas::ViewCanvas;
 use super::viewer::{Device, Viewer};
+use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::export::Download;
-use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
 use crate::share::presentation::{Layout, Presentation};
@@ -561,14 +561,14 @@ impl App {
         );
     }
 
-    /// One animation frame of a recording under way: the frame the viewer drew goes to the
-    /// encoder, the next is asked for (and worked on in the viewer's frame).
-    fn record_frame(&mut self) {
+    /// One animation frame of a recording under way: the frame the viewer drew (`recorded`)
+    /// goes to the encoder, the next is asked for (and worked on in the viewer's next frame).
+    fn record_frame(&mut self, recorded: Option<Result<VideoFrame, String>>) {
         let Some(recording) = &mut self.recording else {
             return;
         };
         let mut step = recording.step();
-        if let Some(frame) = self.viewer.take_recorded()
+        if let Some(frame) = recorded
             && let Err(e) = recording.took(frame)
         {
             step = Step::Failed(e);
@@ -681,11 +681,6 @@ impl App {
     pub fn frame(&mut self) -> Result<(), String> {
         self.tell_shown();
         let outcome = self.work_and_draw();
-        for update in self.viewer.take_planar() {
-            if let Some(planar) = &mut self.planar {
-                planar.apply(update);
-            }
-        }
         // What this frame asked goes out now, to be worked on before the next frame.
         self.workers.borrow_mut().send();
         outcome
@@ -725,11 +720,21 @@ impl App {
         if !self.survive()? {
             return Ok(());
         }
-        self.downloads.show(self.viewer.work_file());
         self.take_replies();
+        // The map covers the shell, and the gallery hides it: growth waits meanwhile.
+        let held = self.recording.is_none() && (self.in_gallery || self.map.is_open());
+        let frame = self.viewer.run_frame(held)?;
+        self.downloads.show(frame.file);
+        if let Some(notice) = frame.notice {
+            show_message(&notice);
+        }
+        for update in frame.planar {
+            if let Some(planar) = &mut self.planar {
+                planar.apply(update);
+            }
+        }
         if self.recording.is_some() {
-            self.record_frame();
-            self.viewer.frame(GROWTH_BUDGET_MS)?;
+            self.record_frame(frame.recorded);
             return Ok(());
         }
         if self.in_gallery {
@@ -748,12 +753,11 @@ impl App {
             self.update_url();
         }
         if self.map.is_open() {
-            // The map covers the shell, which waits meanwhile.
             activity::set("drawing the parameter map".to_string());
             return Ok(());
         }
-        let drawn = self.viewer.frame(GROWTH_BUDGET_MS)?;
-        self.status = self.viewer.status();
+        let drawn = frame.drawn;
+        self.status = frame.status;
         signal("preview", self.status.preview_signal());
         let Some(shell) = &self.status.shell else {
             signal("settled", "false");
@@ -848,9 +852,6 @@ impl App {
                     }
                 }
             }
-        }
-        if let Some(notice) = self.viewer.take_notice() {
-            show_message(&notice);
         }
     }
 

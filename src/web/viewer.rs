@@ -179,6 +179,21 @@ pub struct Viewer {
     writer: FileWriter,
 }
 
+/// What a frame of the viewer gives the page (see [`Viewer::run_frame`]).
+pub struct ViewFrame {
+    /// Where the file asked for stands (`None`: none is asked for).
+    pub file: Option<FileStage>,
+    /// Whether the shell was drawn.
+    pub drawn: bool,
+    pub status: ViewStatus,
+    /// Words to show (why a preview stopped).
+    pub notice: Option<String>,
+    /// What the planar view is to show.
+    pub planar: Vec<PlanarUpdate>,
+    /// A recording's video frame asked for, drawn (or why it could not be).
+    pub recorded: Option<Result<VideoFrame, String>>,
+}
+
 /// The state of the viewer's graphics device.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Device {
@@ -608,18 +623,8 @@ impl Viewer {
         }
     }
 
-    /// What the planar view is to show since the page last asked.
-    pub fn take_planar(&mut self) -> Vec<PlanarUpdate> {
-        std::mem::take(&mut self.planar_updates)
-    }
-
-    /// Words the page should show since it last asked (why a preview stopped).
-    pub fn take_notice(&mut self) -> Option<String> {
-        self.notice.take()
-    }
-
     /// What the page shows of this viewer: where its shell stands, and the preview.
-    pub fn status(&self) -> ViewStatus {
+    fn status(&self) -> ViewStatus {
         let Some(g) = &self.growing else {
             return ViewStatus::default();
         };
@@ -792,10 +797,27 @@ impl Viewer {
         }
     }
 
-    /// One animation frame: grow at the current speed within `budget_ms` (stretched when frames
-    /// come slowly, see [`growth_budget`]), draw if anything changed. Returns whether a frame
-    /// was drawn.
-    pub fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
+    /// One animation frame, once the device is ready ([`Self::survive`]) and the shell's
+    /// replies are taken in ([`Self::take`]): works on a file asked for, grows and draws (unless
+    /// `held`: the page shows something else over the shell), and says what the page is to
+    /// show. Fails with the words to show when the renderer failed.
+    pub fn run_frame(&mut self, held: bool) -> Result<ViewFrame, String> {
+        let file = self.work_file();
+        let drawn = !held && self.frame(GROWTH_BUDGET_MS)?;
+        Ok(ViewFrame {
+            file,
+            drawn,
+            status: self.status(),
+            notice: self.notice.take(),
+            planar: std::mem::take(&mut self.planar_updates),
+            recorded: self.recorded.take(),
+        })
+    }
+
+    /// Grows at the current speed within `budget_ms` (stretched when frames come slowly, see
+    /// [`growth_budget`]), or towards a recording's frame, and draws if anything changed.
+    /// Returns whether a frame was drawn.
+    fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
         if let Some(failure) = self.renderer.failure() {
             return Err(failure);
         }
@@ -936,7 +958,7 @@ impl Viewer {
 
     /// Works on the file asked for by [`Self::write_file`] for a frame's budget: where it
     /// stands, or `None` when none is asked for.
-    pub fn work_file(&mut self) -> Option<FileStage> {
+    fn work_file(&mut self) -> Option<FileStage> {
         if let Some(read) = self.picture_read.borrow_mut().take() {
             self.writer.picture_taken(read);
         }
@@ -956,11 +978,6 @@ impl Viewer {
             }
         }
         self.dirty = true;
-    }
-
-    /// The video frame asked for, once drawn (or why it could not be).
-    pub fn take_recorded(&mut self) -> Option<Result<VideoFrame, String>> {
-        self.recorded.take()
     }
 
     /// A recording's part of an animation frame: grows towards the frame asked for within
