@@ -30,7 +30,7 @@ use super::record::{self, Recording, Step, Support};
 use super::share;
 use super::shown_size::ShownSize;
 use super::view_canvas::ViewCanvas;
-use super::viewer::{Device, Viewer};
+use super::view_link::{Taken, ViewLink};
 use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::export::Download;
@@ -45,7 +45,8 @@ use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
 use crate::work::view_command::ViewCommand;
-use crate::work::view_status::ViewStatus;
+use crate::work::view_message::PoolNews;
+use crate::work::view_status::{Device, ViewStatus};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
@@ -59,7 +60,11 @@ const URL_DELAY_MS: f64 = 300.0;
 const PROGRESS_EVERY_MS: f64 = 100.0;
 
 pub struct App {
-    viewer: Viewer,
+    viewer: ViewLink,
+    /// Whether the viewer was last told to hold its growth.
+    held: bool,
+    /// Workers replaced so far in the page's pool and in the drawing worker's.
+    deaths: (usize, u32),
     /// The size the main viewer's canvas is shown at, and what the viewer was last told of it
     /// (CSS pixels and the device pixel ratio).
     shown: Option<ShownSize>,
@@ -131,15 +136,18 @@ fn location_hash() -> String {
 }
 
 impl App {
-    pub fn new(viewer: Viewer, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
-        signal("backend", viewer.backend());
-        set_text("backend", &format!("Drawn with {}", viewer.backend()));
+    pub fn new(viewer: ViewLink, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
+        let backend = viewer.backend();
+        signal("backend", &backend);
+        set_text("backend", &format!("Drawn with {backend}"));
         let shown = element("shell").and_then(|e| ShownSize::observe(&e).ok());
         let planar = element("planar")
             .and_then(|e| e.dyn_into().ok())
             .map(PlanarView::new);
         Self {
             viewer,
+            held: false,
+            deaths: (0, 0),
             shown,
             told_shown: (0, 0, 0.0),
             replaced_canvas: None,
@@ -178,7 +186,7 @@ impl App {
         self.on_change = Some(on_change);
     }
 
-    pub fn viewer(&mut self) -> &mut Viewer {
+    pub fn viewer(&mut self) -> &mut ViewLink {
         &mut self.viewer
     }
 
@@ -631,6 +639,12 @@ impl App {
         self.pictures.take_device(loss)
     }
 
+    /// Test-only (see `debug.rs`): passes a hook that acts where the viewer grows on to a
+    /// viewer drawing in a worker.
+    pub fn forward_debug(&self, ask: &str) {
+        self.viewer.forward_debug(ask);
+    }
+
     /// Keeps the main viewer's graphics device, saying in words when it was lost and when it
     /// is back; returns whether the frame may draw.
     fn survive(&mut self) -> Result<bool, String> {
@@ -659,7 +673,7 @@ impl App {
             Device::Reopened(backend) => {
                 self.recoveries += 1;
                 signal("recoveries", &self.recoveries.to_string());
-                signal("backend", backend);
+                signal("backend", &backend);
                 set_text("backend", &format!("Drawn with {backend}"));
                 if self.in_gallery {
                     page::hide_message();
@@ -679,10 +693,14 @@ impl App {
 
     /// One animation frame.
     pub fn frame(&mut self) -> Result<(), String> {
+        if self.viewer.crashed() {
+            return Ok(());
+        }
         self.tell_shown();
         let outcome = self.work_and_draw();
         // What this frame asked goes out now, to be worked on before the next frame.
         self.workers.borrow_mut().send();
+        self.viewer.tick();
         outcome
     }
 
@@ -723,18 +741,44 @@ impl App {
         self.take_replies();
         // The map covers the shell, and the gallery hides it: growth waits meanwhile.
         let held = self.recording.is_none() && (self.in_gallery || self.map.is_open());
-        let frame = self.viewer.run_frame(held)?;
-        self.downloads.show(frame.file);
-        if let Some(notice) = frame.notice {
-            show_message(&notice);
+        if held != self.held {
+            self.held = held;
+            self.viewer.command(ViewCommand::Hold(held));
         }
-        for update in frame.planar {
-            if let Some(planar) = &mut self.planar {
-                planar.apply(update);
+        let Taken {
+            frames,
+            refused,
+            pool,
+        } = self.viewer.frames()?;
+        for message in refused {
+            self.current = None;
+            page::show_error(&message);
+        }
+        if let Some(pool) = pool {
+            self.pool_said(pool);
+        }
+        let mut drawn = false;
+        let mut recorded = None;
+        let mut status = None;
+        for frame in frames {
+            let report = frame.report;
+            self.downloads.show(report.file);
+            if let Some(notice) = report.notice {
+                show_message(&notice);
+            }
+            for update in report.planar {
+                if let Some(planar) = &mut self.planar {
+                    planar.apply(update);
+                }
+            }
+            drawn |= report.drawn;
+            status = Some(report.status);
+            if let Some(frame) = frame.recorded {
+                recorded = Some(frame);
             }
         }
         if self.recording.is_some() {
-            self.record_frame(frame.recorded);
+            self.record_frame(recorded);
             return Ok(());
         }
         if self.in_gallery {
@@ -756,8 +800,11 @@ impl App {
             activity::set("drawing the parameter map".to_string());
             return Ok(());
         }
-        let drawn = frame.drawn;
-        self.status = frame.status;
+        let Some(status) = status else {
+            // A viewer in a worker sent no frame since the page's last.
+            return Ok(());
+        };
+        self.status = status;
         signal("preview", self.status.preview_signal());
         let Some(shell) = &self.status.shell else {
             signal("settled", "false");
@@ -830,7 +877,11 @@ impl App {
     fn take_replies(&mut self) {
         let polled = self.workers.borrow_mut().poll();
         if let Some(replaced) = &polled.replaced {
-            signal("workerDeaths", &replaced.deaths.to_string());
+            self.deaths.0 = replaced.deaths;
+            signal(
+                "workerDeaths",
+                &(self.deaths.0 + self.deaths.1 as usize).to_string(),
+            );
             if let Some(words) = replaced.words() {
                 set_text("workers-status", &words);
             }
@@ -846,12 +897,28 @@ impl App {
                 (_, Reply::Tiled { job, result }) => self.map.take(job, result),
                 (request, reply) => {
                     if let Err(message) = self.viewer.take(&request, reply) {
-                        self.viewer.unload();
                         self.current = None;
                         page::show_error(&message);
                     }
                 }
             }
+        }
+    }
+
+    /// What the drawing worker's pool says of itself: how many workers (its status line) and
+    /// how many were replaced.
+    fn pool_said(&mut self, pool: PoolNews) {
+        if pool.deaths == 0 {
+            set_text("workers-status", &pool.status);
+            return;
+        }
+        self.deaths.1 = pool.deaths;
+        signal(
+            "workerDeaths",
+            &(self.deaths.0 + self.deaths.1 as usize).to_string(),
+        );
+        if let Some(words) = pool.words {
+            set_text("workers-status", &words);
         }
     }
 

@@ -21,8 +21,13 @@ pub enum Loss {
 /// Takes the page's graphics devices away; says why it could not.
 pub type Destroy = Box<dyn Fn(Loss) -> Result<(), String>>;
 
+/// Passes a hook that acts where the main viewer grows ("panic", "crash-on-fill") on to a
+/// viewer drawing in a worker.
+pub type Forward = Box<dyn Fn(&str)>;
+
 thread_local! {
     static DESTROY: RefCell<Option<Destroy>> = const { RefCell::new(None) };
+    static FORWARD: RefCell<Option<Forward>> = const { RefCell::new(None) };
     static PANIC_WHILE_GROWING: Cell<bool> = const { Cell::new(false) };
     static CRASH_ON_FILL: Cell<bool> = const { Cell::new(false) };
 }
@@ -50,6 +55,20 @@ pub fn debug_lose_context(restore_after_ms: Option<i32>) -> Result<(), JsValue> 
     take_devices(Loss::Context { restore_after_ms })
 }
 
+/// Remembers how to reach a viewer drawing in a worker, for the hooks that act where the
+/// viewer grows.
+pub fn register_forward(forward: Forward) {
+    FORWARD.with(|f| *f.borrow_mut() = Some(forward));
+}
+
+fn forward(ask: &str) {
+    FORWARD.with(|f| {
+        if let Some(forward) = f.borrow().as_ref() {
+            forward(ask);
+        }
+    });
+}
+
 fn take_devices(loss: Loss) -> Result<(), JsValue> {
     DESTROY.with(|d| match d.borrow().as_ref() {
         Some(destroy) => destroy(loss).map_err(JsValue::from),
@@ -57,10 +76,30 @@ fn take_devices(loss: Loss) -> Result<(), JsValue> {
     })
 }
 
+/// Test-only: from now on the browser has no WebGPU adapter to give (`navigator.gpu`'s
+/// `requestAdapter` answers none), on the page's thread and in a worker drawing the view: a
+/// device lost then can only be opened again with WebGL2.
+#[wasm_bindgen]
+pub fn debug_take_webgpu_away() -> Result<(), JsValue> {
+    let global = js_sys::global();
+    let navigator = js_sys::Reflect::get(&global, &"navigator".into())?;
+    let gpu = js_sys::Reflect::get(&navigator, &"gpu".into())?;
+    if gpu.is_undefined() {
+        return Err("this browser has no WebGPU to take away".into());
+    }
+    let none =
+        Closure::<dyn Fn() -> js_sys::Promise>::new(|| js_sys::Promise::resolve(&JsValue::NULL));
+    js_sys::Reflect::set(&gpu, &"requestAdapter".into(), none.as_ref())?;
+    none.forget();
+    forward("no-webgpu");
+    Ok(())
+}
+
 /// Test-only: makes the next growth step panic, inside the frame loop, as a bug would.
 #[wasm_bindgen]
 pub fn debug_panic_while_growing() {
     PANIC_WHILE_GROWING.with(|p| p.set(true));
+    forward("panic");
 }
 
 /// Panics if a test asked for it with [`debug_panic_while_growing`].
@@ -76,6 +115,7 @@ pub fn panic_if_asked() {
 #[wasm_bindgen]
 pub fn debug_crash_worker_on_fill() {
     CRASH_ON_FILL.with(|c| c.set(true));
+    forward("crash-on-fill");
 }
 
 /// Whether a test asked with [`debug_crash_worker_on_fill`] (once).

@@ -8,13 +8,14 @@ use super::clock::now;
 use super::debug::Loss;
 use super::dom::{append, attr, create, typed};
 use super::view_canvas::{ViewCanvas, object_url};
-use super::viewer::{Device, Viewer};
+use super::viewer::Viewer;
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::ShellSpec;
 use crate::work::message::{Request, WholeShell};
 use crate::work::view_command::ViewCommand;
+use crate::work::view_status::Device;
 use std::collections::VecDeque;
 use web_sys::{Element, HtmlImageElement};
 

@@ -18,6 +18,8 @@ mod scope;
 mod share;
 mod shown_size;
 mod view_canvas;
+mod view_link;
+mod view_worker;
 mod viewer;
 mod webcodecs;
 mod worker_host;
@@ -29,6 +31,7 @@ use app::App;
 use std::cell::RefCell;
 use std::rc::Rc;
 use view_canvas::ViewCanvas;
+use view_link::{ViewLink, ViewWorker};
 use viewer::Viewer;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
@@ -93,7 +96,7 @@ pub async fn start() -> Result<(), JsValue> {
     let viewers = async {
         let shared = || Rc::clone(&workers);
         let offscreen = |id| Ok::<_, String>(ViewCanvas::hand_over(canvas(id)?)?.offscreen);
-        let main = Viewer::new(offscreen("shell")?, true, background, true, shared()).await?;
+        let main = main_viewer(offscreen("shell")?, background, shared()).await?;
         let pictures = Viewer::new(
             offscreen("picture-canvas")?,
             false,
@@ -124,6 +127,14 @@ pub async fn start() -> Result<(), JsValue> {
         app.take_devices(loss)
     }));
     let weak = Rc::downgrade(&app);
+    debug::register_forward(Box::new(move |ask| {
+        if let Some(app) = weak.upgrade()
+            && let Ok(app) = app.try_borrow()
+        {
+            app.forward_debug(ask);
+        }
+    }));
+    let weak = Rc::downgrade(&app);
     app.borrow_mut()
         .set_on_change(Rc::new(move |key: &str, value: String, change| {
             if let Some(app) = weak.upgrade() {
@@ -135,6 +146,33 @@ pub async fn start() -> Result<(), JsValue> {
     probe_encoders(&app);
     run(app);
     Ok(())
+}
+
+/// The main viewer, on `canvas`: in a worker where one can draw (see `view_link.rs`), else,
+/// or when the worker cannot start or open a renderer, on the page's thread (on a fresh copy of
+/// the canvas, if this one was handed to the worker).
+async fn main_viewer(
+    canvas: web_sys::OffscreenCanvas,
+    background: [u8; 3],
+    workers: Rc<RefCell<workers::Workers>>,
+) -> Result<ViewLink, String> {
+    let canvas = if view_link::in_worker() {
+        match ViewWorker::start(canvas, true, background).await {
+            Ok(worker) => return Ok(ViewLink::Worker(worker)),
+            Err(e) => {
+                let status = format!(
+                    "{} The view is drawn on the page's thread: {e}.",
+                    workers.borrow().status()
+                );
+                page::set_text("workers-status", &status);
+                ViewCanvas::replace("shell")?.offscreen
+            }
+        }
+    } else {
+        canvas
+    };
+    let viewer = Viewer::new(canvas, true, background, true, workers).await?;
+    Ok(ViewLink::Here(Box::new(viewer)))
 }
 
 /// Asks the browser what it can record video with, and shows the answer.

@@ -1,5 +1,6 @@
 //! What the page's window and a worker's global scope both give, read from whichever the code
-//! runs in (a worker has no `window`): the address's query, the processor count, a timer.
+//! runs in (a worker has no `window`): the address's query, the processor count, a timer, and
+//! which thread it is.
 
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
@@ -37,4 +38,13 @@ pub(crate) fn cores() -> usize {
 pub(crate) fn after(ms: i32, f: impl FnOnce() + 'static) {
     let f = Closure::once_into_js(f);
     set_timeout(f.unchecked_ref(), ms);
+}
+
+/// The thread the code runs on, in words: the page's, or the worker's that draws the view.
+pub(crate) fn thread_name() -> &'static str {
+    if js_sys::Reflect::has(&js_sys::global(), &"document".into()).unwrap_or(false) {
+        "the page's own thread"
+    } else {
+        "the drawing worker's own thread"
+    }
 }

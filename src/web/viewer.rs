@@ -36,7 +36,7 @@ use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::planar_update::PlanarUpdate;
 use crate::work::replica::Replica;
 use crate::work::view_command::{PointerChange, ViewCommand};
-use crate::work::view_status::{ShellStatus, ViewStatus};
+use crate::work::view_status::{Device, FrameReport, ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -139,6 +139,9 @@ pub struct Viewer {
     planar_updates: Vec<PlanarUpdate>,
     pointers: Pointers,
     growing: Option<Growing>,
+    /// Whether the page shows something else over the shell (the gallery, the map): growth
+    /// waits.
+    held: bool,
     /// Whether growth advances each frame, and how fast.
     playback: Playback,
     dirty: bool,
@@ -179,35 +182,12 @@ pub struct Viewer {
     writer: FileWriter,
 }
 
-/// What a frame of the viewer gives the page (see [`Viewer::run_frame`]).
+/// What a frame of the viewer gives the page (see [`Viewer::run_frame`]): what a worker would
+/// post of it, and a recording's video frame.
 pub struct ViewFrame {
-    /// Where the file asked for stands (`None`: none is asked for).
-    pub file: Option<FileStage>,
-    /// Whether the shell was drawn.
-    pub drawn: bool,
-    pub status: ViewStatus,
-    /// Words to show (why a preview stopped).
-    pub notice: Option<String>,
-    /// What the planar view is to show.
-    pub planar: Vec<PlanarUpdate>,
+    pub report: FrameReport,
     /// A recording's video frame asked for, drawn (or why it could not be).
     pub recorded: Option<Result<VideoFrame, String>>,
-}
-
-/// The state of the viewer's graphics device.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Device {
-    /// Drawing.
-    Ready,
-    /// Lost (why, in words), and being opened again.
-    Reopening(String),
-    /// Lost (why, in words), and to be opened again on a fresh canvas, which the page makes in
-    /// its canvas's place and gives ([`Viewer::give_canvas`]).
-    NeedsCanvas(String),
-    /// Opened again just now, with this backend.
-    Reopened(&'static str),
-    /// Lost for good: no device could be opened again (why, in words).
-    Gone(String),
 }
 
 impl Viewer {
@@ -229,6 +209,7 @@ impl Viewer {
             planar_updates: Vec::new(),
             pointers: Pointers::default(),
             growing: None,
+            held: false,
             playback: Playback::new(1.0),
             dirty: true,
             pacing: DrawPacing::default(),
@@ -281,6 +262,7 @@ impl Viewer {
             ViewCommand::Grow(rows) => self.grow(rows, GROWTH_BUDGET_MS),
             ViewCommand::Finish => self.finish(),
             ViewCommand::Play(playing) => self.playback.playing = playing,
+            ViewCommand::Hold(held) => self.held = held,
             ViewCommand::Speed(speed) => self.playback.speed = speed,
             ViewCommand::Layout(layout) => {
                 self.layout = layout;
@@ -671,7 +653,7 @@ impl Viewer {
                     self.reopening = None;
                     self.lost_at = None;
                     self.install(reopened);
-                    Device::Reopened(self.renderer.backend())
+                    Device::Reopened(self.renderer.backend().to_string())
                 }
                 Some(Err(e)) => {
                     self.reopening = None;
@@ -801,15 +783,17 @@ impl Viewer {
     /// replies are taken in ([`Self::take`]): works on a file asked for, grows and draws (unless
     /// `held`: the page shows something else over the shell), and says what the page is to
     /// show. Fails with the words to show when the renderer failed.
-    pub fn run_frame(&mut self, held: bool) -> Result<ViewFrame, String> {
+    pub fn run_frame(&mut self) -> Result<ViewFrame, String> {
         let file = self.work_file();
-        let drawn = !held && self.frame(GROWTH_BUDGET_MS)?;
+        let drawn = !self.held && self.frame(GROWTH_BUDGET_MS)?;
         Ok(ViewFrame {
-            file,
-            drawn,
-            status: self.status(),
-            notice: self.notice.take(),
-            planar: std::mem::take(&mut self.planar_updates),
+            report: FrameReport {
+                file,
+                drawn,
+                status: self.status(),
+                notice: self.notice.take(),
+                planar: std::mem::take(&mut self.planar_updates),
+            },
             recorded: self.recorded.take(),
         })
     }

@@ -7,7 +7,8 @@
 //! (copied and decoded) in its `message` event as it comes; one of megabytes is taken in a
 //! frame later, so that reading it and taking it in fall in different frames (see
 //! [`crate::view::draw_pacing`]). Where workers cannot start (or with `workers=0`), one host
-//! runs on the page's own thread a frame's budget at a time, and [`Workers::status`] says so.
+//! runs on the thread of the pool's owner (the page's, or the worker that draws the view) a
+//! frame's budget at a time, and [`Workers::status`] says so.
 //! Nothing here writes on the page: the page shows what these return.
 //!
 //! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
@@ -212,7 +213,7 @@ impl Workers {
             backend: Backend::Local(Box::default()),
             budget_ms,
             worker_growth_ms: budget_ms,
-            status: format!("Growing on the page's own thread: {why}."),
+            status: format!("Growing on {}: {why}.", scope::thread_name()),
         };
         if size == 0 {
             return local("workers are off (workers=0 in the address)");

@@ -20,6 +20,7 @@ use crate::spec::form::Form;
 const EXPORT_BUDGET_MS: f64 = 8.0;
 
 /// Where a file asked for stands.
+#[derive(Clone, Debug, PartialEq)]
 pub enum FileStage {
     /// The implicit shell is being finished before its mesh is written.
     Finishing,
@@ -32,6 +33,7 @@ pub enum FileStage {
 }
 
 /// A file written whole.
+#[derive(Clone, Debug, PartialEq)]
 pub struct File {
     pub what: Download,
     pub name: String,
@@ -40,6 +42,7 @@ pub struct File {
 
 /// What a file holds: bytes of a type, or (the picture, as the browser reads it from the
 /// canvas) the address of its data.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Body {
     Bytes { mime: &'static str, bytes: Vec<u8> },
     Url(String),

@@ -19,5 +19,6 @@ pub mod pool;
 pub mod replica;
 pub mod slotted_edge;
 pub mod view_command;
+pub mod view_message;
 pub mod view_status;
 pub mod wire;

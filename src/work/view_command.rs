@@ -34,6 +34,9 @@ pub enum ViewCommand {
     Finish,
     /// Whether growth advances each frame.
     Play(bool),
+    /// Whether the page shows something else over the shell (the gallery, the map): growth
+    /// waits.
+    Hold(bool),
     /// Rows grown per frame while playing.
     Speed(f64),
     /// One view, or Kawaguchi's four.

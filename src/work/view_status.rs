@@ -4,6 +4,8 @@
 //! page reads nothing else of it: a viewer drawing elsewhere than on the page's thread (a
 //! worker) can send the same.
 
+use super::file_writer::FileStage;
+use super::planar_update::PlanarUpdate;
 use crate::export::estimate::Counts;
 use crate::view::preview::PreviewState;
 
@@ -96,4 +98,33 @@ mod tests {
         };
         assert_eq!(filling.preview_signal(), "filling");
     }
+}
+
+/// What a frame of the viewer gives the page: where a file asked for stands, whether the shell
+/// was drawn, the status, words to show, and what the planar view is to show.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FrameReport {
+    /// Where the file asked for stands (`None`: none is asked for).
+    pub file: Option<FileStage>,
+    pub drawn: bool,
+    pub status: ViewStatus,
+    /// Words to show (why a preview stopped).
+    pub notice: Option<String>,
+    pub planar: Vec<PlanarUpdate>,
+}
+
+/// The state of a viewer's graphics device.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Device {
+    /// Drawing.
+    Ready,
+    /// Lost (why, in words), and being opened again.
+    Reopening(String),
+    /// Lost (why, in words), and to be opened again on a fresh canvas, which the page makes in
+    /// its canvas's place and gives the viewer.
+    NeedsCanvas(String),
+    /// Opened again just now, with this backend ("WebGPU" or "WebGL2").
+    Reopened(String),
+    /// Lost for good: no device could be opened again (why, in words).
+    Gone(String),
 }

@@ -73,7 +73,9 @@ test('a growing shell uploads what it adds, never zeros for the room its buffers
         return allocate.apply(this, arguments);
       };
     });
-    await page.goto(`${base}?workers=1#v=1&preset=murex-cabritii`);
+    // The renderer drawn on the page's thread (`view=page`), where this script can watch its
+    // WebGL calls: in the drawing worker it is the same code.
+    await page.goto(`${base}?workers=1&view=page#v=1&preset=murex-cabritii`);
     await waitForState(page, ['growing']);
     await page.waitForFunction(() => Number(document.body.dataset.rows) >= 12, null, { timeout: 120_000 });
     const { uploads, room } = await page.evaluate(() => ({ uploads: window.__uploads, room: window.__room }));

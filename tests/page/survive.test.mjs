@@ -122,8 +122,9 @@ const LOSSES = [
     name: 'when WebGPU cannot be had again, the shell goes on with WebGL2 on a fresh canvas',
     backend: 'WebGPU',
     lose: async (page) => {
-      // From now on the browser has no WebGPU adapter to give.
-      await page.evaluate(() => { navigator.gpu.requestAdapter = async () => null; });
+      // From now on the browser has no WebGPU adapter to give (on the page's thread and in the
+      // worker that draws the view).
+      await hook(page, 'debug_take_webgpu_away');
       await hook(page, 'debug_destroy_device');
     },
     back: { backend: 'WebGL2', sameCanvas: false, shot: 'webgpu-to-webgl2' },

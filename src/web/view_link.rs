@@ -1,0 +1,392 @@
+//! The page's main viewer, wherever it runs: in a worker that draws on the canvas the page
+//! handed over (`view_worker.rs`), so that the page's thread only handles input and the page,
+//! or, where a module worker cannot draw (no `OffscreenCanvas` in workers, `view=page` in the
+//! address's query), the same [`Viewer`] on the page's own thread. The page talks to both the
+//! same way: commands in, the device's state and each frame's report out.
+
+use super::debug::Loss;
+use super::scope;
+use super::viewer::{ViewFrame, Viewer};
+use super::webcodecs::VideoFrame;
+use crate::work::message::{Reply, Request};
+use crate::work::view_command::ViewCommand;
+use crate::work::view_message::{PoolNews, ViewerNews, decode_news, encode_command};
+use crate::work::view_status::Device;
+use js_sys::{Array, Promise, Reflect, Uint8Array};
+use std::cell::RefCell;
+use std::collections::VecDeque;
+use std::rc::Rc;
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+use wasm_bindgen_futures::JsFuture;
+use web_sys::{ErrorEvent, MessageEvent, OffscreenCanvas, Worker, WorkerOptions, WorkerType};
+
+/// The news a drawing worker sent since the page last looked.
+#[derive(Default)]
+struct Inbox {
+    news: Vec<(ViewerNews, Option<VideoFrame>)>,
+    /// Each change of its device's state, in order, and the last one sent: the page goes
+    /// through every one (saying the device was lost, then that it is back), however many of
+    /// the worker's frames one of the page's takes in.
+    devices: VecDeque<Device>,
+    last_device: Option<Device>,
+    /// The worker failed to load or threw outside the viewer (why).
+    error: Option<String>,
+}
+
+/// The main viewer in a worker, as the page sees it.
+pub struct ViewWorker {
+    worker: Worker,
+    inbox: Rc<RefCell<Inbox>>,
+    backend: String,
+    device: Device,
+    /// It panicked (and the page shows so).
+    crashed: bool,
+    /// A fresh canvas was given since it last asked for one.
+    gave_canvas: bool,
+    _on_message: Closure<dyn FnMut(MessageEvent)>,
+    _on_error: Closure<dyn FnMut(ErrorEvent)>,
+}
+
+/// The page's main viewer.
+pub enum ViewLink {
+    /// On the page's own thread.
+    Here(Box<Viewer>),
+    /// In a worker.
+    Worker(ViewWorker),
+}
+
+/// Whether this page draws its main view in a worker: where module workers can hold an
+/// `OffscreenCanvas`, unless the address asks for the page's thread (`view=page`).
+pub fn in_worker() -> bool {
+    let asked_page = scope::search()
+        .trim_start_matches('?')
+        .split('&')
+        .any(|pair| pair == "view=page");
+    let has = |name: &str| Reflect::has(&js_sys::global(), &name.into()).unwrap_or(false);
+    !asked_page && has("OffscreenCanvas") && has("Worker")
+}
+
+impl ViewWorker {
+    /// Starts the drawing worker on `canvas` (transferred to it) and waits until it has opened
+    /// its renderer: the backend, or why it could not.
+    pub async fn start(
+        canvas: OffscreenCanvas,
+        planar: bool,
+        background: [u8; 3],
+    ) -> Result<Self, String> {
+        let options = WorkerOptions::new();
+        options.set_type(WorkerType::Module);
+        options.set_name("seashells-view");
+        // The page's query goes with it: the worker's pool reads its switches (`workers=N`).
+        let url = format!("./view-worker.js{}", scope::search());
+        let worker = Worker::new_with_options(&url, &options)
+            .map_err(|_| "the drawing worker could not start".to_string())?;
+        let inbox: Rc<RefCell<Inbox>> = Rc::default();
+        let opened: Rc<RefCell<Option<js_sys::Function>>> = Rc::default();
+        let wait = Promise::new(&mut |resolve, _| *opened.borrow_mut() = Some(resolve));
+        let (to, wake) = (Rc::clone(&inbox), Rc::clone(&opened));
+        let on_message = Closure::<dyn FnMut(MessageEvent)>::new(move |e: MessageEvent| {
+            let data = e.data();
+            let bytes = Reflect::get(&data, &"news".into()).unwrap_or(JsValue::UNDEFINED);
+            let frame = Reflect::get(&data, &"frame".into())
+                .ok()
+                .filter(|f| !f.is_undefined())
+                .map(JsCast::unchecked_into::<VideoFrame>);
+            let mut inbox = to.borrow_mut();
+            match decode_news(&Uint8Array::new(&bytes).to_vec()) {
+                Ok(news) => {
+                    if let ViewerNews::Frame { device, .. } = &news
+                        && inbox.last_device.as_ref() != Some(device)
+                    {
+                        inbox.last_device = Some(device.clone());
+                        inbox.devices.push_back(device.clone());
+                    }
+                    let opened = matches!(news, ViewerNews::Opened(_));
+                    inbox.news.push((news, frame));
+                    if opened && let Some(resolve) = wake.borrow_mut().take() {
+                        let _ = resolve.call0(&JsValue::NULL);
+                    }
+                }
+                Err(e) => {
+                    inbox
+                        .error
+                        .get_or_insert(format!("the drawing worker's news was misread: {e}"));
+                }
+            }
+        });
+        let (to, wake) = (Rc::clone(&inbox), Rc::clone(&opened));
+        let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(move |e: ErrorEvent| {
+            e.prevent_default();
+            to.borrow_mut()
+                .error
+                .get_or_insert(format!("the drawing worker failed: {}", e.message()));
+            if let Some(resolve) = wake.borrow_mut().take() {
+                let _ = resolve.call0(&JsValue::NULL);
+            }
+        });
+        worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
+        worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
+        let init = js_sys::Object::new();
+        let _ = Reflect::set(&init, &"canvas".into(), &canvas);
+        let _ = Reflect::set(&init, &"planar".into(), &planar.into());
+        let _ = Reflect::set(
+            &init,
+            &"background".into(),
+            &Uint8Array::from(&background[..]),
+        );
+        let message = js_sys::Object::new();
+        let _ = Reflect::set(&message, &"init".into(), &init);
+        worker
+            .post_message_with_transfer(&message, &Array::of1(&canvas))
+            .map_err(|_| "the canvas could not be handed to the drawing worker".to_string())?;
+        let _ = JsFuture::from(wait).await;
+        let mut this = Self {
+            worker,
+            inbox,
+            backend: String::new(),
+            device: Device::Ready,
+            crashed: false,
+            gave_canvas: false,
+            _on_message: on_message,
+            _on_error: on_error,
+        };
+        if let Some(e) = this.inbox.borrow_mut().error.take() {
+            return Err(e);
+        }
+        let opened = {
+            let mut inbox = this.inbox.borrow_mut();
+            let at = inbox
+                .news
+                .iter()
+                .position(|(n, _)| matches!(n, ViewerNews::Opened(_)));
+            at.map(|at| inbox.news.remove(at).0)
+        };
+        match opened {
+            Some(ViewerNews::Opened(Ok(backend))) => this.backend = backend,
+            Some(ViewerNews::Opened(Err(e))) => return Err(e),
+            _ => return Err("the drawing worker said nothing".into()),
+        }
+        Ok(this)
+    }
+
+    fn post(&self, message: &js_sys::Object, transfer: &Array) {
+        // A worker that cannot take a message has failed: its error event says so.
+        let _ = self.worker.post_message_with_transfer(message, transfer);
+    }
+
+    fn command(&self, command: &ViewCommand) {
+        let bytes = Uint8Array::from(&encode_command(command)[..]).buffer();
+        let message = js_sys::Object::new();
+        let _ = Reflect::set(&message, &"command".into(), &bytes);
+        self.post(&message, &Array::of1(&bytes));
+    }
+
+    fn debug(&self, ask: &str, ms: Option<i32>) {
+        let message = js_sys::Object::new();
+        let _ = Reflect::set(&message, &"debug".into(), &ask.into());
+        if let Some(ms) = ms {
+            let _ = Reflect::set(&message, &"ms".into(), &ms.into());
+        }
+        self.post(&message, &Array::new());
+    }
+}
+
+impl Drop for ViewWorker {
+    fn drop(&mut self) {
+        self.worker.set_onmessage(None);
+        self.worker.set_onerror(None);
+        self.worker.terminate();
+    }
+}
+
+/// What the page takes from its viewer in a frame.
+#[derive(Default)]
+pub struct Taken {
+    /// The viewer's frames since the page's last (one on the page's thread; as many as the
+    /// worker ran, or none, in a worker).
+    pub frames: Vec<ViewFrame>,
+    /// Shells that could not be built or grown: why.
+    pub refused: Vec<String>,
+    /// What the drawing worker's pool said of itself last.
+    pub pool: Option<PoolNews>,
+}
+
+impl ViewLink {
+    /// "WebGPU" or "WebGL2".
+    pub fn backend(&self) -> String {
+        match self {
+            ViewLink::Here(viewer) => viewer.backend().to_string(),
+            ViewLink::Worker(w) => w.backend.clone(),
+        }
+    }
+
+    /// Asks the viewer `command`.
+    pub fn command(&mut self, command: ViewCommand) {
+        match self {
+            ViewLink::Here(viewer) => viewer.command(command),
+            ViewLink::Worker(w) => w.command(&command),
+        }
+    }
+
+    /// The state of the viewer's device (in a worker, as it said last; a panic there is
+    /// shown as the page's own).
+    pub fn survive(&mut self) -> Device {
+        match self {
+            ViewLink::Here(viewer) => viewer.survive(),
+            ViewLink::Worker(w) => {
+                let mut inbox = w.inbox.borrow_mut();
+                if let Some(e) = inbox.error.take() {
+                    inbox.devices.push_back(Device::Gone(e));
+                }
+                if let Some(next) = inbox.devices.pop_front() {
+                    w.device = next;
+                }
+                match w.device.clone() {
+                    // Said once: the frames after it are drawn as usual.
+                    Device::Reopened(backend) => {
+                        w.backend.clone_from(&backend);
+                        w.device = Device::Ready;
+                        Device::Reopened(backend)
+                    }
+                    // Asked once: the worker asks until the canvas reaches it.
+                    Device::NeedsCanvas(why) if !w.gave_canvas => {
+                        w.gave_canvas = true;
+                        Device::NeedsCanvas(why)
+                    }
+                    Device::NeedsCanvas(why) => Device::Reopening(why),
+                    device => {
+                        if !matches!(device, Device::Reopening(_)) {
+                            w.gave_canvas = false;
+                        }
+                        device
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether the viewer panicked in its worker: the page then shows the panic's message, as
+    /// its own panic would, and does nothing more (the page's thread cannot panic with it).
+    pub fn crashed(&mut self) -> bool {
+        let ViewLink::Worker(w) = self else {
+            return false;
+        };
+        if w.crashed {
+            return true;
+        }
+        let inbox = w.inbox.borrow();
+        let Some(message) = inbox.news.iter().find_map(|(n, _)| match n {
+            ViewerNews::Crashed(message) => Some(message.clone()),
+            _ => None,
+        }) else {
+            return false;
+        };
+        drop(inbox);
+        w.crashed = true;
+        web_sys::console::error_1(&message.clone().into());
+        super::page::show_crash(&message);
+        true
+    }
+
+    /// Ends the page's frame: a viewer in a worker runs its own on it, after the commands the
+    /// page's frame sent.
+    pub fn tick(&self) {
+        if let ViewLink::Worker(w) = self {
+            let message = js_sys::Object::new();
+            let _ = Reflect::set(&message, &"tick".into(), &JsValue::TRUE);
+            w.post(&message, &Array::new());
+        }
+    }
+
+    /// The fresh canvas the viewer asked for ([`Device::NeedsCanvas`]).
+    pub fn give_canvas(&mut self, canvas: OffscreenCanvas) {
+        match self {
+            ViewLink::Here(viewer) => viewer.give_canvas(canvas),
+            ViewLink::Worker(w) => {
+                let message = js_sys::Object::new();
+                let _ = Reflect::set(&message, &"canvas".into(), &canvas);
+                w.post(&message, &Array::of1(&canvas));
+            }
+        }
+    }
+
+    /// The viewer's frames since the page's last: on the page's thread, runs one (after the
+    /// page took in the pool's replies); in a worker, what it sent. Fails with the words to
+    /// show when its renderer failed.
+    pub fn frames(&mut self) -> Result<Taken, String> {
+        match self {
+            ViewLink::Here(viewer) => Ok(Taken {
+                frames: vec![viewer.run_frame()?],
+                ..Taken::default()
+            }),
+            ViewLink::Worker(w) => {
+                let mut taken = Taken::default();
+                for (news, video) in w.inbox.borrow_mut().news.drain(..) {
+                    match news {
+                        ViewerNews::Frame {
+                            report: Some(report),
+                            recorded,
+                            ..
+                        } => taken.frames.push(ViewFrame {
+                            report: *report,
+                            recorded: match (recorded, video) {
+                                (Some(Ok(())), Some(frame)) => Some(Ok(frame)),
+                                (Some(Ok(())), None) => {
+                                    Some(Err("the video frame did not arrive".into()))
+                                }
+                                (Some(Err(e)), _) => Some(Err(e)),
+                                (None, _) => None,
+                            },
+                        }),
+                        ViewerNews::Refused(why) => taken.refused.push(why),
+                        ViewerNews::Failed(why) => return Err(why),
+                        ViewerNews::Pool(pool) => taken.pool = Some(pool),
+                        _ => {}
+                    }
+                }
+                Ok(taken)
+            }
+        }
+    }
+
+    /// Takes in a reply of the page's pool about the viewer's shell (on the page's thread; a
+    /// viewer in a worker has a pool of its own). Fails with the words to show.
+    pub fn take(&mut self, request: &Request, reply: Reply) -> Result<(), String> {
+        match self {
+            ViewLink::Here(viewer) => viewer.take(request, reply).inspect_err(|_| viewer.unload()),
+            ViewLink::Worker(_) => Ok(()),
+        }
+    }
+
+    /// The page's pool replaced the worker holding the viewer's sessions (on the page's
+    /// thread).
+    pub fn resume(&mut self, lost: Vec<Request>) {
+        if let ViewLink::Here(viewer) = self {
+            viewer.resume(lost);
+        }
+    }
+
+    /// Test-only (see `debug.rs`): takes the viewer's graphics device away.
+    pub fn take_device(&self, loss: Loss) -> Result<(), String> {
+        match self {
+            ViewLink::Here(viewer) => viewer.take_device(loss),
+            ViewLink::Worker(w) => {
+                match loss {
+                    Loss::Destroy => w.debug("destroy", None),
+                    Loss::Context { restore_after_ms } => w.debug("lose", restore_after_ms),
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// Test-only (see `debug.rs`): passes a hook that acts where the viewer grows (a panic
+    /// while growing, a worker that throws on a preview's rows) to a drawing worker; on the
+    /// page's thread the hook has acted already.
+    pub fn forward_debug(&self, ask: &str) {
+        if let ViewLink::Worker(w) = self {
+            w.debug(ask, None);
+        }
+    }
+}
