@@ -2,8 +2,9 @@
 // run: what one core does (the pattern solvers' rates, one preset per model, and the Murex
 // polygonized whole at 128³) on a worker's thread and on the page's; the page's own script
 // time per frame while the Murex grows (50th and 99th percentiles over at least 200 frames
-// of growth, each frame's wall time and its thread's processor time from a trace; the page on
-// its own thread, `workers=0`, is how the page worked before); the
+// of growth, each frame's wall time and its thread's processor time from a trace), with the
+// view drawn in the drawing worker and, as before it, on the page's thread (`view=page`; with
+// `workers=0` too, how the page worked before workers); the
 // Murex finished at 256³ with 1 and W workers; and every gallery picture on the page's thread
 // and with 1 and W workers. W is the pool this
 // machine gets (`navigator.hardwareConcurrency − 1`, at least 1) and 2 besides, so that the
@@ -15,13 +16,25 @@
 // `node tests/page/bench-workers.mjs frames [DIR …]` gives only the frame figures, for each
 // directory holding a built page (`www` unless given; say, another commit's `www` beside
 // this one's), served side by side and measured in turns (ROUNDS, 2 unless set, of FRAMES
-// frames, 100 unless set, each, with WORKERS workers: `0,1` unless set) in one browser on
+// frames, 100 unless set, each, with WORKERS workers, `1` unless set, and the view drawn in
+// each of VIEWS, `worker,page` unless set: in the drawing worker, on the page's thread) in one browser on
 // BACKEND (`WebGL2` unless set, or `WebGPU`), each round beside a plain script's frames
 // (`floor/index.html`: a reply taken into a GPU buffer, a request posted, the progress moved,
 // 318,402 triangles drawn with raw WebGL2), the least a page that draws on its own thread
 // spends. `make bench` sets the same baseline beside the page's WebGL2 frames.
 import { launch, open, pageThread, session, trace, waitForState } from './browser.mjs';
 import { serve } from './serve.mjs';
+
+/**
+ * The page's frames measured by `make bench`: as the page worked before workers, the view drawn
+ * on the page's thread beside one worker (before the drawing worker), and drawn in the drawing
+ * worker with one worker in its pool (the page as it is).
+ */
+const FRAME_RUNS = [
+  ['workers=0&view=page', "drawn and grown on the page's thread"],
+  ['workers=1&view=page', "drawn on the page's thread, one worker"],
+  ['workers=1', 'drawn in the drawing worker, one worker'],
+];
 
 /** Wraps requestAnimationFrame before the page loads, to time each frame's callback while the shell grows. */
 function timeFrames() {
@@ -90,7 +103,7 @@ function framesOf(events) {
  * wrapper in the page times it; `thread` is its thread's processor time from a trace, and
  * `script` that with the thread's other script tasks since the frame before (see `traceFrames`).
  */
-async function frameScript(browser, base, workers, least = 200, seconds = 600) {
+async function frameScript(browser, base, query, least = 200, seconds = 600) {
   const ms = [];
   const thread = [];
   const script = [];
@@ -99,7 +112,7 @@ async function frameScript(browser, base, workers, least = 200, seconds = 600) {
   while (ms.length < least && Date.now() - started < seconds * 1000) {
     const page = await browser.newPage({ viewport: { width: 900, height: 700 } });
     await page.addInitScript(timeFrames);
-    await page.goto(`${base}?workers=${workers}#v=1&preset=murex-cabritii`);
+    await page.goto(`${base}?${query}#v=1&preset=murex-cabritii`);
     await waitForState(page, ['growing'], 300_000);
     const traced = await traceFrames(page, async () => {
       await page.evaluate(() => { window.__frameMs = []; });
@@ -145,7 +158,7 @@ const frameLine = (f) => `p50 ${f.p50.toFixed(2)} ms, p99 ${f.p99.toFixed(2)} ms
 async function plainScript(browser, least) {
   const server = await serve(new URL('floor/', import.meta.url).pathname);
   try {
-    return await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, 1, least);
+    return await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, 'workers=1', least);
   } finally {
     server.close();
   }
@@ -240,21 +253,23 @@ export async function benchWorkers() {
       const speed = t.unit === 'ms' ? t.value / w.value : w.value / t.value;
       console.log(`one core, ${what}: page's thread ${t.value} ${t.unit}${spread(t)}, a worker ${w.value} ${w.unit}${spread(w)} (the worker at × ${speed.toFixed(2)} the page's thread's speed)`);
     }
-    for (const workers of [0, 1]) {
-      const f = await frameScript(browser, base, workers);
-      console.log(`Murex growing, page script per frame, WebGL2, workers=${workers}: ${frameLine(f)}`);
+    for (const [query, what] of FRAME_RUNS) {
+      const f = await frameScript(browser, base, query);
+      console.log(`Murex growing, page script per frame, WebGL2, ${what} (${query}): ${frameLine(f)}`);
     }
     console.log(`beside it, ${PLAIN}: ${frameLine(await plainScript(browser, 200)).replace('rows grown', 'frames')}`);
     const webgpu = await launch('WebGPU');
     try {
-      const f = await frameScript(webgpu, base, 1);
-      console.log(`Murex growing, page script per frame, WebGPU, workers=1: ${frameLine(f)}`);
+      for (const [query, what] of FRAME_RUNS.slice(1)) {
+        const f = await frameScript(webgpu, base, query);
+        console.log(`Murex growing, page script per frame, WebGPU, ${what} (${query}): ${frameLine(f)}`);
+      }
     } finally {
       await webgpu.close();
     }
     // The worker's growth budget per request (`grow-budget=N`): fewer round trips against a
     // change of value waiting behind the growth under way for as long.
-    const page0 = await murexGrowth(browser, base, 'workers=0');
+    const page0 = await murexGrowth(browser, base, 'workers=0&view=page');
     console.log(`Murex growing at full speed on the page's thread: ${page0.toFixed(2)} rows/s`);
     for (const budget of [12, 24, 48]) {
       const rate = await murexGrowth(browser, base, `workers=1&grow-budget=${budget}`);
@@ -304,7 +319,7 @@ export async function benchGallery(baseline) {
  * the same browser: on a shared machine the load changes within minutes, and turns spread it
  * over every build alike.
  */
-export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1], backend = 'WebGL2') {
+export async function benchFrames(roots, rounds = 2, least = 100, queries = ['workers=1', 'workers=1&view=page'], backend = 'WebGL2') {
   const servers = await Promise.all(roots.map((root) => serve(root)));
   const browser = await launch(backend);
   try {
@@ -313,10 +328,10 @@ export async function benchFrames(roots, rounds = 2, least = 100, sizes = [0, 1]
     const record = (key, f) => all.set(key, [...(all.get(key) ?? []), f]);
     for (let round = 0; round < rounds; round += 1) {
       for (const [i, server] of servers.entries()) {
-        for (const workers of sizes) {
-          const f = await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, workers, least);
-          console.log(`round ${round + 1}, ${roots[i]}, workers=${workers}: ${frameLine(f)}`);
-          record(`${roots[i]}, workers=${workers}`, f);
+        for (const query of queries) {
+          const f = await frameScript(browser, `http://127.0.0.1:${server.address().port}/`, query, least);
+          console.log(`round ${round + 1}, ${roots[i]}, ${query}: ${frameLine(f)}`);
+          record(`${roots[i]}, ${query}`, f);
         }
       }
       const f = await plainScript(browser, least);
@@ -345,7 +360,9 @@ if (import.meta.url === `file://${process.argv[1]}`) {
     const roots = process.argv.slice(3);
     await benchFrames(roots.length > 0 ? roots : [new URL('../../www/', import.meta.url).pathname],
       Number(process.env.ROUNDS ?? 2), Number(process.env.FRAMES ?? 100),
-      (process.env.WORKERS ?? '0,1').split(',').map(Number), process.env.BACKEND ?? 'WebGL2');
+      (process.env.WORKERS ?? '1').split(',').flatMap((n) => (process.env.VIEWS ?? 'worker,page').split(',')
+        .map((view) => `workers=${n}${view === 'page' ? '&view=page' : ''}`)),
+      process.env.BACKEND ?? 'WebGL2');
   } else {
     await benchWorkers();
   }
