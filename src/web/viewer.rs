@@ -1,5 +1,7 @@
-//! A viewer: one canvas and its renderer, a shell growing on it, optionally its planar pattern,
-//! and the camera the pointer turns. Loading another spec restarts growth without reloading the
+//! A viewer: one canvas (an `OffscreenCanvas` a canvas of the page handed its drawing to) and
+//! its renderer, a shell growing on it, what its planar pattern shows, and the camera the
+//! pointer turns. It touches nothing of the page, so that it runs in the worker that draws the
+//! main view (`view_worker.rs`) as well as on the page's thread (`view_link.rs`). Loading another spec restarts growth without reloading the
 //! page. The page's main view is one viewer, whose camera follows the growing shell; the
 //! gallery's pictures are drawn by another, framed on the whole shell. While a pattern slider
 //! is dragged, the planar view previews the whole pattern of its values instead. When the
@@ -781,8 +783,8 @@ impl Viewer {
 
     /// One animation frame, once the device is ready ([`Self::survive`]) and the shell's
     /// replies are taken in ([`Self::take`]): works on a file asked for, grows and draws (unless
-    /// `held`: the page shows something else over the shell), and says what the page is to
-    /// show. Fails with the words to show when the renderer failed.
+    /// held, [`ViewCommand::Hold`]: the page shows something else over the shell), and says
+    /// what the page is to show. Fails with the words to show when the renderer failed.
     pub fn run_frame(&mut self) -> Result<ViewFrame, String> {
         let file = self.work_file();
         let drawn = !self.held && self.frame(GROWTH_BUDGET_MS)?;
