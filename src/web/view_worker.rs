@@ -4,8 +4,8 @@
 //! the page's animation frames ends with a tick, on which the worker keeps the device, takes in
 //! its pool's replies, runs the viewer's frame and posts the news (`work::view_message`), a
 //! recording's `VideoFrame` transferred beside it: the page's thread only reads the news, the
-//! growing shell's bytes never reach it. (The worker's own `requestAnimationFrame` stops when
-//! the canvas it first drew on leaves the page, as after a lost device; the page's frames go
+//! growing shell's bytes never reach it. (Driven by its own `requestAnimationFrame`, the worker
+//! was seen to stop drawing after a lost context's canvas was replaced; the page's frames go
 //! on.)
 //!
 //! What the page sends, as plain objects: `{init: {canvas, planar, background}}` once, with the
