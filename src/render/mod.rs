@@ -4,6 +4,7 @@
 //! grid, and a quad on the ground under what has grown for the contact shadow.
 
 mod gpu;
+mod in_flight;
 mod pattern_texture;
 mod pipeline;
 mod shell_buffers;
@@ -19,6 +20,7 @@ use crate::view::panes::{MAX_PANES, Pane};
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use gpu::Gpu;
+use in_flight::InFlight;
 use pattern_texture::PatternTexture;
 use pipeline::{DEPTH_FORMAT, Pipelines};
 use shell_buffers::MeshBuffers;
@@ -145,6 +147,8 @@ pub struct Renderer {
     shell: Option<Shell>,
     background: wgpu::Color,
     background_linear: [f32; 3],
+    /// Frames handed to the GPU and not yet finished.
+    in_flight: InFlight,
 }
 
 fn create_targets(
@@ -206,7 +210,23 @@ impl Renderer {
             shell: None,
             background: wgpu::Color::BLACK,
             background_linear: [0.0; 3],
+            in_flight: InFlight::default(),
         })
+    }
+
+    /// Whether the GPU has finished enough of the frames handed to it for another to be drawn
+    /// (see `in_flight.rs`): a frame drawn now would otherwise only wait in a queue behind them.
+    pub fn ready(&self) -> bool {
+        // Polling only looks at the GPU's fences; a failure to poll is a lost device, which the
+        // watch reports.
+        let _ = self.gpu.device.poll(wgpu::PollType::Poll);
+        self.in_flight.has_room()
+    }
+
+    /// Frames the GPU has finished drawing since this renderer opened: none after a while of
+    /// drawing means nothing reaches the screen.
+    pub fn frames_finished(&self) -> u64 {
+        self.in_flight.finished()
     }
 
     /// "WebGPU" or "WebGL2".
@@ -486,6 +506,7 @@ impl Renderer {
             }
         }
         self.gpu.queue.submit([encoder.finish()]);
+        self.in_flight.submitted(&self.gpu.queue);
         self.gpu.queue.present(frame);
         Ok(())
     }

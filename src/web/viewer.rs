@@ -862,7 +862,9 @@ impl Viewer {
         else {
             return Ok(false);
         };
-        if pacing == FrameDraw::Defer {
+        // After megabytes of uploads, or while the GPU still works on earlier frames, the
+        // drawing waits (the uploads go to the GPU meanwhile).
+        if pacing == FrameDraw::Defer || !self.renderer.ready() {
             self.renderer.flush();
             return Ok(false);
         }
