@@ -10,14 +10,14 @@ use seashells_core::generator::{Advance, Generator};
 use seashells_core::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use seashells_core::pattern::texture_layout::TextureLayout;
 use seashells_core::presets;
-use seashells_core::render::{Renderer, ShellLook};
+use seashells_core::render::{Canvas, Renderer, ShellLook};
 use seashells_core::shape::LineGrid;
 use seashells_core::share::presentation::Layout;
 use seashells_core::view::camera::OrbitCamera;
 use seashells_core::view::panes::panes;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
-use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
+use web_sys::{HtmlCanvasElement, OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
@@ -27,14 +27,32 @@ fn canvas(size: u32) -> OffscreenCanvas {
     OffscreenCanvas::new(size, size).unwrap()
 }
 
+/// A canvas element of `size` × `size` pixels, not in any page: what the page draws on from
+/// its own thread where an offscreen canvas gives no WebGL2 (WebKit before Safari 17).
+fn element(size: u32) -> HtmlCanvasElement {
+    let canvas: HtmlCanvasElement = web_sys::window()
+        .unwrap()
+        .document()
+        .unwrap()
+        .create_element("canvas")
+        .unwrap()
+        .dyn_into()
+        .unwrap();
+    canvas.set_width(size);
+    canvas.set_height(size);
+    canvas
+}
+
 /// The RGBA pixels of a `size`-wide square of `canvas` from (`x`, `y`), read as drawn.
-fn pixels(canvas: &OffscreenCanvas, x: u32, y: u32, size: u32) -> Vec<u8> {
-    let copy = self::canvas(canvas.width());
+fn pixels(canvas: &Canvas, x: u32, y: u32, size: u32) -> Vec<u8> {
+    let copy = self::canvas(canvas.size().0);
     let context: OffscreenCanvasRenderingContext2d =
         copy.get_context("2d").unwrap().unwrap().dyn_into().unwrap();
-    context
-        .draw_image_with_offscreen_canvas(canvas, 0.0, 0.0)
-        .unwrap();
+    match canvas {
+        Canvas::Offscreen(c) => context.draw_image_with_offscreen_canvas(c, 0.0, 0.0),
+        Canvas::Element(c) => context.draw_image_with_html_canvas_element(c, 0.0, 0.0),
+    }
+    .unwrap();
     let [x, y, size] = [x, y, size].map(f64::from);
     context
         .get_image_data(x, y, size, size)
@@ -45,7 +63,7 @@ fn pixels(canvas: &OffscreenCanvas, x: u32, y: u32, size: u32) -> Vec<u8> {
 
 /// Share of pixels that are not the black background in the square of `size` at (x, y) of
 /// the canvas, and the number of distinct grey levels among them (a lit surface has many).
-fn coverage_in(canvas: &OffscreenCanvas, x: u32, y: u32, size: u32) -> (f64, usize) {
+fn coverage_in(canvas: &Canvas, x: u32, y: u32, size: u32) -> (f64, usize) {
     let data = pixels(canvas, x, y, size);
     let mut lit = 0;
     let mut shades = std::collections::BTreeSet::new();
@@ -59,13 +77,10 @@ fn coverage_in(canvas: &OffscreenCanvas, x: u32, y: u32, size: u32) -> (f64, usi
     (f64::from(lit) / f64::from(size * size), shades.len())
 }
 
-/// A renderer on a new square canvas of `size`, with `id`'s shell grown whole and loaded, a
-/// camera framing it, and its bounds.
-async fn grown(id: &str, size: u32) -> (OffscreenCanvas, Renderer, OrbitCamera, Bounds) {
-    let canvas = canvas(size);
-    let mut renderer = Renderer::new(canvas.clone())
-        .await
-        .expect("a renderer on WebGL2");
+/// A renderer on `canvas`, with `id`'s shell grown whole and loaded, a camera framing it,
+/// and its bounds.
+async fn grown(id: &str, canvas: Canvas) -> (Canvas, Renderer, OrbitCamera, Bounds) {
+    let mut renderer = Renderer::new(&canvas).await.expect("a renderer on WebGL2");
     assert_eq!(renderer.backend(), "WebGL2");
     let preset = presets::preset(id).expect("preset");
     let mut generator = Generator::new(&preset.spec).expect("generator");
@@ -89,7 +104,8 @@ async fn grown(id: &str, size: u32) -> (OffscreenCanvas, Renderer, OrbitCamera, 
 
 #[wasm_bindgen_test]
 async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
-    let (canvas, mut renderer, camera, bounds) = grown("turbinate", 256).await;
+    let (canvas, mut renderer, camera, bounds) =
+        grown("turbinate", Canvas::Offscreen(canvas(256))).await;
     renderer
         .draw(&panes(Layout::Single, &camera, &bounds, renderer.aspect()))
         .expect("a frame");
@@ -99,9 +115,47 @@ async fn renderer_initialises_on_webgl2_and_draws_a_lit_shell() {
     assert_eq!(renderer.failure(), None);
 }
 
+/// Waits for the browser's next animation frame (a turn of its event loop, after which the GPU
+/// may report work done).
+async fn next_frame() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        web_sys::window()
+            .unwrap()
+            .request_animation_frame(&resolve)
+            .unwrap();
+    });
+    wasm_bindgen_futures::JsFuture::from(promise).await.unwrap();
+}
+
+#[wasm_bindgen_test]
+async fn the_renderer_draws_on_a_canvas_element_and_counts_the_frames_the_gpu_finished() {
+    let (canvas, mut renderer, camera, bounds) =
+        grown("diskoid", Canvas::Element(element(192))).await;
+    assert_eq!(renderer.frames_finished(), 0);
+    let frame = panes(Layout::Single, &camera, &bounds, renderer.aspect());
+    renderer.draw(&frame).expect("a frame");
+    let (share, shades) = coverage_in(&canvas, 0, 0, 192);
+    assert!(share > 0.05, "the shell covers {share:.3} of the element");
+    assert!(shades > 20, "only {shades} grey levels: not lit");
+    // Two frames may wait for the GPU, not three.
+    renderer.draw(&frame).expect("a second frame");
+    let mut waited = 0;
+    while !renderer.ready() {
+        assert!(
+            waited < 600,
+            "the GPU finished no frame in 600 animation frames"
+        );
+        next_frame().await;
+        waited += 1;
+    }
+    assert!(renderer.frames_finished() >= 1);
+    assert_eq!(renderer.failure(), None);
+}
+
 #[wasm_bindgen_test]
 async fn four_views_draw_the_shell_in_every_quarter() {
-    let (canvas, mut renderer, camera, bounds) = grown("kawaguchi-horn", 256).await;
+    let (canvas, mut renderer, camera, bounds) =
+        grown("kawaguchi-horn", Canvas::Offscreen(canvas(256))).await;
     renderer
         .draw(&panes(Layout::Four, &camera, &bounds, renderer.aspect()))
         .expect("a frame");
@@ -120,8 +174,8 @@ async fn four_views_draw_the_shell_in_every_quarter() {
 }
 
 /// The colour at the centre of the canvas.
-fn centre(canvas: &OffscreenCanvas) -> [u8; 3] {
-    let half = canvas.width() / 2;
+fn centre(canvas: &Canvas) -> [u8; 3] {
+    let half = canvas.size().0 / 2;
     let data = pixels(canvas, half, half, 1);
     [data[0], data[1], data[2]]
 }
@@ -157,8 +211,8 @@ async fn the_renderer_paints_the_pattern_in_the_colours_the_exporters_give() {
             rgba: &rgba,
         }),
     );
-    let canvas = canvas(64);
-    let mut renderer = Renderer::new(canvas.clone()).await.expect("a renderer");
+    let canvas = Canvas::Offscreen(canvas(64));
+    let mut renderer = Renderer::new(&canvas).await.expect("a renderer");
     renderer.set_background([0, 0, 0]);
     // A square facing the camera, every corner at the same pattern coordinates, so the
     // pattern paints it in one colour.

@@ -1,9 +1,10 @@
-//! The browser's graphics device on one (offscreen) canvas: WebGPU when an adapter comes, WebGL2
+//! The browser's graphics device on one canvas (an element or an offscreen canvas): WebGPU when an adapter comes, WebGL2
 //! otherwise, the canvas configured in an 8-bit colour format, and a watch that records a lost
 //! device (WebGPU's device-lost callback, WebGL's `webglcontextlost` and
 //! `webglcontextrestored` events) apart from an uncaptured error, so that the page can open a
 //! device again after the one and say the other in words.
 
+use super::Canvas;
 use std::sync::{Arc, Mutex};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::Closure;
@@ -40,9 +41,10 @@ pub(super) struct Watch {
 
 impl Gpu {
     /// Opens a device on `canvas` and configures the canvas for it.
-    pub(super) async fn open(canvas: web_sys::OffscreenCanvas) -> Result<Self, String> {
-        let (width, height) = (canvas.width().max(1), canvas.height().max(1));
-        let (surface, adapter, backend) = adapter(canvas.clone()).await?;
+    pub(super) async fn open(canvas: &Canvas) -> Result<Self, String> {
+        let (width, height) = canvas.size();
+        let (width, height) = (width.max(1), height.max(1));
+        let (surface, adapter, backend) = adapter(canvas).await?;
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("seashells"),
@@ -55,7 +57,7 @@ impl Gpu {
             .map_err(|e| format!("The {backend} device could not be opened ({e})."))?;
         let watch = watch(&device);
         let context_events = if backend == "WebGL2" {
-            watch_context(&canvas, &watch)
+            watch_context(canvas, &watch)
         } else {
             Vec::new()
         };
@@ -85,7 +87,7 @@ impl Gpu {
 
 /// The canvas's surface and an adapter for it, with the backend's name.
 async fn adapter(
-    canvas: web_sys::OffscreenCanvas,
+    canvas: &Canvas,
 ) -> Result<(wgpu::Surface<'static>, wgpu::Adapter, &'static str), String> {
     let instance = wgpu::util::new_instance_with_webgpu_detection(wgpu::InstanceDescriptor {
         backends: wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL,
@@ -93,7 +95,7 @@ async fn adapter(
     })
     .await;
     let surface = instance
-        .create_surface(wgpu::SurfaceTarget::OffscreenCanvas(canvas))
+        .create_surface(canvas.surface_target())
         .map_err(|e| {
             format!("This browser offers neither WebGPU nor WebGL2 on this page ({e}).")
         })?;
@@ -136,7 +138,7 @@ fn watch(device: &wgpu::Device) -> Arc<Mutex<Watch>> {
 
 /// An event listener on a canvas, removed when dropped (its closure goes with it).
 pub(super) struct CanvasListener {
-    canvas: web_sys::OffscreenCanvas,
+    canvas: web_sys::EventTarget,
     kind: &'static str,
     closure: Closure<dyn FnMut(web_sys::Event)>,
 }
@@ -152,10 +154,8 @@ impl Drop for CanvasListener {
 
 /// Watches a WebGL2 canvas for the browser taking its context away, and giving it back. The
 /// loss is accepted (`preventDefault`), which asks the browser to restore the context later.
-fn watch_context(
-    canvas: &web_sys::OffscreenCanvas,
-    watch: &Arc<Mutex<Watch>>,
-) -> Vec<CanvasListener> {
+fn watch_context(canvas: &Canvas, watch: &Arc<Mutex<Watch>>) -> Vec<CanvasListener> {
+    let canvas = canvas.events();
     let listen = |kind: &'static str, seen: fn(&mut Watch)| {
         let watch = Arc::clone(watch);
         let closure = Closure::<dyn FnMut(web_sys::Event)>::new(move |event: web_sys::Event| {

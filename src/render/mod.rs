@@ -3,6 +3,7 @@
 //! the canvas (one view, or Kawaguchi's four), the material's strengths or the line drawing's
 //! grid, and a quad on the ground under what has grown for the contact shadow.
 
+mod canvas;
 mod gpu;
 mod in_flight;
 mod pattern_texture;
@@ -18,6 +19,7 @@ use crate::spec::material::{Drawing, MaterialSpec};
 use crate::view::camera::display_from_shell;
 use crate::view::panes::{MAX_PANES, Pane};
 use bytemuck::{Pod, Zeroable};
+pub use canvas::Canvas;
 use glam::DVec3;
 use gpu::Gpu;
 use in_flight::InFlight;
@@ -182,7 +184,7 @@ fn create_targets(
 
 impl Renderer {
     /// Sets up wgpu on the canvas: WebGPU if an adapter comes, WebGL2 otherwise.
-    pub async fn new(canvas: web_sys::OffscreenCanvas) -> Result<Self, String> {
+    pub async fn new(canvas: &Canvas) -> Result<Self, String> {
         let gpu = Gpu::open(canvas).await?;
         let device = &gpu.device;
         let layout = pipeline::bind_group_layout(device, GLOBALS_SIZE);

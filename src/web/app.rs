@@ -29,7 +29,7 @@ use super::planar::PlanarView;
 use super::record::{self, Recording, Step, Support};
 use super::share;
 use super::shown_size::ShownSize;
-use super::view_canvas::ViewCanvas;
+use super::view_canvas::replace;
 use super::view_link::{Taken, ViewLink};
 use super::webcodecs::VideoFrame;
 use super::workers::Workers;
@@ -166,7 +166,7 @@ impl App {
             recoveries: 0,
             playing: false,
             progress_shown: (0, 0, f64::NEG_INFINITY),
-            support: Rc::new(RefCell::new(Support::Checking)),
+            support: Rc::new(RefCell::new(Support::Unasked)),
             recording: None,
         }
     }
@@ -522,7 +522,10 @@ impl App {
             return;
         }
         let support = self.support.borrow().clone();
-        if matches!(support, Support::Checking | Support::Nothing(_)) {
+        if matches!(
+            support,
+            Support::Unasked | Support::Checking | Support::Nothing(_)
+        ) {
             set_text("record-status", &support.note());
             return;
         }
@@ -651,10 +654,10 @@ impl App {
         let device = match self.viewer.survive() {
             Device::NeedsCanvas(reason) => {
                 // The canvas cannot be drawn on again: a fresh copy takes its place.
-                let fresh = ViewCanvas::replace("shell")?;
-                self.viewer.give_canvas(fresh.offscreen);
-                self.canvas_replaced(&fresh.element);
-                self.replaced_canvas = Some(fresh.element);
+                let fresh = replace("shell")?;
+                self.viewer.give_canvas(fresh.clone())?;
+                self.canvas_replaced(&fresh);
+                self.replaced_canvas = Some(fresh);
                 Device::Reopening(reason)
             }
             device => device,

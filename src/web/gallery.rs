@@ -1,16 +1,17 @@
 //! The gallery: every preset in species/, grouped by where it comes from, each a card with its
 //! name, the figure it reproduces, a line of description and a picture of the shell. The cards
 //! are plain links to the preset's fragment, so the browser's history does the navigation; the
-//! shells are grown whole by the pool of workers and drawn by a second viewer on a small
-//! off-screen canvas as they come, each card's picture a PNG read back from it.
+//! shells are grown whole by the pool of workers and drawn by a second viewer on a small canvas
+//! laid out off the screen as they come, each card's picture a PNG read back from it.
 
 use super::clock::now;
 use super::debug::Loss;
 use super::dom::{append, attr, create, typed};
-use super::view_canvas::{ViewCanvas, object_url};
+use super::view_canvas::{object_url, replace};
 use super::viewer::Viewer;
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
+use crate::render::Canvas;
 use crate::share::link;
 use crate::spec::ShellSpec;
 use crate::work::message::{Request, WholeShell};
@@ -142,8 +143,8 @@ impl Pictures {
         if matches!(device, Device::NeedsCanvas(_)) {
             // The canvas cannot be drawn on again: a fresh copy takes its place (or, failing
             // that, the pictures are drawn no more).
-            match ViewCanvas::replace("picture-canvas") {
-                Ok(fresh) => self.viewer.give_canvas(fresh.offscreen),
+            match replace("picture-canvas") {
+                Ok(fresh) => self.viewer.give_canvas(Canvas::Element(fresh)),
                 Err(e) => device = Device::Gone(e),
             }
         }

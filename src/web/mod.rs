@@ -26,11 +26,12 @@ mod worker_host;
 mod workers;
 
 use crate::export::Download;
+use crate::render::Canvas;
 use crate::work::view_command::{PointerChange, ViewCommand};
 use app::App;
+use record::Support;
 use std::cell::RefCell;
 use std::rc::Rc;
-use view_canvas::ViewCanvas;
 use view_link::{ViewLink, ViewWorker};
 use viewer::Viewer;
 use wasm_bindgen::JsCast;
@@ -95,10 +96,9 @@ pub async fn start() -> Result<(), JsValue> {
     let workers = Rc::new(RefCell::new(workers));
     let viewers = async {
         let shared = || Rc::clone(&workers);
-        let offscreen = |id| Ok::<_, String>(ViewCanvas::hand_over(canvas(id)?)?.offscreen);
-        let main = main_viewer(offscreen("shell")?, background, shared()).await?;
+        let main = main_viewer(canvas("shell")?, background, shared()).await?;
         let pictures = Viewer::new(
-            offscreen("picture-canvas")?,
+            Canvas::Element(canvas("picture-canvas")?),
             false,
             background,
             false,
@@ -143,48 +143,72 @@ pub async fn start() -> Result<(), JsValue> {
         }));
     app.borrow_mut().route();
     listen(&app)?;
-    probe_encoders(&app);
+    app.borrow().show_support();
     run(app);
     Ok(())
 }
 
-/// The main viewer, on `canvas`: in a worker where one can draw (see `view_link.rs`), else,
-/// or when the worker cannot start or open a renderer, on the page's thread (on a fresh copy of
-/// the canvas, if this one was handed to the worker).
+/// The main viewer, on the canvas `element`: in a worker where one draws (see
+/// `view_link.rs`), else, or when the worker cannot start or open a renderer on the canvas
+/// handed to it (WebKit's offscreen canvases give no WebGL2), on the page's thread, on the
+/// element itself (a fresh copy of it, if it was handed to the worker). The page says where,
+/// in words; the worker's reason goes to the console.
 async fn main_viewer(
-    canvas: web_sys::OffscreenCanvas,
+    element: HtmlCanvasElement,
     background: [u8; 3],
     workers: Rc<RefCell<workers::Workers>>,
 ) -> Result<ViewLink, String> {
-    let canvas = if view_link::in_worker() {
-        match ViewWorker::start(canvas, true, background).await {
+    let element = if view_link::in_worker() {
+        let started = match view_canvas::hand_over(&element) {
+            Ok(offscreen) => ViewWorker::start(offscreen, true, background).await,
+            Err(e) => Err(e),
+        };
+        match started {
             Ok(worker) => return Ok(ViewLink::Worker(worker)),
             Err(e) => {
+                web_sys::console::info_1(
+                    &format!("The view is drawn on the page's thread: {e}").into(),
+                );
                 let status = format!(
-                    "{} The view is drawn on the page's thread: {e}.",
+                    "{} The view is drawn on the page's thread (this browser cannot draw it in \
+                     a worker).",
                     workers.borrow().status()
                 );
                 page::set_text("workers-status", &status);
-                ViewCanvas::replace("shell")?.offscreen
+                view_canvas::replace("shell")?
             }
         }
     } else {
-        canvas
+        element
     };
-    let viewer = Viewer::new(canvas, true, background, true, workers).await?;
+    let viewer = Viewer::new(Canvas::Element(element), true, background, true, workers).await?;
     Ok(ViewLink::Here(Box::new(viewer)))
 }
 
-/// Asks the browser what it can record video with, and shows the answer.
-fn probe_encoders(app: &Shared) {
-    let support = app.borrow().support();
-    app.borrow().show_support();
+/// Record: records the growth; the first time, asks the browser what it can record video
+/// with, shows the answer, and records once it has one.
+/// (After a panic the app stays borrowed, and the click does nothing.)
+fn record(app: &Shared) {
+    let Ok(mut held) = app.try_borrow_mut() else {
+        return;
+    };
+    let support = held.support();
+    if *support.borrow() != Support::Unasked {
+        held.record();
+        return;
+    }
+    *support.borrow_mut() = Support::Checking;
+    held.show_support();
+    drop(held);
     let app = Rc::downgrade(app);
     wasm_bindgen_futures::spawn_local(async move {
         let found = record::probe().await;
         *support.borrow_mut() = found;
-        if let Some(app) = app.upgrade() {
-            app.borrow().show_support();
+        if let Some(app) = app.upgrade()
+            && let Ok(mut app) = app.try_borrow_mut()
+        {
+            app.show_support();
+            app.record();
         }
     });
 }
@@ -337,7 +361,12 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
     on_click("copy-link", app, App::copy_link)?;
     on_click("copy-embed", app, App::copy_embed)?;
-    on_click("record", app, App::record)?;
+    if let Some(button) = page::element("record") {
+        let shared = Rc::clone(app);
+        let closure = Closure::<dyn FnMut()>::new(move || record(&shared));
+        button.add_event_listener_with_callback("click", closure.as_ref().unchecked_ref())?;
+        closure.forget();
+    }
     on_click("record-cancel", app, |a| {
         a.stop_recording("you cancelled it")
     })?;

@@ -35,9 +35,13 @@ const RECORDER_TYPES: [&str; 4] = [
     "video/mp4",
 ];
 
-/// What this browser can record with.
+/// What this browser can record with. The browser is asked when Record is first pressed, not
+/// when the page opens: asking wakes the browser's media stack, which costs every visitor
+/// time, and WebKitGTK 2.50 on Debian 12 crashes the page's process as soon as it is asked.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Support {
+    /// Not asked yet.
+    Unasked,
     /// Not known yet (the encoders are being asked).
     Checking,
     /// WebCodecs with this codec, frame-exact.
@@ -52,6 +56,7 @@ impl Support {
     /// The page's signal (`data-encoder`).
     pub fn signal(&self) -> &str {
         match self {
+            Support::Unasked => "unasked",
             Support::Checking => "checking",
             Support::WebCodecs(codec) => codec.name(),
             Support::MediaRecorder(_) => "MediaRecorder",
@@ -62,6 +67,11 @@ impl Support {
     /// What the page says about recording here, before anything is recorded.
     pub fn note(&self) -> String {
         match self {
+            Support::Unasked => {
+                "Records every frame of the growth; Record first asks the browser for a video \
+                 encoder."
+                    .into()
+            }
             Support::Checking => "Asking the browser for a video encoder…".into(),
             Support::WebCodecs(codec) => format!(
                 "Records every frame of the growth, however slow this machine: {} in WebM.",

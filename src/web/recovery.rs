@@ -7,10 +7,9 @@
 //! so that it can draw in a worker. The shell itself lives outside the renderer and is uploaded
 //! again by the viewer.
 
-use crate::render::Renderer;
+use crate::render::{Canvas, Renderer};
 use std::cell::RefCell;
 use std::rc::Rc;
-use web_sys::OffscreenCanvas;
 
 /// Milliseconds a lost WebGL context is given to come back before a fresh canvas is used.
 pub const RESTORE_WAIT_MS: f64 = 1500.0;
@@ -18,7 +17,7 @@ pub const RESTORE_WAIT_MS: f64 = 1500.0;
 /// A renderer opened again, and the canvas it draws on (the old one, or a fresh one).
 pub struct Reopened {
     pub renderer: Renderer,
-    pub canvas: OffscreenCanvas,
+    pub canvas: Canvas,
 }
 
 /// An attempt to open a renderer, answered in the background (opening a device takes the
@@ -40,11 +39,11 @@ pub struct Reopening {
     stage: Stage,
 }
 
-fn attempt(canvas: OffscreenCanvas) -> Attempt {
+fn attempt(canvas: Canvas) -> Attempt {
     let slot: Attempt = Rc::default();
     let filled = Rc::clone(&slot);
     wasm_bindgen_futures::spawn_local(async move {
-        let opened = Renderer::new(canvas.clone())
+        let opened = Renderer::new(&canvas)
             .await
             .map(|renderer| Reopened { renderer, canvas });
         *filled.borrow_mut() = Some(opened);
@@ -54,7 +53,7 @@ fn attempt(canvas: OffscreenCanvas) -> Attempt {
 
 impl Reopening {
     /// Starts opening a renderer for `canvas`; with `fresh`, asks for a fresh canvas at once.
-    pub fn start(canvas: OffscreenCanvas, fresh: bool) -> Self {
+    pub fn start(canvas: Canvas, fresh: bool) -> Self {
         Self {
             stage: if fresh {
                 Stage::NeedsCanvas(None)
@@ -70,7 +69,7 @@ impl Reopening {
     }
 
     /// The fresh canvas asked for: the renderer is opened on it.
-    pub fn give_canvas(&mut self, canvas: OffscreenCanvas) {
+    pub fn give_canvas(&mut self, canvas: Canvas) {
         if let Stage::NeedsCanvas(first) = &mut self.stage {
             self.stage = Stage::Fresh(attempt(canvas), first.take());
         }

@@ -1,13 +1,16 @@
 //! The page's main viewer, wherever it runs: in a worker that draws on the canvas the page
 //! handed over (`view_worker.rs`), so that the page's thread only handles input and the page,
-//! or, where a module worker cannot draw (no `OffscreenCanvas` in workers, `view=page` in the
-//! address's query), the same [`Viewer`] on the page's own thread. The page talks to both the
-//! same way: commands in, the device's state and each frame's report out.
+//! or, where a module worker cannot draw (no `OffscreenCanvas`, no WebGL2 on one, as in WebKit
+//! before Safari 17; `view=page` in the address's query), the same [`Viewer`] on the page's own
+//! thread, drawing on the canvas element itself. The page talks to both the same way: commands
+//! in, the device's state and each frame's report out.
 
 use super::debug::Loss;
 use super::scope;
+use super::view_canvas::hand_over;
 use super::viewer::{ViewFrame, Viewer};
 use super::webcodecs::VideoFrame;
+use crate::render::Canvas;
 use crate::work::message::{Reply, Request};
 use crate::work::view_command::ViewCommand;
 use crate::work::view_message::{PoolNews, ViewerNews, decode_news, encode_command};
@@ -19,7 +22,9 @@ use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
-use web_sys::{ErrorEvent, MessageEvent, OffscreenCanvas, Worker, WorkerOptions, WorkerType};
+use web_sys::{
+    ErrorEvent, HtmlCanvasElement, MessageEvent, OffscreenCanvas, Worker, WorkerOptions, WorkerType,
+};
 
 /// The news a drawing worker sent since the page last looked.
 #[derive(Default)]
@@ -299,16 +304,19 @@ impl ViewLink {
         }
     }
 
-    /// The fresh canvas the viewer asked for ([`Device::NeedsCanvas`]).
-    pub fn give_canvas(&mut self, canvas: OffscreenCanvas) {
+    /// The fresh canvas element the viewer asked for ([`Device::NeedsCanvas`]): drawn on as
+    /// it is on the page's thread, handed over to a drawing worker.
+    pub fn give_canvas(&mut self, element: HtmlCanvasElement) -> Result<(), String> {
         match self {
-            ViewLink::Here(viewer) => viewer.give_canvas(canvas),
+            ViewLink::Here(viewer) => viewer.give_canvas(Canvas::Element(element)),
             ViewLink::Worker(w) => {
+                let canvas = hand_over(&element)?;
                 let message = js_sys::Object::new();
                 let _ = Reflect::set(&message, &"canvas".into(), &canvas);
                 w.post(&message, &Array::of1(&canvas));
             }
         }
+        Ok(())
     }
 
     /// The viewer's frames since the page's last: on the page's thread, runs one (after the

@@ -16,6 +16,7 @@ use super::debug::{self, Loss};
 use super::viewer::Viewer;
 use super::workers::Workers;
 use crate::generator::GROWTH_BUDGET_MS;
+use crate::render::Canvas;
 use crate::work::view_command::ViewCommand;
 use crate::work::view_message::{PoolNews, ViewerNews, decode_command, encode_news};
 use crate::work::view_status::Device;
@@ -118,7 +119,7 @@ fn take(state: &Rc<RefCell<State>>, data: &JsValue) {
             &mut state.borrow_mut().running,
             canvas.dyn_into::<OffscreenCanvas>(),
         ) {
-            run.viewer.give_canvas(canvas);
+            run.viewer.give_canvas(Canvas::Offscreen(canvas));
         }
     } else if let Some(ask) = get(data, "debug").and_then(|d| d.as_string()) {
         let ms = get(data, "ms").and_then(|m| m.as_f64()).map(|m| m as i32);
@@ -163,7 +164,14 @@ async fn open(state: Rc<RefCell<State>>, init: JsValue) {
     let workers = Workers::start(GROWTH_BUDGET_MS);
     post(&pool_news(&workers, 0, None), None);
     let workers = Rc::new(RefCell::new(workers));
-    let viewer = Viewer::new(canvas, planar, background, true, Rc::clone(&workers)).await;
+    let viewer = Viewer::new(
+        Canvas::Offscreen(canvas),
+        planar,
+        background,
+        true,
+        Rc::clone(&workers),
+    )
+    .await;
     let mut viewer = match viewer {
         Ok(viewer) => viewer,
         Err(e) => {

@@ -1,4 +1,5 @@
-//! A viewer: one canvas (an `OffscreenCanvas` a canvas of the page handed its drawing to) and
+//! A viewer: one canvas (a canvas element of the page, or an `OffscreenCanvas` one handed its
+//! drawing to) and
 //! its renderer, a shell growing on it, what its planar pattern shows, and the camera the
 //! pointer turns. It touches nothing of the page, so that it runs in the worker that draws the
 //! main view (`view_worker.rs`) as well as on the page's thread (`view_link.rs`). Loading another spec restarts growth without reloading the
@@ -12,7 +13,7 @@ use super::activity;
 use super::clock::now;
 use super::debug::{self, Loss};
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
-use super::view_canvas::{lose_context, object_url};
+use super::view_canvas::{lose_context, object_url, png};
 use super::webcodecs::{self, VideoFrame};
 use super::workers::Workers;
 use crate::export::Download;
@@ -22,7 +23,7 @@ use crate::generator::{Advance, GROWTH_BUDGET_MS};
 use crate::mesh::Bounds;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
-use crate::render::{Renderer, ShellLook};
+use crate::render::{Canvas, Renderer, ShellLook};
 use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
@@ -42,7 +43,6 @@ use crate::work::view_status::{Device, FrameReport, ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;
-use web_sys::OffscreenCanvas;
 
 /// A shell being grown (on a worker; the page holds its copy, the [`Replica`]).
 struct Growing {
@@ -129,8 +129,8 @@ struct Previewing {
 
 pub struct Viewer {
     renderer: Renderer,
-    /// The canvas it draws on (a page's canvas handed its drawing over).
-    canvas: OffscreenCanvas,
+    /// The canvas it draws on (an element of the page, or one handed its drawing over).
+    canvas: Canvas,
     /// The size the canvas is shown at, in CSS pixels, as the page last laid it out (none
     /// said yet: the drawing keeps its size).
     shown: (u32, u32),
@@ -194,13 +194,13 @@ pub struct ViewFrame {
 
 impl Viewer {
     pub async fn new(
-        canvas: OffscreenCanvas,
+        canvas: Canvas,
         planar: bool,
         background: [u8; 3],
         follows: bool,
         workers: Rc<RefCell<Workers>>,
     ) -> Result<Self, String> {
-        let mut renderer = Renderer::new(canvas.clone()).await?;
+        let mut renderer = Renderer::new(&canvas).await?;
         renderer.set_background(background);
         Ok(Self {
             renderer,
@@ -630,8 +630,8 @@ impl Viewer {
                     triangles: mesh.triangle_count() + edge.triangle_count(),
                     pattern: (r.cells() > 0).then(|| (r.cells(), r.rgba().len() / (r.cells() * 4))),
                     picture: {
-                        let c = &self.canvas;
-                        (c.width() as usize, c.height() as usize)
+                        let (width, height) = self.canvas.size();
+                        (width as usize, height as usize)
                     },
                 },
             }),
@@ -714,7 +714,7 @@ impl Viewer {
 
     /// The fresh canvas the viewer asked for ([`Device::NeedsCanvas`]), to open a renderer
     /// on.
-    pub fn give_canvas(&mut self, canvas: OffscreenCanvas) {
+    pub fn give_canvas(&mut self, canvas: Canvas) {
         if let Some(reopening) = &mut self.reopening {
             reopening.give_canvas(canvas);
         }
@@ -772,10 +772,8 @@ impl Viewer {
         let (width, height) = self
             .fixed_size
             .unwrap_or((scale(self.shown.0), scale(self.shown.1)));
-        let c = &self.canvas;
-        if width > 0 && height > 0 && (width, height) != (c.width(), c.height()) {
-            c.set_width(width);
-            c.set_height(height);
+        if width > 0 && height > 0 && (width, height) != self.canvas.size() {
+            self.canvas.set_size((width, height));
             self.renderer.resize(width, height);
             self.dirty = true;
         }
@@ -915,9 +913,7 @@ impl Viewer {
         };
         self.renderer
             .draw(&g.panes(self.layout, self.renderer.aspect()))?;
-        self.canvas
-            .convert_to_blob()
-            .map_err(|_| "the browser refused to read the canvas".to_string())
+        png(&self.canvas)
     }
 
     /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the
@@ -1008,7 +1004,7 @@ impl Viewer {
             ("timestamp", (ask.timestamp_us as f64).into()),
             ("duration", (ask.duration_us as f64).into()),
         ]);
-        VideoFrame::new(&self.canvas, &init)
+        VideoFrame::new(self.canvas.as_js(), &init)
             .map_err(|e| format!("the canvas could not be read ({})", webcodecs::describe(&e)))
     }
 }

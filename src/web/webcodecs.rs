@@ -39,11 +39,9 @@ extern "C" {
     /// A frame of video: here, the canvas as just drawn.
     pub type VideoFrame;
 
+    /// A frame of `canvas` (an element or an offscreen canvas).
     #[wasm_bindgen(constructor, catch)]
-    pub fn new(
-        canvas: &web_sys::OffscreenCanvas,
-        init: &js_sys::Object,
-    ) -> Result<VideoFrame, JsValue>;
+    pub fn new(canvas: &JsValue, init: &js_sys::Object) -> Result<VideoFrame, JsValue>;
 
     #[wasm_bindgen(method)]
     pub fn close(this: &VideoFrame);
