@@ -228,6 +228,8 @@ impl Renderer {
     /// Frames the GPU has finished drawing since this renderer opened: none after a while of
     /// drawing means nothing reaches the screen.
     pub fn frames_finished(&self) -> u64 {
+        // As in `ready`, a failure to poll is a lost device, which the watch reports.
+        let _ = self.gpu.device.poll(wgpu::PollType::Poll);
         self.in_flight.finished()
     }
 

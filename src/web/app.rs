@@ -31,10 +31,12 @@ use super::share;
 use super::shown_size::ShownSize;
 use super::view_canvas::replace;
 use super::view_link::{Taken, ViewLink};
+use super::viewer::Viewer;
 use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::export::Download;
 use crate::presets::Preset;
+use crate::render::Canvas;
 use crate::share::link::{self, Decoded};
 use crate::share::presentation::{Layout, Presentation};
 use crate::spec::ShellSpec;
@@ -99,6 +101,24 @@ pub struct App {
     /// The rows done and in all that the progress bar and its text show, and when they were
     /// shown.
     progress_shown: (usize, usize, f64),
+    /// A viewer being opened on the page's thread, on a fresh canvas, after the drawing worker
+    /// failed.
+    moving: Option<Moving>,
+}
+
+/// A viewer being opened on the page's thread on the fresh canvas element it will draw on, and
+/// the answer once the browser has given it.
+struct Moving {
+    element: HtmlCanvasElement,
+    opened: Rc<RefCell<Option<Result<Viewer, String>>>>,
+}
+
+/// Shows which backend the main view is drawn with (none: no 3D).
+fn show_backend(backend: Option<String>) {
+    if let Some(backend) = backend {
+        signal("backend", &backend);
+        set_text("backend", &format!("Drawn with {backend}"));
+    }
 }
 
 fn say(problems: &[Problem]) {
@@ -137,9 +157,7 @@ fn location_hash() -> String {
 
 impl App {
     pub fn new(viewer: ViewLink, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
-        let backend = viewer.backend();
-        signal("backend", &backend);
-        set_text("backend", &format!("Drawn with {backend}"));
+        show_backend(viewer.backend());
         let shown = element("shell").and_then(|e| ShownSize::observe(&e).ok());
         let planar = element("planar")
             .and_then(|e| e.dyn_into().ok())
@@ -168,6 +186,7 @@ impl App {
             progress_shown: (0, 0, f64::NEG_INFINITY),
             support: Rc::new(RefCell::new(Support::Unasked)),
             recording: None,
+            moving: None,
         }
     }
 
@@ -244,6 +263,7 @@ impl App {
             g.set_hidden(!gallery);
             v.set_hidden(gallery);
         }
+        page::place_no_3d(!gallery);
         signal("view", if gallery { "gallery" } else { "viewer" });
         let title = match (&self.current, gallery) {
             (Some((p, _)), false) => format!("{} — Seashells", p.name),
@@ -676,8 +696,7 @@ impl App {
             Device::Reopened(backend) => {
                 self.recoveries += 1;
                 signal("recoveries", &self.recoveries.to_string());
-                signal("backend", &backend);
-                set_text("backend", &format!("Drawn with {backend}"));
+                show_backend(Some(backend.clone()));
                 if self.in_gallery {
                     page::hide_message();
                 } else {
@@ -699,12 +718,104 @@ impl App {
         if self.viewer.crashed() {
             return Ok(());
         }
+        if self.moving.is_some() {
+            self.take_moved();
+            self.workers.borrow_mut().send();
+            return Ok(());
+        }
         self.tell_shown();
         let outcome = self.work_and_draw();
         // What this frame asked goes out now, to be worked on before the next frame.
         self.workers.borrow_mut().send();
-        self.viewer.tick();
+        if self.moving.is_none() {
+            self.viewer.tick();
+        }
         outcome
+    }
+
+    /// The main viewer cannot draw where it is (`why`): the drawing worker gives way to the
+    /// page's thread, on a fresh canvas, and a viewer on the page's thread to none that draws
+    /// (the shell grows, its pattern shows and its files are written all the same). Said in
+    /// words; growth starts again from the apex.
+    fn fall_back(&mut self, why: String) {
+        if !self.viewer.in_worker() {
+            page::show_no_3d(&why);
+            let viewer =
+                Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
+            self.install(ViewLink::Here(Box::new(viewer)), None);
+            return;
+        }
+        web_sys::console::info_1(&format!("The view moves to the page's thread: {why}").into());
+        show_message(
+            "The shell could not be drawn in a worker here, so the page draws it on its own \
+             thread; it grows again from its apex.",
+        );
+        let element = match replace("shell") {
+            Ok(element) => element,
+            Err(e) => {
+                page::show_no_3d(&format!("{why}; {e}"));
+                let viewer =
+                    Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
+                self.install(ViewLink::Here(Box::new(viewer)), None);
+                return;
+            }
+        };
+        let opened: Rc<RefCell<Option<Result<Viewer, String>>>> = Rc::default();
+        let (slot, canvas, workers) = (
+            Rc::clone(&opened),
+            Canvas::Element(element.clone()),
+            Rc::clone(&self.workers),
+        );
+        wasm_bindgen_futures::spawn_local(async move {
+            let viewer = Viewer::new(canvas, true, page::background(), true, workers).await;
+            *slot.borrow_mut() = Some(viewer);
+        });
+        self.moving = Some(Moving { element, opened });
+    }
+
+    /// Takes the viewer opened on the page's thread once the browser has answered (or, when it
+    /// could not be opened, one that draws nothing).
+    fn take_moved(&mut self) {
+        let Some(moving) = &self.moving else { return };
+        let Some(opened) = moving.opened.borrow_mut().take() else {
+            return;
+        };
+        let Some(Moving { element, .. }) = self.moving.take() else {
+            return;
+        };
+        match opened {
+            Ok(viewer) => self.install(ViewLink::Here(Box::new(viewer)), Some(element)),
+            Err(why) => {
+                page::show_no_3d(&why);
+                let viewer =
+                    Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
+                self.install(ViewLink::Here(Box::new(viewer)), None);
+            }
+        }
+    }
+
+    /// Puts `viewer` in the old one's place (drawing on `element`, a fresh canvas of the page,
+    /// if it draws) and tells it what the page told the old one: the layout, the background,
+    /// the shell shown, grown again from its apex. A recording or a file under way is dropped.
+    fn install(&mut self, viewer: ViewLink, element: Option<HtmlCanvasElement>) {
+        self.stop_recording("the view moved to another thread");
+        self.downloads
+            .abandon("the view moved to another thread; ask for the file again");
+        self.viewer = viewer;
+        show_backend(self.viewer.backend());
+        if let Some(element) = element {
+            self.canvas_replaced(&element);
+            self.replaced_canvas = Some(element);
+        }
+        self.held = false;
+        self.viewer
+            .command(ViewCommand::Layout(self.presentation.layout));
+        self.viewer
+            .command(ViewCommand::Background(page::background()));
+        self.status = ViewStatus::default();
+        if let Some((preset, spec)) = self.current.clone() {
+            self.load(preset, spec, false);
+        }
     }
 
     /// Tells the viewer the size its canvas is shown at, when the page's layout or the pixel
@@ -752,7 +863,13 @@ impl App {
             frames,
             refused,
             pool,
-        } = self.viewer.frames()?;
+        } = match self.viewer.frames() {
+            Ok(taken) => taken,
+            Err(why) => {
+                self.fall_back(why);
+                return Ok(());
+            }
+        };
         for message in refused {
             self.current = None;
             page::show_error(&message);
@@ -788,7 +905,9 @@ impl App {
             self.pictures.work(&mut self.workers.borrow_mut());
             signal(
                 "pictures",
-                if self.pictures.finished() {
+                if !self.pictures.draws() {
+                    "none"
+                } else if self.pictures.finished() {
                     "done"
                 } else {
                     "drawing"

@@ -103,6 +103,14 @@ impl Downloads {
         }
     }
 
+    /// The viewer that was writing a file is gone (it moved to another thread): the file is
+    /// refused with `why`, and may be asked again.
+    pub fn abandon(&mut self, why: &str) {
+        if self.busy {
+            self.show(Some(FileStage::Refused(why.to_string())));
+        }
+    }
+
     /// Shows each file's size for the shell `shell`, when it has changed (at most every half
     /// second while the shell grows).
     pub fn show_sizes(&mut self, shell: &ShellStatus) {

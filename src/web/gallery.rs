@@ -84,10 +84,16 @@ fn picture_link(preset: &Preset) -> String {
 }
 
 impl Pictures {
+    /// Pictures drawn by `viewer` (none where it draws nothing).
     pub fn new(viewer: Viewer) -> Self {
+        let left = if viewer.backend().is_some() {
+            presets().iter().map(|p| (p, picture_link(p))).collect()
+        } else {
+            Vec::new()
+        };
         Self {
             viewer,
-            left: presets().iter().map(|p| (p, picture_link(p))).collect(),
+            left,
             asked: false,
             waiting: Vec::new(),
             lately: VecDeque::new(),
@@ -198,6 +204,11 @@ impl Pictures {
     /// Test-only (see `debug.rs`): takes the pictures' graphics device away.
     pub fn take_device(&self, loss: Loss) -> Result<(), String> {
         self.viewer.take_device(loss)
+    }
+
+    /// Whether it draws pictures at all (not where the browser draws no 3D).
+    pub fn draws(&self) -> bool {
+        self.viewer.backend().is_some()
     }
 
     /// Whether every picture is drawn, and the last of them long enough ago that a lost

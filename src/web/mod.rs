@@ -94,27 +94,36 @@ pub async fn start() -> Result<(), JsValue> {
     page::signal("workers", &workers.count().to_string());
     page::set_text("workers-status", workers.status());
     let workers = Rc::new(RefCell::new(workers));
-    let viewers = async {
-        let shared = || Rc::clone(&workers);
-        let main = main_viewer(canvas("shell")?, background, shared()).await?;
-        let pictures = Viewer::new(
-            Canvas::Element(canvas("picture-canvas")?),
-            false,
-            background,
-            false,
-            shared(),
-        )
-        .await?;
-        Ok::<_, String>((main, pictures))
-    };
-    let (main, pictures) = match viewers.await {
-        Ok(v) => v,
-        Err(message) => {
-            page::set_text("backend", "Not drawn");
-            page::show_error(&message);
+    let shared = || Rc::clone(&workers);
+    let (shell, pictures) = match (canvas("shell"), canvas("picture-canvas")) {
+        (Ok(shell), Ok(pictures)) => (shell, pictures),
+        (Err(e), _) | (_, Err(e)) => {
+            page::show_error(&format!("The page is incomplete: {e}."));
             return Ok(());
         }
     };
+    // Where no renderer opens, the viewers draw nothing and the page says so: the gallery
+    // lists every shell, and a shell still grows its pattern and gives its files.
+    let main = match main_viewer(shell, background, shared()).await {
+        Ok(main) => main,
+        Err(why) => {
+            page::show_no_3d(&why);
+            ViewLink::Here(Box::new(Viewer::without_drawing(
+                true,
+                background,
+                shared(),
+            )))
+        }
+    };
+    let pictures = Viewer::new(
+        Canvas::Element(pictures),
+        false,
+        background,
+        false,
+        shared(),
+    )
+    .await
+    .unwrap_or_else(|_| Viewer::without_drawing(false, background, shared()));
     let app: Shared = Rc::new(RefCell::new(App::new(
         main,
         gallery::Pictures::new(pictures),
@@ -169,13 +178,15 @@ async fn main_viewer(
                 web_sys::console::info_1(
                     &format!("The view is drawn on the page's thread: {e}").into(),
                 );
+                let element = view_canvas::replace("shell")?;
                 let status = format!(
-                    "{} The view is drawn on the page's thread (this browser cannot draw it in \
-                     a worker).",
+                    "{} Drawn on the page's thread: this browser cannot draw in a worker.",
                     workers.borrow().status()
                 );
+                let viewer =
+                    Viewer::new(Canvas::Element(element), true, background, true, workers).await?;
                 page::set_text("workers-status", &status);
-                view_canvas::replace("shell")?
+                return Ok(ViewLink::Here(Box::new(viewer)));
             }
         }
     } else {

@@ -91,6 +91,39 @@ pub fn show_error(text: &str) {
     signal("state", "error");
 }
 
+/// Says, in the words of the page's `#no-3d` notice, that this browser draws no 3D here and
+/// what still works; the technical cause (`details`) is folded away under it. The gallery's
+/// cards then show no pictures and the viewer no canvas.
+pub fn show_no_3d(details: &str) {
+    set_text("no-3d-details", details);
+    if let Some(notice) = element("no-3d") {
+        notice.set_hidden(false);
+    }
+    if let Some(body) = DOCUMENT.with(Document::body) {
+        let _ = body.class_list().add_1("no-3d");
+    }
+    signal("backend", "none");
+    set_text("backend", "Not drawn in 3D");
+}
+
+/// Puts the `#no-3d` notice where it is read: over the viewer's empty stage while a shell is
+/// shown, above the gallery otherwise.
+pub fn place_no_3d(in_viewer: bool) {
+    let Some(notice) = element("no-3d") else {
+        return;
+    };
+    let document = document();
+    let place = if in_viewer {
+        document.query_selector(".stage").ok().flatten()
+    } else {
+        document.body().map(Into::into)
+    };
+    if let Some(place) = place {
+        // Moving an element of the page within it cannot fail.
+        let _ = place.prepend_with_node_1(&notice);
+    }
+}
+
 /// Shows what a panic left: what was being done and what went wrong, above a button that
 /// reloads the link (wired in main.js, which works without the wasm). The first panic's message
 /// stays: later ones are what the first left broken.

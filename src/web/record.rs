@@ -550,11 +550,17 @@ pub fn show_recording(recording: Option<&Recording>) {
             format!("Finishing the file ({frames} frames)…")
         } else {
             format!(
-                "Recording frame {} of {frames} ({}×{}, {} a second)…",
+                "Recording frame {} of {frames} ({}×{}, {} a second{})…",
                 r.next + 1,
                 r.plan.width,
                 r.plan.height,
-                r.plan.fps
+                r.plan.fps,
+                if matches!(r.sink, Sink::Stream { .. }) {
+                    ", in real time with MediaRecorder: this browser has no WebCodecs video \
+                     encoder, so on a slow machine the video is uneven"
+                } else {
+                    ""
+                }
             )
         },
     );

@@ -5,6 +5,7 @@
 //! thread, drawing on the canvas element itself. The page talks to both the same way: commands
 //! in, the device's state and each frame's report out.
 
+use super::clock::now;
 use super::debug::Loss;
 use super::scope;
 use super::view_canvas::hand_over;
@@ -26,6 +27,13 @@ use web_sys::{
     ErrorEvent, HtmlCanvasElement, MessageEvent, OffscreenCanvas, Worker, WorkerOptions, WorkerType,
 };
 
+/// Milliseconds the drawing worker is given to open its renderer (it loads the WebAssembly
+/// module first) before the page draws on its own thread.
+const START_MS: i32 = 20_000;
+/// Milliseconds the drawing worker may go without a word while the page sends it frames before
+/// the page takes it for hung and draws on its own thread.
+const SILENT_MS: f64 = 15_000.0;
+
 /// The news a drawing worker sent since the page last looked.
 #[derive(Default)]
 struct Inbox {
@@ -37,6 +45,8 @@ struct Inbox {
     last_device: Option<Device>,
     /// The worker failed to load or threw outside the viewer (why).
     error: Option<String>,
+    /// When it last said anything.
+    heard: f64,
 }
 
 /// The main viewer in a worker, as the page sees it.
@@ -49,6 +59,8 @@ pub struct ViewWorker {
     crashed: bool,
     /// A fresh canvas was given since it last asked for one.
     gave_canvas: bool,
+    /// Whether the page has sent it a frame since it last said anything.
+    ticked: bool,
     _on_message: Closure<dyn FnMut(MessageEvent)>,
     _on_error: Closure<dyn FnMut(ErrorEvent)>,
 }
@@ -99,6 +111,7 @@ impl ViewWorker {
                 .filter(|f| !f.is_undefined())
                 .map(JsCast::unchecked_into::<VideoFrame>);
             let mut inbox = to.borrow_mut();
+            inbox.heard = now();
             match decode_news(&Uint8Array::new(&bytes).to_vec()) {
                 Ok(news) => {
                     if let ViewerNews::Frame { device, .. } = &news
@@ -118,6 +131,12 @@ impl ViewWorker {
                         .error
                         .get_or_insert(format!("the drawing worker's news was misread: {e}"));
                 }
+            }
+        });
+        let wake = Rc::clone(&opened);
+        scope::after(START_MS, move || {
+            if let Some(resolve) = wake.borrow_mut().take() {
+                let _ = resolve.call0(&JsValue::NULL);
             }
         });
         let (to, wake) = (Rc::clone(&inbox), Rc::clone(&opened));
@@ -153,6 +172,7 @@ impl ViewWorker {
             device: Device::Ready,
             crashed: false,
             gave_canvas: false,
+            ticked: false,
             _on_message: on_message,
             _on_error: on_error,
         };
@@ -170,7 +190,12 @@ impl ViewWorker {
         match opened {
             Some(ViewerNews::Opened(Ok(backend))) => this.backend = backend,
             Some(ViewerNews::Opened(Err(e))) => return Err(e),
-            _ => return Err("the drawing worker said nothing".into()),
+            _ => {
+                return Err(format!(
+                    "the drawing worker said nothing in {} s",
+                    START_MS / 1000
+                ));
+            }
         }
         Ok(this)
     }
@@ -218,12 +243,17 @@ pub struct Taken {
 }
 
 impl ViewLink {
-    /// "WebGPU" or "WebGL2".
-    pub fn backend(&self) -> String {
+    /// "WebGPU" or "WebGL2", or `None` where the viewer draws nothing.
+    pub fn backend(&self) -> Option<String> {
         match self {
-            ViewLink::Here(viewer) => viewer.backend().to_string(),
-            ViewLink::Worker(w) => w.backend.clone(),
+            ViewLink::Here(viewer) => viewer.backend().map(str::to_string),
+            ViewLink::Worker(w) => Some(w.backend.clone()),
         }
+    }
+
+    /// Whether it runs in the drawing worker.
+    pub fn in_worker(&self) -> bool {
+        matches!(self, ViewLink::Worker(_))
     }
 
     /// Asks the viewer `command`.
@@ -296,8 +326,12 @@ impl ViewLink {
 
     /// Ends the page's frame: a viewer in a worker runs its own on it, after the commands the
     /// page's frame sent.
-    pub fn tick(&self) {
+    pub fn tick(&mut self) {
         if let ViewLink::Worker(w) = self {
+            if !w.ticked {
+                w.ticked = true;
+                w.inbox.borrow_mut().heard = now();
+            }
             let message = js_sys::Object::new();
             let _ = Reflect::set(&message, &"tick".into(), &JsValue::TRUE);
             w.post(&message, &Array::new());
@@ -330,7 +364,16 @@ impl ViewLink {
             }),
             ViewLink::Worker(w) => {
                 let mut taken = Taken::default();
-                for (news, video) in w.inbox.borrow_mut().news.drain(..) {
+                let mut inbox = w.inbox.borrow_mut();
+                if !inbox.news.is_empty() {
+                    w.ticked = false;
+                } else if w.ticked && now() - inbox.heard > SILENT_MS {
+                    return Err(format!(
+                        "the drawing worker has not answered for {} s",
+                        SILENT_MS / 1000.0
+                    ));
+                }
+                for (news, video) in inbox.news.drain(..) {
                     match news {
                         ViewerNews::Frame {
                             report: Some(report),

@@ -179,7 +179,11 @@ async fn open(state: Rc<RefCell<State>>, init: JsValue) {
             return;
         }
     };
-    post(&ViewerNews::Opened(Ok(viewer.backend().to_string())), None);
+    let backend = viewer
+        .backend()
+        .map(str::to_string)
+        .ok_or_else(|| "the drawing worker's viewer draws nothing".to_string());
+    post(&ViewerNews::Opened(backend), None);
     {
         let mut s = state.borrow_mut();
         for command in s.early.drain(..) {

@@ -127,10 +127,62 @@ struct Previewing {
     pending: bool,
 }
 
-pub struct Viewer {
+/// A renderer and the canvas it draws on.
+struct Drawing {
     renderer: Renderer,
-    /// The canvas it draws on (an element of the page, or one handed its drawing over).
+    /// An element of the page, or an offscreen canvas one handed its drawing to.
     canvas: Canvas,
+    /// When the first frame was handed to the GPU, until the GPU has finished one: a renderer
+    /// that opened and whose frames never finish draws nothing on the screen.
+    unseen_since: Option<f64>,
+}
+
+impl Drawing {
+    fn new(renderer: Renderer, canvas: Canvas) -> Self {
+        Self {
+            renderer,
+            canvas,
+            unseen_since: None,
+        }
+    }
+
+    /// Draws the panes of `layout` of `growing`'s shell.
+    fn draw(&mut self, growing: &Growing, layout: Layout) -> Result<(), String> {
+        let panes = growing.panes(layout, self.renderer.aspect());
+        self.renderer.draw(&panes)?;
+        self.unseen_since.get_or_insert_with(now);
+        Ok(())
+    }
+
+    /// Why the screen shows nothing of what was drawn: no frame finished by the GPU within
+    /// [`UNSEEN_MS`] of the first handed to it.
+    fn unseen(&mut self) -> Option<String> {
+        let since = self.unseen_since?;
+        if self.renderer.frames_finished() > 0 {
+            self.unseen_since = None;
+            return None;
+        }
+        (now() - since > UNSEEN_MS).then(|| {
+            format!(
+                "the {} device has finished none of the frames handed to it in {} s",
+                self.renderer.backend(),
+                UNSEEN_MS / 1000.0
+            )
+        })
+    }
+}
+
+/// Why a viewer that draws nothing gives no picture.
+const NO_DRAWING: &str = "this browser draws no 3D here";
+
+/// How long drawn frames may go unfinished by the GPU before the viewer says the screen shows
+/// none of them (a first frame takes well under a second, even on a software rasterizer).
+const UNSEEN_MS: f64 = 10_000.0;
+
+pub struct Viewer {
+    /// What it draws with; none where the browser draws no 3D: the shell still grows, its
+    /// pattern is shown and its files written.
+    drawing: Option<Drawing>,
     /// The size the canvas is shown at, in CSS pixels, as the page last laid it out (none
     /// said yet: the drawing keeps its size).
     shown: (u32, u32),
@@ -200,13 +252,40 @@ impl Viewer {
         follows: bool,
         workers: Rc<RefCell<Workers>>,
     ) -> Result<Self, String> {
-        let mut renderer = Renderer::new(&canvas).await?;
-        renderer.set_background(background);
-        Ok(Self {
-            renderer,
+        let renderer = Renderer::new(&canvas).await?;
+        Ok(Self::with(
+            Some(Drawing::new(renderer, canvas)),
+            planar,
+            background,
+            follows,
+            workers,
+        ))
+    }
+
+    /// A viewer that draws nothing, where the browser cannot draw in 3D: the shell grows, its
+    /// pattern shows in the planar view and its files are written all the same.
+    pub fn without_drawing(
+        planar: bool,
+        background: [u8; 3],
+        workers: Rc<RefCell<Workers>>,
+    ) -> Self {
+        Self::with(None, planar, background, true, workers)
+    }
+
+    fn with(
+        mut drawing: Option<Drawing>,
+        planar: bool,
+        background: [u8; 3],
+        follows: bool,
+        workers: Rc<RefCell<Workers>>,
+    ) -> Self {
+        if let Some(d) = &mut drawing {
+            d.renderer.set_background(background);
+        }
+        Self {
+            drawing,
             shown: (0, 0),
             pixel_ratio: 1.0,
-            canvas,
             planar,
             planar_updates: Vec::new(),
             pointers: Pointers::default(),
@@ -231,18 +310,20 @@ impl Viewer {
             picture_read: Rc::default(),
             notice: None,
             writer: FileWriter::default(),
-        })
+        }
     }
 
-    /// "WebGPU" or "WebGL2".
-    pub fn backend(&self) -> &'static str {
-        self.renderer.backend()
+    /// "WebGPU" or "WebGL2", or `None` where it draws nothing.
+    pub fn backend(&self) -> Option<&'static str> {
+        self.drawing.as_ref().map(|d| d.renderer.backend())
     }
 
     /// Follows a change of the page's theme.
     fn set_background(&mut self, srgb: [u8; 3]) {
         self.background = srgb;
-        self.renderer.set_background(srgb);
+        if let Some(d) = &mut self.drawing {
+            d.renderer.set_background(srgb);
+        }
         self.dirty = true;
     }
 
@@ -359,7 +440,9 @@ impl Viewer {
         let Some(g) = &mut self.growing else { return };
         let pattern = (shell.cells > 0).then_some((shell.cells, g.spec.growth.rows));
         g.planar_size = pattern;
-        g.load_into(&mut self.renderer, &shell);
+        if let Some(d) = &mut self.drawing {
+            g.load_into(&mut d.renderer, &shell);
+        }
         let grown = *g.replica.grown();
         let mut camera = OrbitCamera::framing(
             &shell.bounds,
@@ -508,15 +591,17 @@ impl Viewer {
     fn upload(&mut self, advance: &Advance) {
         let Some(g) = &mut self.growing else { return };
         let replica = &g.replica;
-        self.renderer.set_ground(replica.grown());
         let row = replica.cells() * 4;
         let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
-        self.pacing.uploaded((self.renderer).upload(
-            replica.mesh(),
-            replica.edge().mesh(),
-            advance,
-            rgba,
-        ));
+        if let Some(d) = &mut self.drawing {
+            d.renderer.set_ground(replica.grown());
+            self.pacing.uploaded(d.renderer.upload(
+                replica.mesh(),
+                replica.edge().mesh(),
+                advance,
+                rgba,
+            ));
+        }
         if g.planar_open {
             self.planar_updates.extend([
                 PlanarUpdate::Rows {
@@ -630,7 +715,8 @@ impl Viewer {
                     triangles: mesh.triangle_count() + edge.triangle_count(),
                     pattern: (r.cells() > 0).then(|| (r.cells(), r.rgba().len() / (r.cells() * 4))),
                     picture: {
-                        let (width, height) = self.canvas.size();
+                        let (width, height) =
+                            self.drawing.as_ref().map_or((0, 0), |d| d.canvas.size());
                         (width as usize, height as usize)
                     },
                 },
@@ -654,8 +740,9 @@ impl Viewer {
                 Some(Ok(reopened)) => {
                     self.reopening = None;
                     self.lost_at = None;
+                    let backend = reopened.renderer.backend().to_string();
                     self.install(reopened);
-                    Device::Reopened(self.renderer.backend().to_string())
+                    Device::Reopened(backend)
                 }
                 Some(Err(e)) => {
                     self.reopening = None;
@@ -668,25 +755,26 @@ impl Viewer {
                 }
             };
         }
-        let Some(loss) = self.renderer.lost() else {
+        let Some(d) = &self.drawing else {
+            return Device::Ready;
+        };
+        let Some(loss) = d.renderer.lost() else {
             return Device::Ready;
         };
         let since = *self.lost_at.get_or_insert_with(now);
-        let webgl = self.renderer.backend() == "WebGL2";
+        let webgl = d.renderer.backend() == "WebGL2";
         if webgl && !loss.restored && now() - since < RESTORE_WAIT_MS {
             // The browser may give the context back (webglcontextrestored): wait a little.
             return Device::Reopening(loss.reason);
         }
-        self.reopening = Some(Reopening::start(
-            self.canvas.clone(),
-            webgl && !loss.restored,
-        ));
+        self.reopening = Some(Reopening::start(d.canvas.clone(), webgl && !loss.restored));
         Device::Reopening(loss.reason)
     }
 
     fn loss_reason(&self) -> String {
-        self.renderer
-            .lost()
+        self.drawing
+            .as_ref()
+            .and_then(|d| d.renderer.lost())
             .map_or_else(|| "no reason given".to_string(), |l| l.reason)
     }
 
@@ -699,11 +787,10 @@ impl Viewer {
             canvas,
         } = reopened;
         renderer.set_background(self.background);
-        self.canvas = canvas;
-        self.renderer = renderer;
+        let drawing = self.drawing.insert(Drawing::new(renderer, canvas));
         let everything = self.growing.as_ref().and_then(|g| {
             let shell = g.replica.shell()?;
-            g.load_into(&mut self.renderer, shell);
+            g.load_into(&mut drawing.renderer, shell);
             Some(g.replica.everything())
         });
         if let Some(everything) = everything {
@@ -723,12 +810,13 @@ impl Viewer {
     /// Test-only (see `debug.rs`): takes the graphics device away as a driver reset (WebGPU) or
     /// the browser (WebGL2) would.
     pub fn take_device(&self, loss: Loss) -> Result<(), String> {
+        let d = self.drawing.as_ref().ok_or("this viewer draws nothing")?;
         match loss {
             Loss::Destroy => {
-                self.renderer.destroy_device();
+                d.renderer.destroy_device();
                 Ok(())
             }
-            Loss::Context { restore_after_ms } => lose_context(&self.canvas, restore_after_ms),
+            Loss::Context { restore_after_ms } => lose_context(&d.canvas, restore_after_ms),
         }
     }
 
@@ -772,9 +860,13 @@ impl Viewer {
         let (width, height) = self
             .fixed_size
             .unwrap_or((scale(self.shown.0), scale(self.shown.1)));
-        if width > 0 && height > 0 && (width, height) != self.canvas.size() {
-            self.canvas.set_size((width, height));
-            self.renderer.resize(width, height);
+        if let Some(d) = &mut self.drawing
+            && width > 0
+            && height > 0
+            && (width, height) != d.canvas.size()
+        {
+            d.canvas.set_size((width, height));
+            d.renderer.resize(width, height);
             self.dirty = true;
         }
     }
@@ -802,11 +894,16 @@ impl Viewer {
     /// [`growth_budget`]), or towards a recording's frame, and draws if anything changed.
     /// Returns whether a frame was drawn.
     fn frame(&mut self, budget_ms: f64) -> Result<bool, String> {
-        if let Some(failure) = self.renderer.failure() {
-            return Err(failure);
-        }
-        if self.reopening.is_some() || self.renderer.lost().is_some() {
-            return Ok(false);
+        if let Some(d) = &mut self.drawing {
+            if let Some(failure) = d.renderer.failure() {
+                return Err(failure);
+            }
+            if let Some(why) = d.unseen() {
+                return Err(format!("Nothing drawn reaches the screen: {why}."));
+            }
+            if self.reopening.is_some() || d.renderer.lost().is_some() {
+                return Ok(false);
+            }
         }
         if self.fixed_size.is_some() {
             self.work_recording(budget_ms);
@@ -860,14 +957,19 @@ impl Viewer {
         else {
             return Ok(false);
         };
+        let Some(d) = &mut self.drawing else {
+            // Nothing to draw on: what changed is shown all the same (the planar view, the
+            // status).
+            self.dirty = false;
+            return Ok(true);
+        };
         // After megabytes of uploads, or while the GPU still works on earlier frames, the
         // drawing waits (the uploads go to the GPU meanwhile).
-        if pacing == FrameDraw::Defer || !self.renderer.ready() {
-            self.renderer.flush();
+        if pacing == FrameDraw::Defer || !d.renderer.ready() {
+            d.renderer.flush();
             return Ok(false);
         }
-        self.renderer
-            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
+        d.draw(g, self.layout)?;
         self.dirty = false;
         Ok(true)
     }
@@ -905,15 +1007,15 @@ impl Viewer {
     /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
     /// browser clears the drawing).
     pub fn picture(&mut self) -> Result<js_sys::Promise, String> {
-        if let Some(loss) = self.renderer.lost() {
+        let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
+        if let Some(loss) = d.renderer.lost() {
             return Err(format!("the graphics device was lost ({})", loss.reason));
         }
         let Some(g) = &self.growing else {
             return Err("nothing is drawn yet".into());
         };
-        self.renderer
-            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
-        png(&self.canvas)
+        d.draw(g, self.layout)?;
+        png(&d.canvas)
     }
 
     /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the
@@ -996,15 +1098,15 @@ impl Viewer {
         };
         g.camera.follow(g.replica.grown(), ask.dt);
         g.camera.yaw += ask.turn;
-        self.renderer
-            .draw(&g.panes(self.layout, self.renderer.aspect()))?;
+        let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
+        d.draw(g, self.layout)?;
         self.last_frame = now();
         self.dirty = false;
         let init = webcodecs::object(&[
             ("timestamp", (ask.timestamp_us as f64).into()),
             ("duration", (ask.duration_us as f64).into()),
         ]);
-        VideoFrame::new(self.canvas.as_js(), &init)
+        VideoFrame::new(d.canvas.as_js(), &init)
             .map_err(|e| format!("the canvas could not be read ({})", webcodecs::describe(&e)))
     }
 }

@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
-import { launch, open, waitForState, measureCanvas } from './browser.mjs';
+import { launch, open, waitForState, measureCanvas, measurePng } from './browser.mjs';
 
 const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
@@ -88,29 +88,54 @@ test('a growing shell uploads what it adds, never zeros for the room its buffers
   }
 });
 
-test('without WebGPU or WebGL2 the page says so in words', async () => {
+test('without WebGPU or WebGL2 the page says why in a sentence, lists every shell and still grows its pattern and files', async () => {
   const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     args: ['--no-sandbox', '--disable-gpu', '--disable-webgl', '--disable-3d-apis', '--disable-features=WebGPU'],
   });
   try {
     // Chromium's flags take WebGL away from canvas elements but not from an OffscreenCanvas,
-    // which the page draws on: there, a browser without the APIs gives no context either.
-    const context = await browser.newContext();
+    // which the drawing worker would draw on: here no canvas can be handed to it either.
+    const context = await browser.newContext({ viewport: { width: 1100, height: 760 } });
     await context.addInitScript(() => {
-      const get = OffscreenCanvas.prototype.getContext;
-      OffscreenCanvas.prototype.getContext = function getContext(kind, ...rest) {
-        return ['webgl', 'webgl2', 'webgpu'].includes(kind) ? null : get.call(this, kind, ...rest);
+      HTMLCanvasElement.prototype.transferControlToOffscreen = () => {
+        throw new Error('no OffscreenCanvas in this test');
       };
     });
     const page = await context.newPage();
+    const errors = [];
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    page.on('pageerror', (e) => errors.push(String(e)));
     await page.goto(base);
-    const state = await waitForState(page, ['growing', 'grown', 'error']);
-    assert.equal(state.state, 'error');
-    const message = await page.textContent('#message');
-    assert.match(message, /WebGPU|WebGL2/);
-    assert.ok(await page.isVisible('#message'));
+    const state = await waitForState(page, ['gallery', 'error']);
+    assert.equal(state.state, 'gallery');
+    assert.equal(state.backend, 'none');
+    assert.ok(await page.isVisible('#no-3d'));
+    const notice = await page.textContent('#no-3d p');
+    assert.match(notice, /could not draw the shells in 3D.*WebGPU or WebGL2.*Firefox, Chrome, Edge and Safari.*links.*pattern PNG.*mesh files/s);
+    assert.equal(await page.isVisible('#no-3d-details'), false, 'the technical cause is folded away');
+    await page.click('#no-3d summary');
+    assert.match(await page.textContent('#no-3d-details'), /WebGL2/);
+    assert.equal(await page.isVisible('#message'), false, 'no error on top of the notice');
+    assert.equal(await page.locator('a.card').count(), 45, 'every shell is listed');
+    await page.waitForFunction(() => document.body.dataset.pictures === 'none');
     await page.screenshot({ path: `${SHOTS}no-graphics.png` });
+
+    // A shell still grows: its pattern in the planar view, its files.
+    await page.click('a.card[data-preset="oliva-porphyria"]');
+    await page.waitForFunction(() => Number(document.body.dataset.rows) >= 300, null, { timeout: 120_000 });
+    const planar = await measurePng(page, await page.locator('#planar').screenshot());
+    assert.ok(planar.share > 0.05 && planar.shades > 5, `the planar view shows the pattern (${JSON.stringify(planar)})`);
+    await page.click('#finish');
+    await waitForState(page, ['grown']);
+    assert.match((await page.evaluate(() => ({ ...document.body.dataset }))).patternHash, /^[0-9a-f]{16}$/);
+    assert.equal(await page.isVisible('#download-picture'), false, 'no picture of a view not drawn');
+    for (const [button, name] of [['#download-pattern', 'oliva-porphyria-pattern.png'], ['#download-stl', 'oliva-porphyria.stl']]) {
+      const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
+      assert.equal(download.suggestedFilename(), name);
+    }
+    await page.screenshot({ path: `${SHOTS}no-graphics-shell.png` });
+    assert.deepEqual(errors, []);
   } finally {
     await browser.close();
   }
