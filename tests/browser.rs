@@ -131,7 +131,7 @@ async fn next_frame() {
 async fn the_renderer_draws_on_a_canvas_element_and_counts_the_frames_the_gpu_finished() {
     let (canvas, mut renderer, camera, bounds) =
         grown("diskoid", Canvas::Element(element(192))).await;
-    assert_eq!(renderer.frames_finished(), 0);
+    assert_eq!(renderer.frames(), (0, 0));
     let frame = panes(Layout::Single, &camera, &bounds, renderer.aspect());
     renderer.draw(&frame).expect("a frame");
     let (share, shades) = coverage_in(&canvas, 0, 0, 192);
@@ -148,7 +148,8 @@ async fn the_renderer_draws_on_a_canvas_element_and_counts_the_frames_the_gpu_fi
         next_frame().await;
         waited += 1;
     }
-    assert!(renderer.frames_finished() >= 1);
+    let (finished, unfinished) = renderer.frames();
+    assert!(finished >= 1 && finished + unfinished == 2, "{finished} and {unfinished} of 2");
     assert_eq!(renderer.failure(), None);
 }
 

@@ -38,8 +38,13 @@ impl InFlight {
         self.finished.load(Ordering::Acquire)
     }
 
+    /// Frames handed to the GPU and not finished yet.
+    pub(super) fn unfinished(&self) -> u64 {
+        self.submitted - self.finished()
+    }
+
     /// Whether another frame may be handed to the GPU now.
     pub(super) fn has_room(&self) -> bool {
-        self.submitted - self.finished() < MAX_IN_FLIGHT
+        self.unfinished() < MAX_IN_FLIGHT
     }
 }

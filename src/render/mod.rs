@@ -225,12 +225,13 @@ impl Renderer {
         self.in_flight.has_room()
     }
 
-    /// Frames the GPU has finished drawing since this renderer opened: none after a while of
-    /// drawing means nothing reaches the screen.
-    pub fn frames_finished(&self) -> u64 {
+    /// Frames the GPU has finished drawing since this renderer opened, and those handed to it
+    /// and not finished yet: frames waiting while none finishes for long means nothing reaches
+    /// the screen.
+    pub fn frames(&self) -> (u64, u64) {
         // As in `ready`, a failure to poll is a lost device, which the watch reports.
         let _ = self.gpu.device.poll(wgpu::PollType::Poll);
-        self.in_flight.finished()
+        (self.in_flight.finished(), self.in_flight.unfinished())
     }
 
     /// "WebGPU" or "WebGL2".

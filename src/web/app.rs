@@ -14,7 +14,8 @@
 //! `data-worker-deaths` (workers replaced so far), `data-settled` (true when the page's copy
 //! of the shell has every answer it asked its worker for: paused, it stands still) and
 //! `data-recoveries` (how many times the graphics device was lost and opened again; the state
-//! is `recovering` meanwhile).
+//! is `recovering` meanwhile), `data-backend` (WebGPU, WebGL2, none) and `data-drawn-in`
+//! (worker, page, nowhere: where the main view is drawn).
 
 use super::activity;
 use super::clock::now;
@@ -121,6 +122,17 @@ fn show_backend(backend: Option<String>) {
     }
 }
 
+/// Signals where the main view is drawn (`data-drawn-in`): in the drawing worker, on the
+/// page's thread, or nowhere.
+fn show_drawn_in(viewer: &ViewLink) {
+    let place = match (viewer.in_worker(), viewer.backend()) {
+        (true, _) => "worker",
+        (false, Some(_)) => "page",
+        (false, None) => "nowhere",
+    };
+    signal("drawnIn", place);
+}
+
 fn say(problems: &[Problem]) {
     if problems.is_empty() {
         page::hide_message();
@@ -158,6 +170,7 @@ fn location_hash() -> String {
 impl App {
     pub fn new(viewer: ViewLink, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
         show_backend(viewer.backend());
+        show_drawn_in(&viewer);
         let shown = element("shell").and_then(|e| ShownSize::observe(&e).ok());
         let planar = element("planar")
             .and_then(|e| e.dyn_into().ok())
@@ -803,6 +816,7 @@ impl App {
             .abandon("the view moved to another thread; ask for the file again");
         self.viewer = viewer;
         show_backend(self.viewer.backend());
+        show_drawn_in(&self.viewer);
         if let Some(element) = element {
             self.canvas_replaced(&element);
             self.replaced_canvas = Some(element);

@@ -132,9 +132,10 @@ struct Drawing {
     renderer: Renderer,
     /// An element of the page, or an offscreen canvas one handed its drawing to.
     canvas: Canvas,
-    /// When the first frame was handed to the GPU, until the GPU has finished one: a renderer
-    /// that opened and whose frames never finish draws nothing on the screen.
-    unseen_since: Option<f64>,
+    /// While frames wait for the GPU: how many it had finished when it last finished one, and
+    /// when. A device that opened and finishes none of the frames handed to it for long draws
+    /// nothing on the screen.
+    progress: Option<(u64, f64)>,
 }
 
 impl Drawing {
@@ -142,42 +143,48 @@ impl Drawing {
         Self {
             renderer,
             canvas,
-            unseen_since: None,
+            progress: None,
         }
     }
 
     /// Draws the panes of `layout` of `growing`'s shell.
     fn draw(&mut self, growing: &Growing, layout: Layout) -> Result<(), String> {
         let panes = growing.panes(layout, self.renderer.aspect());
-        self.renderer.draw(&panes)?;
-        self.unseen_since.get_or_insert_with(now);
-        Ok(())
+        self.renderer.draw(&panes)
     }
 
-    /// Why the screen shows nothing of what was drawn: no frame finished by the GPU within
-    /// [`UNSEEN_MS`] of the first handed to it.
+    /// Why the screen shows nothing more of what is drawn: frames have waited for the GPU for
+    /// [`UNSEEN_MS`] without one of them finished.
     fn unseen(&mut self) -> Option<String> {
-        let since = self.unseen_since?;
-        if self.renderer.frames_finished() > 0 {
-            self.unseen_since = None;
+        let (finished, unfinished) = self.renderer.frames();
+        if unfinished == 0 {
+            self.progress = None;
             return None;
         }
-        (now() - since > UNSEEN_MS).then(|| {
-            format!(
-                "the {} device has finished none of the frames handed to it in {} s",
-                self.renderer.backend(),
-                UNSEEN_MS / 1000.0
-            )
-        })
+        let t = now();
+        match self.progress {
+            Some((seen, since)) if seen == finished => (t - since > UNSEEN_MS).then(|| {
+                format!(
+                    "the {} device has finished none of the frames handed to it in {} s",
+                    self.renderer.backend(),
+                    UNSEEN_MS / 1000.0
+                )
+            }),
+            _ => {
+                self.progress = Some((finished, t));
+                None
+            }
+        }
     }
 }
 
+/// How long frames may wait for the GPU without one of them finished before the viewer says
+/// the screen shows none of them (a frame takes well under a second, even on a software
+/// rasterizer).
+const UNSEEN_MS: f64 = 10_000.0;
+
 /// Why a viewer that draws nothing gives no picture.
 const NO_DRAWING: &str = "this browser draws no 3D here";
-
-/// How long drawn frames may go unfinished by the GPU before the viewer says the screen shows
-/// none of them (a first frame takes well under a second, even on a software rasterizer).
-const UNSEEN_MS: f64 = 10_000.0;
 
 pub struct Viewer {
     /// What it draws with; none where the browser draws no 3D: the shell still grows, its
