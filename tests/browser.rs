@@ -149,7 +149,10 @@ async fn the_renderer_draws_on_a_canvas_element_and_counts_the_frames_the_gpu_fi
         waited += 1;
     }
     let (finished, unfinished) = renderer.frames();
-    assert!(finished >= 1 && finished + unfinished == 2, "{finished} and {unfinished} of 2");
+    assert!(
+        finished >= 1 && finished + unfinished == 2,
+        "{finished} and {unfinished} of 2"
+    );
     assert_eq!(renderer.failure(), None);
 }
 
