@@ -69,12 +69,20 @@ pub fn copy_embed(snippet: String) {
 }
 
 /// Copies `text` to the clipboard; the status says `done`, or `refused` when the browser
-/// does not allow it.
+/// does not allow it or has no clipboard to write to (a page served over plain HTTP from
+/// another host than this one, say).
 pub fn copy(text: String, done: &'static str, refused: String) {
     let Some(window) = web_sys::window() else {
         return;
     };
-    let promise = window.navigator().clipboard().write_text(&text);
+    let navigator = window.navigator();
+    let has_clipboard =
+        js_sys::Reflect::get(&navigator, &"clipboard".into()).is_ok_and(|c| c.is_object());
+    if !has_clipboard {
+        set_text("copy-status", &refused);
+        return;
+    }
+    let promise = navigator.clipboard().write_text(&text);
     wasm_bindgen_futures::spawn_local(async move {
         let copied = wasm_bindgen_futures::JsFuture::from(promise).await.is_ok();
         set_text("copy-status", if copied { done } else { &refused });

@@ -98,6 +98,9 @@ enum Backend {
         slots: Vec<Slot>,
         inbox: Inbox,
         faults: Faults,
+        /// Whether any worker has answered yet: workers that all die before answering
+        /// anything cannot run here (a browser without module workers, say).
+        answered: bool,
     },
     /// The page's own thread.
     Local(Box<Host>),
@@ -121,12 +124,18 @@ pub struct Replaced {
     pub deaths: usize,
     /// Why this one was, in words.
     why: String,
+    /// The status line, when the workers were given up for the owner's thread instead.
+    given_up: Option<String>,
 }
 
 impl Replaced {
     /// The status line's words: none the first time (a worker's death is rare enough to
-    /// redo its work silently once), the count and the cause from the second.
+    /// redo its work silently once), the count and the cause from the second; where the
+    /// shells grow now, once the workers are given up.
     pub fn words(&self) -> Option<String> {
+        if let Some(status) = &self.given_up {
+            return Some(status.clone());
+        }
         (self.deaths >= 2).then(|| {
             format!(
                 "A worker stopped ({}) for the {} time; it was replaced and its work done again.",
@@ -213,7 +222,7 @@ impl Workers {
             backend: Backend::Local(Box::default()),
             budget_ms,
             worker_growth_ms: budget_ms,
-            status: format!("Growing on {}: {why}.", scope::thread_name()),
+            status: local_status(why),
         };
         if size == 0 {
             return local("workers are off (workers=0 in the address)");
@@ -242,6 +251,7 @@ impl Workers {
                 slots,
                 inbox,
                 faults,
+                answered: false,
             },
             budget_ms,
             worker_growth_ms: query_number("grow-budget").map_or(WORKER_GROWTH_MS, |ms| ms as f64),
@@ -333,6 +343,7 @@ impl Workers {
                 slots,
                 inbox,
                 faults,
+                answered,
             } => {
                 let mut events = std::mem::take(&mut *inbox.borrow_mut()).into_iter();
                 let mut dead = Vec::new();
@@ -364,6 +375,7 @@ impl Workers {
                                 dead.push((slot, "its reply could not be read".to_string()));
                                 continue;
                             };
+                            *answered = true;
                             if let Some(request) = pool.answered(slot, ticket, now()) {
                                 polled.replies.push((request, reply));
                             }
@@ -392,12 +404,46 @@ impl Workers {
                     polled.replaced = Some(Replaced {
                         deaths: pool.deaths(),
                         why,
+                        given_up: None,
                     });
+                }
+                if !*answered && pool.deaths() > slots.len() + NEVER_ANSWERED_SPARE {
+                    let why = polled.replaced.take().map_or_else(String::new, |r| r.why);
+                    self.run_here(&mut polled, why);
                 }
             }
         }
         polled
     }
+
+    /// Workers cannot run here: the pool's owner's thread takes their work (a frame's budget
+    /// at a time), and the shells they held are grown again there.
+    fn run_here(&mut self, polled: &mut Polled, why: String) {
+        let mut lost = self.pool.collapse();
+        if let Some(earlier) = polled.sessions_lost.take() {
+            lost.splice(0..0, earlier);
+        }
+        polled.sessions_lost = Some(lost);
+        self.backend = Backend::Local(Box::default());
+        self.worker_growth_ms = self.budget_ms;
+        self.status = local_status(&format!(
+            "workers could not run here (each stopped before answering: {why})"
+        ));
+        polled.replaced = Some(Replaced {
+            deaths: self.pool.deaths(),
+            why,
+            given_up: Some(self.status.clone()),
+        });
+    }
+}
+
+/// Workers beyond the pool's size that may die before any has answered before the pool takes
+/// workers for unable to run here (the page tests make the first two fail on purpose).
+const NEVER_ANSWERED_SPARE: usize = 2;
+
+/// The status line where the pool's owner's thread grows the shells: why.
+fn local_status(why: &str) -> String {
+    format!("Growing on {}: {why}.", scope::thread_name())
 }
 
 /// "second", "third", … for the status line.

@@ -174,6 +174,28 @@ impl Pool {
     /// in line, and the session requests it held are returned (its sessions are lost with it).
     pub fn failed(&mut self, slot: usize) -> Vec<Request> {
         self.deaths += 1;
+        self.take_back(slot)
+    }
+
+    /// No worker can run here (each died before answering anything): the pool shrinks to the
+    /// one worker the thread of its owner stands in for; every job waits again, in the order
+    /// asked, and the session requests its workers held are returned.
+    pub fn collapse(&mut self) -> Vec<Request> {
+        let mut sessions = Vec::new();
+        for slot in (0..self.slots.len()).rev() {
+            sessions.splice(0..0, self.take_back(slot));
+        }
+        // Tickets follow the order the jobs were asked in.
+        self.waiting
+            .make_contiguous()
+            .sort_by_key(|(ticket, _)| *ticket);
+        self.slots = vec![Slot::default()];
+        sessions
+    }
+
+    /// Takes back what worker `slot` held: its jobs wait again, first in line; its session
+    /// requests are returned.
+    fn take_back(&mut self, slot: usize) -> Vec<Request> {
         let lost = std::mem::take(&mut self.slots[slot].sent);
         let mut sessions = Vec::new();
         for sent in lost.into_iter().rev() {
@@ -191,6 +213,38 @@ impl Pool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_collapsed_pool_is_one_worker_with_every_job_waiting_and_the_sessions_returned() {
+        let mut pool = Pool::new(3);
+        let grow = Request::Grow {
+            session: 1,
+            rows: 4,
+            budget_ms: 16.0,
+        };
+        pool.submit(grow.clone());
+        for job in 0..5 {
+            pool.submit(tile(job));
+        }
+        let sent = pool.dispatch(0.0);
+        assert_eq!(sent.len(), 6, "the session and two jobs a worker");
+        assert_eq!(pool.collapse(), vec![grow]);
+        assert_eq!(pool.size(), 1);
+        assert_eq!(pool.in_flight(), 0);
+        assert_eq!(pool.deaths(), 0, "no worker died: none could run");
+        let again: Vec<Request> = pool.dispatch(1.0).into_iter().map(|s| s.request).collect();
+        assert_eq!(
+            again,
+            vec![tile(0), tile(1)],
+            "jobs wait again in their order"
+        );
+        for _ in 0..2 {
+            let ticket = pool.slots[0].sent[0].ticket;
+            pool.answered(SESSIONS, ticket, 2.0);
+        }
+        let rest: Vec<Request> = pool.dispatch(3.0).into_iter().map(|s| s.request).collect();
+        assert_eq!(rest, vec![tile(2), tile(3)]);
+    }
 
     fn tile(job: u32) -> Request {
         Request::Tile {

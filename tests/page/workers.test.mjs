@@ -5,7 +5,8 @@
 // pattern hashes; a value changed mid-growth cancels what was in flight, so the shell ends as
 // a fresh load of the new link, and one changed on the grown shell remeshes it whole at once;
 // workers made to throw (`crash-workers=N`, test-only) or to hang (`hang-workers=N`) are
-// replaced, their work redone to the same bits, and the page says so the second time; and a
+// replaced, their work redone to the same bits, and the page says so the second time (and
+// where none answers anything, the shell grows on the thread that draws it); and a
 // pattern being previewed when its worker throws (`debug_crash_worker_on_fill`, a test-only
 // hook of the wasm module) is previewed whole all the same.
 import { test } from 'node:test';
@@ -144,6 +145,15 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       assert.equal(hung.meshHash, reference.meshHash);
       assert.equal(hung.patternHash, reference.patternHash);
       assert.equal(hung.mesh, reference.mesh);
+      if (backend === 'WebGL2') {
+        // No worker answers anything (every one throws on its first request, as where module
+        // workers cannot run): after the pool's size and two more, the shell grows where the
+        // view is drawn, to the same bits.
+        const none = await finished(browser, base, 'workers=2&crash-workers=50', MUREX);
+        assert.match(none.status, /Growing on the drawing worker's own thread: workers could not run here \(each stopped before answering/);
+        assert.equal(none.meshHash, reference.meshHash);
+        assert.equal(none.patternHash, reference.patternHash);
+      }
     } finally {
       await close();
     }
