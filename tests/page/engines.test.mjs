@@ -1,0 +1,177 @@
+// The page on the three browser engines (Chromium, Firefox ESR, WebKitGTK; see engines.mjs):
+// the gallery draws its cards; one shell of every form (a sweep with a reaction-diffusion
+// pattern, the cellular automaton, Kawaguchi's chambers and his branching, the BlobTree Murex
+// at a coarse resolution) grows and is drawn in the viewer, read in pixels; an edit in the
+// panel restarts growth and changes the address, and the new address gives the native core's
+// pattern bit for bit; Kawaguchi's four views in a line drawing show in every quarter; a GLB
+// download passes the Khronos validator; and no console error. Each engine draws where it can:
+// Chromium and Firefox in the drawing worker, WebKit (no WebGL2 on an OffscreenCanvas) on the
+// page's thread. The whole suite runs on Chromium (the other test files); this one is the
+// smoke test of the others. Firefox and WebKit run headed, under xvfb-run (make test).
+import { describe, test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { ENGINES, launchEngine, measure } from './engines.mjs';
+import { serve } from './serve.mjs';
+
+const ROOT = new URL('../../', import.meta.url).pathname;
+const SHOTS = new URL('./screenshots/engines/', import.meta.url).pathname;
+mkdirSync(SHOTS, { recursive: true });
+const validator = createRequire(import.meta.url)('gltf-validator');
+const VIEWPORT = { width: 900, height: 700 };
+const ONLY = process.env.ENGINES ? process.env.ENGINES.split(',') : ENGINES;
+
+/** Where each engine draws the main view. */
+const DRAWN_IN = { chromium: 'worker', firefox: 'worker', webkit: 'page' };
+
+/** One shell of every form, at full speed (the Murex on a coarse grid, to be quick). */
+const SHELLS = [
+  ['a sweep with its pattern', 'oliva-porphyria', ''],
+  ['the cellular automaton', 'ca-trochidae', ''],
+  ["Kawaguchi's chambers", 'kawaguchi-horn', ''],
+  ["Kawaguchi's branching", 'kawaguchi-tendril', ''],
+  ['the BlobTree Murex', 'murex-cabritii', '&form.resolution=40'],
+];
+
+/** The hash of the pattern the native command line computes for a link. */
+function nativePatternHash(fragment) {
+  const out = execFileSync(`${ROOT}target/release/seashells`, ['pattern', '--link', fragment, '--out', `${SHOTS}native.png`]);
+  return /hash ([0-9a-f]{16})/.exec(out.toString())[1];
+}
+
+/** Asserts that `png` shows a lit shell: enough of it differs from the background, in shades. */
+function assertDrawn(png, what, share = 0.03) {
+  const seen = measure(png);
+  assert.ok(seen.share > share, `${what} covers only ${seen.share.toFixed(4)} of its picture`);
+  assert.ok(seen.shades > 30, `${what} has only ${seen.shades} shades: not a lit shell`);
+}
+
+for (const engine of ONLY) {
+  describe(`the page on ${engine}`, { timeout: 1_200_000 }, () => {
+    let server;
+    let base;
+    let browser;
+
+    before(async () => {
+      server = await serve(new URL('../../www/', import.meta.url).pathname);
+      base = `http://127.0.0.1:${server.address().port}/`;
+      browser = await launchEngine(engine);
+      console.log(`${engine} ${browser.version}`);
+    });
+
+    after(async () => {
+      await browser?.close();
+      server?.close();
+    });
+
+    /** Opens `fragment` in a new page of this engine. */
+    async function open(fragment) {
+      const page = await browser.newPage(VIEWPORT);
+      await page.goto(`${base}${fragment}`);
+      return page;
+    }
+
+    test('the gallery lists every shell and draws its cards', async () => {
+      const page = await open('');
+      try {
+        const state = await page.waitForState(['gallery', 'error']);
+        assert.equal(state.state, 'gallery');
+        assert.equal(await page.evaluate(() => document.querySelectorAll('a.card').length), 45);
+        await page.waitFor(() => document.body.dataset.pictures === 'done', null, 600_000, 'every picture drawn');
+        for (const id of ['diskoid', 'oliva-porphyria', 'kawaguchi-horn']) {
+          const png = await page.shot(`a.card[data-preset="${id}"] img`);
+          writeFileSync(`${SHOTS}${engine}-card-${id}.png`, png);
+          assertDrawn(png, `the card of ${id}`);
+        }
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+
+    for (const [form, id, extra] of SHELLS) {
+      test(`${form} grows and is drawn in the viewer`, async () => {
+        const page = await open(`#v=1&preset=${id}&growth.speed=200${extra}`);
+        try {
+          const started = await page.waitForState(['growing', 'grown', 'error']);
+          assert.notEqual(started.state, 'error', await page.evaluate(() => document.getElementById('message').textContent));
+          assert.equal(started.drawnIn, DRAWN_IN[engine], `${await page.evaluate(() => document.getElementById('workers-status').textContent)} ${page.said().join(' | ')}`);
+          assert.equal(started.backend, 'WebGL2');
+          await page.click('#finish');
+          const grown = await page.waitForState(['grown', 'error', 'stopped'], 600_000);
+          assert.equal(grown.state, 'grown', await page.evaluate(() => document.getElementById('message').textContent));
+          const png = await page.shot('#shell');
+          writeFileSync(`${SHOTS}${engine}-${id}.png`, png);
+          assertDrawn(png, id);
+          assert.equal(await page.evaluate(() => document.getElementById('message').hidden), true);
+          assert.deepEqual(await page.errors(), []);
+        } finally {
+          await page.close();
+        }
+      });
+    }
+
+    test("an edit in the panel restarts growth and changes the address, which gives the native core's pattern", async () => {
+      const page = await open('#v=1&preset=oliva-porphyria&growth.speed=200');
+      try {
+        const first = await page.waitForState(['grown'], 600_000);
+        await page.evaluate(() => {
+          const slider = document.querySelector('[data-key="pattern.model.d_a"] input.slider');
+          slider.value = '300';
+          slider.dispatchEvent(new Event('input', { bubbles: true }));
+          slider.dispatchEvent(new Event('change', { bubbles: true }));
+        });
+        await page.waitFor(() => location.hash.includes('pattern.model.d_a=0.15'), null, 30_000, 'the edited address');
+        const link = await page.evaluate(() => location.hash);
+        const grown = await page.waitForState(['grown'], 600_000);
+        assert.notEqual(grown.patternHash, first.patternHash, 'a new diffusion gives a new pattern');
+        assert.equal(grown.patternHash, nativePatternHash(link.slice(1)), 'the same bits as the native core');
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+
+    test("Kawaguchi's four views show a line drawing in every quarter", async () => {
+      const page = await open('#v=1&preset=kawaguchi-shell&material.drawing=lines&view=four&growth.speed=200');
+      try {
+        const state = await page.waitForState(['grown'], 600_000);
+        assert.equal(state.layout, 'four');
+        const png = await page.shot('#shell');
+        writeFileSync(`${SHOTS}${engine}-four-views.png`, png);
+        const { PNG } = await import('pngjs');
+        const whole = PNG.sync.read(png);
+        const { width, height } = whole;
+        // Each quarter (the pane labels leave the canvas's edges) holds lines of the shell.
+        for (const [x, y] of [[0, 0], [1, 0], [0, 1], [1, 1]]) {
+          const quarter = new PNG({ width: width >> 1, height: height >> 1 });
+          PNG.bitblt(whole, quarter, x * (width >> 1), y * (height >> 1), width >> 1, height >> 1, 0, 0);
+          const seen = measure(PNG.sync.write(quarter));
+          assert.ok(seen.share > 0.005, `the quarter (${x}, ${y}) shows ${seen.share.toFixed(4)} of lines`);
+        }
+        assert.equal(await page.evaluate(() => document.querySelectorAll('#panes .pane').length), 4);
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+
+    test('the GLB download passes the Khronos glTF validator', async () => {
+      const page = await open('#v=1&preset=kawaguchi-horn&growth.speed=200');
+      try {
+        await page.waitForState(['grown'], 600_000);
+        const glb = await page.download('#download-glb', 'kawaguchi-horn.glb');
+        writeFileSync(`${SHOTS}${engine}-kawaguchi-horn.glb`, glb);
+        const report = await validator.validateBytes(new Uint8Array(glb));
+        assert.equal(report.issues.numErrors, 0, JSON.stringify(report.issues.messages.slice(0, 5)));
+        assert.ok(report.info.totalTriangleCount > 1000, `${report.info.totalTriangleCount} triangles`);
+        assert.equal(await page.evaluate(() => document.body.dataset.download), 'offered');
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+  });
+}
