@@ -37,9 +37,17 @@ deps-build:
 	@command -v node >/dev/null || { $(APT) update && $(APT) install -y nodejs npm; }
 	@node -e "$$NPM_INSTALLED" || npm ci --no-audit --no-fund
 
+## The three browser engines from Debian's packages: Chromium and its driver, Firefox ESR,
+## WebKitGTK's WebDriver (with its MiniBrowser), and Xvfb, the display Firefox and WebKit run
+## headed on (only headed do they get WebGL2, from Mesa's llvmpipe).
 deps-browser:
-	@command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
-	  { $(APT) update && $(APT) install -y chromium chromium-driver; }
+	@missing=""; \
+	  command -v chromium >/dev/null || missing="$$missing chromium"; \
+	  command -v chromedriver >/dev/null || missing="$$missing chromium-driver"; \
+	  command -v firefox-esr >/dev/null || missing="$$missing firefox-esr"; \
+	  command -v WebKitWebDriver >/dev/null || missing="$$missing webkit2gtk-driver"; \
+	  command -v xvfb-run >/dev/null && command -v xauth >/dev/null || missing="$$missing xvfb xauth"; \
+	  if [ -n "$$missing" ]; then $(APT) update && $(APT) install -y $$missing; fi
 	@command -v wasm-pack >/dev/null || cargo install wasm-pack --locked
 
 ## Checkers nobody here wrote, for what leaves the product: trimesh for meshes (networkx and
@@ -76,9 +84,14 @@ test-browser: deps-browser
 	WASM_BINDGEN_TEST_WEBDRIVER_JSON=tests/webdriver.json CHROMEDRIVER=$$(command -v chromedriver) \
 	  wasm-pack test --headless --chrome --mode no-install
 
+## Page tests: the whole suite on Chromium, and tests/page/engines.test.mjs on Chromium,
+## Firefox and WebKit; all under Xvfb, which the headed engines need (headless Chromium ignores
+## it).
+XVFB := xvfb-run -a -s '-screen 0 1600x1200x24'
+
 test-page: build deps-browser
 	cargo build --release --bin seashells
-	node --test --test-concurrency=1 tests/page/
+	$(XVFB) node --test --test-concurrency=1 tests/page/
 
 ## Exported files read back by third-party libraries and checkers.
 test-files: deps-build deps-check
