@@ -752,10 +752,7 @@ impl App {
     /// words; growth starts again from the apex.
     fn fall_back(&mut self, why: String) {
         if !self.viewer.in_worker() {
-            page::show_no_3d(&why);
-            let viewer =
-                Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
-            self.install(ViewLink::Here(Box::new(viewer)), None);
+            self.without_3d(&why);
             return;
         }
         web_sys::console::info_1(&format!("The view moves to the page's thread: {why}").into());
@@ -766,10 +763,7 @@ impl App {
         let element = match replace("shell") {
             Ok(element) => element,
             Err(e) => {
-                page::show_no_3d(&format!("{why}; {e}"));
-                let viewer =
-                    Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
-                self.install(ViewLink::Here(Box::new(viewer)), None);
+                self.without_3d(&format!("{why}; {e}"));
                 return;
             }
         };
@@ -786,6 +780,14 @@ impl App {
         self.moving = Some(Moving { element, opened });
     }
 
+    /// No viewer can draw here (`why`): one that draws nothing takes the main viewer's place,
+    /// and the page says so in the words of its `#no-3d` notice.
+    fn without_3d(&mut self, why: &str) {
+        page::show_no_3d(why);
+        let viewer = Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
+        self.install(ViewLink::Here(Box::new(viewer)), None);
+    }
+
     /// Takes the viewer opened on the page's thread once the browser has answered (or, when it
     /// could not be opened, one that draws nothing).
     fn take_moved(&mut self) {
@@ -799,10 +801,7 @@ impl App {
         match opened {
             Ok(viewer) => self.install(ViewLink::Here(Box::new(viewer)), Some(element)),
             Err(why) => {
-                page::show_no_3d(&why);
-                let viewer =
-                    Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
-                self.install(ViewLink::Here(Box::new(viewer)), None);
+                self.without_3d(&why);
             }
         }
     }

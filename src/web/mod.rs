@@ -167,7 +167,7 @@ async fn main_viewer(
     background: [u8; 3],
     workers: Rc<RefCell<workers::Workers>>,
 ) -> Result<ViewLink, String> {
-    let element = if view_link::in_worker() {
+    let (element, note) = if view_link::in_worker() {
         let started = match view_canvas::hand_over(&element) {
             Ok(offscreen) => ViewWorker::start(offscreen, true, background).await,
             Err(e) => Err(e),
@@ -178,21 +178,20 @@ async fn main_viewer(
                 web_sys::console::info_1(
                     &format!("The view is drawn on the page's thread: {e}").into(),
                 );
-                let element = view_canvas::replace("shell")?;
-                let status = format!(
+                let note = format!(
                     "{} Drawn on the page's thread: this browser cannot draw in a worker.",
                     workers.borrow().status()
                 );
-                let viewer =
-                    Viewer::new(Canvas::Element(element), true, background, true, workers).await?;
-                page::set_text("workers-status", &status);
-                return Ok(ViewLink::Here(Box::new(viewer)));
+                (view_canvas::replace("shell")?, Some(note))
             }
         }
     } else {
-        element
+        (element, None)
     };
     let viewer = Viewer::new(Canvas::Element(element), true, background, true, workers).await?;
+    if let Some(note) = note {
+        page::set_text("workers-status", &note);
+    }
     Ok(ViewLink::Here(Box::new(viewer)))
 }
 

@@ -1,13 +1,15 @@
 //! A viewer: one canvas (a canvas element of the page, or an `OffscreenCanvas` one handed its
-//! drawing to) and
-//! its renderer, a shell growing on it, what its planar pattern shows, and the camera the
-//! pointer turns. It touches nothing of the page, so that it runs in the worker that draws the
-//! main view (`view_worker.rs`) as well as on the page's thread (`view_link.rs`). Loading another spec restarts growth without reloading the
-//! page. The page's main view is one viewer, whose camera follows the growing shell; the
-//! gallery's pictures are drawn by another, framed on the whole shell. While a pattern slider
-//! is dragged, the planar view previews the whole pattern of its values instead. When the
-//! browser takes the graphics device away, the viewer opens another (`recovery.rs`) and uploads
-//! the shell grown so far to it: growth goes on from where it was.
+//! drawing to) and its renderer, a shell growing on it, what its planar pattern shows, and the
+//! camera the pointer turns. It touches nothing of the page, so that it runs in the worker that
+//! draws the main view (`view_worker.rs`) as well as on the page's thread (`view_link.rs`).
+//! Loading another spec restarts growth without reloading the page. The page's main view is one
+//! viewer, whose camera follows the growing shell; the gallery's pictures are drawn by another,
+//! framed on the whole shell. While a pattern slider is dragged, the planar view previews the
+//! whole pattern of its values instead. When the browser takes the graphics device away, the
+//! viewer opens another (`recovery.rs`) and uploads the shell grown so far to it: growth goes
+//! on from where it was. Where the browser draws no 3D, a viewer without a renderer grows the
+//! shell all the same, for its pattern and its files; and one whose frames the GPU stops
+//! finishing says so, for the page to move it where it can draw.
 
 use super::activity;
 use super::clock::now;

@@ -3,8 +3,9 @@
 // pattern, the cellular automaton, Kawaguchi's chambers and his branching, the BlobTree Murex
 // at a coarse resolution) grows and is drawn in the viewer, read in pixels; an edit in the
 // panel restarts growth and changes the address, and the new address gives the native core's
-// pattern bit for bit; Kawaguchi's four views in a line drawing show in every quarter; a GLB
-// download passes the Khronos validator; and no console error. Each engine draws where it can:
+// pattern bit for bit; Kawaguchi's four views in a line drawing show in every quarter; a lost
+// WebGL context is survived; a GLB download passes the Khronos validator; and no console
+// error. Each engine draws where it can:
 // Chromium and Firefox in the drawing worker, WebKit (no WebGL2 on an OffscreenCanvas) on the
 // page's thread. The whole suite runs on Chromium (the other test files); this one is the
 // smoke test of the others. Firefox and WebKit run headed, under xvfb-run (make test).
@@ -168,6 +169,30 @@ for (const engine of ONLY) {
           assert.ok(seen.share > 0.005, `the quarter (${x}, ${y}) shows ${seen.share.toFixed(4)} of lines`);
         }
         assert.equal(await page.evaluate(() => document.querySelectorAll('#panes .pane').length), 4);
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+
+    test('a lost WebGL context that never comes back is survived on a fresh canvas', async () => {
+      const page = await open('#v=1&preset=stripes&growth.speed=8');
+      try {
+        await page.waitFor(() => Number(document.body.dataset.rows) >= 100, null, 180_000, '100 rows');
+        // The wasm module's test-only hook (src/web/debug.rs) loses the context as the browser
+        // would, and never gives it back.
+        await page.evaluate(async () => {
+          const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
+          module.debug_lose_context();
+        });
+        await page.waitFor(() => document.body.dataset.recoveries === '1', null, 60_000, 'a recovery');
+        await page.click('#finish');
+        const grown = await page.waitForState(['grown', 'error'], 600_000);
+        assert.equal(grown.state, 'grown', await page.evaluate(() => document.getElementById('message').textContent));
+        assert.match(await page.evaluate(() => document.getElementById('message').textContent), /opened again, with WebGL2/);
+        const png = await page.shot('#shell');
+        writeFileSync(`${SHOTS}${engine}-recovered.png`, png);
+        assertDrawn(png, 'the shell after the lost context');
         assert.deepEqual(await page.errors(), []);
       } finally {
         await page.close();
