@@ -4,7 +4,7 @@
 //! `webglcontextrestored` events) apart from an uncaptured error, so that the page can open a
 //! device again after the one and say the other in words.
 
-use super::Canvas;
+use super::canvas::Canvas;
 use std::sync::{Arc, Mutex};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::Closure;
