@@ -48,7 +48,6 @@ deps-browser:
 	  command -v WebKitWebDriver >/dev/null || missing="$$missing webkit2gtk-driver"; \
 	  command -v xvfb-run >/dev/null && command -v xauth >/dev/null || missing="$$missing xvfb xauth"; \
 	  if [ -n "$$missing" ]; then $(APT) update && $(APT) install -y $$missing; fi
-	@command -v wasm-pack >/dev/null || cargo install wasm-pack --locked
 
 ## Checkers nobody here wrote, for what leaves the product: trimesh for meshes (networkx and
 ## lxml for 3MF, Pillow for textures), the Khronos glTF validator (npm, in deps-build).
@@ -80,9 +79,12 @@ lint:
 test-native:
 	cargo test
 
-test-browser: deps-browser
-	WASM_BINDGEN_TEST_WEBDRIVER_JSON=tests/webdriver.json CHROMEDRIVER=$$(command -v chromedriver) \
-	  wasm-pack test --headless --chrome --mode no-install
+## The in-browser tests (tests/browser.rs, the only test target with #[wasm_bindgen_test]):
+## built for wasm and run by wasm-bindgen-cli's test runner in headless Chromium.
+test-browser: deps-build deps-browser
+	CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
+	  WASM_BINDGEN_TEST_WEBDRIVER_JSON=tests/webdriver.json CHROMEDRIVER=$$(command -v chromedriver) \
+	  cargo test --target $(TARGET) --test browser
 
 ## Page tests: the whole suite on Chromium, and tests/page/engines.test.mjs on Chromium,
 ## Firefox and WebKit; all under Xvfb, which the headed engines need (headless Chromium ignores

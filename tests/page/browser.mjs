@@ -2,6 +2,7 @@
 // graphics backend on these machines (see ../shared/TOOLCHAIN.md), and helpers that read the
 // page's own signals and its pixels.
 import assert from 'node:assert/strict';
+import { PNG } from 'pngjs';
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
 
@@ -77,37 +78,29 @@ export async function waitForState(page, states, timeout = 120_000) {
   return page.evaluate(() => ({ ...document.body.dataset }));
 }
 
-/**
- * Reads the canvas's pixels from a screenshot and measures them against the background
- * colour (the top-left pixel): the share of pixels that differ, and how many distinct shades
- * (colours quantised to 4 bits a channel) the differing ones have.
- */
+/** Measures the canvas as shown, from a screenshot kept in `file` (see `measurePng`). */
 export async function measureCanvas(page, file) {
-  const canvas = page.locator('#shell');
-  return measurePng(page, await canvas.screenshot({ path: file }));
+  return measurePng(await page.locator('#shell').screenshot({ path: file }));
 }
 
-/** The same measure as `measureCanvas`, of any PNG's bytes, computed in `page`. */
-export function measurePng(page, png) {
-  return page.evaluate(async (bytes) => {
-    const blob = new Blob([new Uint8Array(bytes)], { type: 'image/png' });
-    const bitmap = await createImageBitmap(blob);
-    const c = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const g = c.getContext('2d');
-    g.drawImage(bitmap, 0, 0);
-    const { data } = g.getImageData(0, 0, bitmap.width, bitmap.height);
-    const bg = [data[0], data[1], data[2]];
-    let differing = 0;
-    const shades = new Set();
-    for (let i = 0; i < data.length; i += 4) {
-      const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
-      if (d > 24) {
-        differing += 1;
-        shades.add(((data[i] >> 4) << 8) | ((data[i + 1] >> 4) << 4) | (data[i + 2] >> 4));
-      }
+/**
+ * How much of a PNG differs from its top-left pixel (the background): the share of pixels that
+ * differ by more than 24 in the sum of their channels, and how many distinct shades (colours
+ * quantised to 4 bits a channel) the differing ones have. Read in Node (pngjs).
+ */
+export function measurePng(png) {
+  const { width, height, data } = PNG.sync.read(png);
+  const bg = [data[0], data[1], data[2]];
+  let differing = 0;
+  const shades = new Set();
+  for (let i = 0; i < data.length; i += 4) {
+    const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
+    if (d > 24) {
+      differing += 1;
+      shades.add(((data[i] >> 4) << 8) | ((data[i + 1] >> 4) << 4) | (data[i + 2] >> 4));
     }
-    return { share: differing / (data.length / 4), shades: shades.size, width: bitmap.width, height: bitmap.height };
-  }, [...png]);
+  }
+  return { share: differing / (width * height), shades: shades.size, width, height };
 }
 
 /**

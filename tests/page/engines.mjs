@@ -16,6 +16,8 @@ import { chromium } from 'playwright-core';
 import puppeteer from 'puppeteer-core';
 import { BACKENDS } from './browser.mjs';
 
+export { measurePng as measure } from './browser.mjs';
+
 export const ENGINES = ['chromium', 'firefox', 'webkit'];
 
 const MINIBROWSER = '/usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser';
@@ -143,6 +145,25 @@ class Page {
   }
 }
 
+/**
+ * A page of playwright's or puppeteer's (their pages answer alike), `shot` reading an element's
+ * PNG.
+ */
+function listened(page, shot) {
+  const [logged, said] = [[], []];
+  page.on('console', (m) => { (m.type() === 'error' ? logged : said).push(m.text()); });
+  page.on('pageerror', (e) => logged.push(String(e)));
+  return new Page({
+    logged,
+    said,
+    goto: (url) => page.goto(url),
+    run: (fn, arg) => page.evaluate(fn, arg),
+    shot,
+    click: (selector) => page.click(selector),
+    close: () => page.close(),
+  });
+}
+
 /** Chromium through playwright-core. */
 async function chromiumEngine() {
   const browser = await chromium.launch({
@@ -153,18 +174,7 @@ async function chromiumEngine() {
     version: browser.version(),
     async newPage(viewport) {
       const page = await browser.newPage({ viewport });
-      const [logged, said] = [[], []];
-      page.on('console', (m) => { (m.type() === 'error' ? logged : said).push(m.text()); });
-      page.on('pageerror', (e) => logged.push(String(e)));
-      return new Page({
-        logged,
-        said,
-        goto: (url) => page.goto(url),
-        run: (fn, arg) => page.evaluate(fn, arg),
-        shot: (selector) => page.locator(selector).screenshot(),
-        click: (selector) => page.click(selector),
-        close: () => page.close(),
-      });
+      return listened(page, (selector) => page.locator(selector).screenshot());
     },
     close: () => browser.close(),
   };
@@ -184,18 +194,7 @@ async function firefoxEngine() {
     async newPage(viewport) {
       const page = await browser.newPage();
       await page.setViewport(viewport);
-      const [logged, said] = [[], []];
-      page.on('console', (m) => { (m.type() === 'error' ? logged : said).push(m.text()); });
-      page.on('pageerror', (e) => logged.push(String(e)));
-      return new Page({
-        logged,
-        said,
-        goto: (url) => page.goto(url),
-        run: (fn, arg) => page.evaluate(fn, arg),
-        shot: async (selector) => Buffer.from(await (await page.$(selector)).screenshot()),
-        click: (selector) => page.click(selector),
-        close: () => page.close(),
-      });
+      return listened(page, async (selector) => Buffer.from(await (await page.$(selector)).screenshot()));
     },
     close: () => browser.close(),
   };
@@ -304,22 +303,3 @@ export function launchEngine(engine) {
   return { chromium: chromiumEngine, firefox: firefoxEngine, webkit: webkitEngine }[engine]();
 }
 
-/**
- * How much of a PNG differs from its top-left pixel (the background): the share of pixels that
- * differ by more than 24 in the sum of their channels, and how many shades (4 bits a channel)
- * those have — the measure of tests/page/browser.mjs, read here in Node.
- */
-export function measure(png) {
-  const { width, height, data } = PNG.sync.read(png);
-  const bg = [data[0], data[1], data[2]];
-  let differing = 0;
-  const shades = new Set();
-  for (let i = 0; i < data.length; i += 4) {
-    const d = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
-    if (d > 24) {
-      differing += 1;
-      shades.add(((data[i] >> 4) << 8) | ((data[i + 1] >> 4) << 4) | (data[i + 2] >> 4));
-    }
-  }
-  return { share: differing / (width * height), shades: shades.size, width, height };
-}

@@ -11,13 +11,12 @@
 // smoke test of the others. Firefox and WebKit run headed, under xvfb-run (make test).
 import { describe, test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { ENGINES, launchEngine, measure } from './engines.mjs';
+import { nativePattern } from './native.mjs';
 import { serve } from './serve.mjs';
 
-const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = new URL('./screenshots/engines/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
 const validator = createRequire(import.meta.url)('gltf-validator');
@@ -43,12 +42,6 @@ const SHELLS = [
   ["Kawaguchi's branching", 'kawaguchi-tendril', ''],
   ['the BlobTree Murex', 'murex-cabritii', '&form.resolution=40'],
 ];
-
-/** The hash of the pattern the native command line computes for a link. */
-function nativePatternHash(fragment) {
-  const out = execFileSync(`${ROOT}target/release/seashells`, ['pattern', '--link', fragment, '--out', `${SHOTS}native.png`]);
-  return /hash ([0-9a-f]{16})/.exec(out.toString())[1];
-}
 
 /** Asserts that `png` shows a lit shell: enough of it differs from the background, in shades. */
 function assertDrawn(png, what, share = 0.03) {
@@ -144,7 +137,7 @@ for (const engine of ONLY) {
         const link = await page.evaluate(() => location.hash);
         const grown = await page.waitForState(['grown'], 600_000);
         assert.notEqual(grown.patternHash, first.patternHash, 'a new diffusion gives a new pattern');
-        assert.equal(grown.patternHash, nativePatternHash(link.slice(1)), 'the same bits as the native core');
+        assert.equal(grown.patternHash, nativePattern(link.slice(1)), 'the same bits as the native core');
         assert.deepEqual(await page.errors(), []);
       } finally {
         await page.close();

@@ -124,7 +124,7 @@ test('without WebGPU or WebGL2 the page says why in a sentence, lists every shel
     // A shell still grows: its pattern in the planar view, its files.
     await page.click('a.card[data-preset="oliva-porphyria"]');
     await page.waitForFunction(() => Number(document.body.dataset.rows) >= 300, null, { timeout: 120_000 });
-    const planar = await measurePng(page, await page.locator('#planar').screenshot());
+    const planar = await measurePng(await page.locator('#planar').screenshot());
     assert.ok(planar.share > 0.05 && planar.shades > 5, `the planar view shows the pattern (${JSON.stringify(planar)})`);
     await page.click('#finish');
     await waitForState(page, ['grown']);

@@ -4,16 +4,15 @@
 // link with bad implicit numbers gets a message, and the preset's values or the cap.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { mkdirSync, readdirSync } from 'node:fs';
 import { growPreset, open, session, waitForState, measureCanvas } from './browser.mjs';
+import { nativeMesh } from './native.mjs';
 
 const SHOTS = new URL('./screenshots/implicit/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
 const IMPLICIT_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
   .filter((f) => (f.startsWith('implicit-') || f.startsWith('murex-')) && f.endsWith('.json'))
   .map((f) => f.slice(0, -5));
-const CLI = new URL('../../target/release/seashells', import.meta.url).pathname;
 
 for (const backend of ['WebGL2', 'WebGPU']) {
   test(`an implicit whorl grows section by section on ${backend}`, async () => {
@@ -67,7 +66,7 @@ test('an implicit shell grows in wasm into the very mesh the command line writes
       const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
       // Speed is the benchmark's to measure: a loaded machine may take minutes.
       const grown = await waitForState(page, ['grown'], 300_000);
-      const out = execFileSync(CLI, ['mesh', '--link', link, '--out', `${SHOTS}native.stl`]).toString();
+      const out = nativeMesh(link).said;
       assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}, \\d+ bytes$`, 'm'),
         `${link}: wasm ${grown.mesh} ${grown.meshHash}, native ${out}`);
       assert.deepEqual(errors, []);

@@ -2,9 +2,9 @@
 // from the wasm build), the planar view shows it, and it can be downloaded as a PNG.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { open, session, waitForState } from './browser.mjs';
+import { nativePattern } from './native.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -17,12 +17,6 @@ before(async () => {
   ({ browser, base, close } = await session());
 });
 after(() => close());
-
-/** The hash the native command line reports for a link. */
-function nativeHash(fragment) {
-  const out = execFileSync(`${ROOT}target/release/seashells`, ['pattern', '--link', fragment, '--out', `${SHOTS}native.png`]);
-  return /hash ([0-9a-f]{16})/.exec(out.toString())[1];
-}
 
 const LINKS = [
   'v=1&preset=oliva-porphyria',
@@ -37,7 +31,7 @@ for (const fragment of LINKS) {
     try {
       const state = await waitForState(page, ['grown', 'stopped', 'error']);
       assert.equal(state.state, 'grown');
-      assert.equal(state.patternHash, nativeHash(fragment));
+      assert.equal(state.patternHash, nativePattern(fragment));
       assert.deepEqual(errors, []);
     } finally {
       await page.close();

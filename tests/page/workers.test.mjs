@@ -1,4 +1,4 @@
-// Growth off the page's thread (issue 30): on WebGL2 and WebGPU, the Murex finished by a pool
+// Growth off the page's thread (issue 30): the Murex finished by a pool
 // of 1, 2 or 4 workers (`workers=N`, a debug parameter of the page's address; with 4 the
 // finish is the GLB export's, asked while the shell grows, and the file is the command
 // line's) and on the page's own thread (`workers=0`, the fallback) has the same mesh and
@@ -8,7 +8,9 @@
 // replaced, their work redone to the same bits, and the page says so the second time (and
 // where none answers anything, the shell grows on the thread that draws it); and a
 // pattern being previewed when its worker throws (`debug_crash_worker_on_fill`, a test-only
-// hook of the wasm module) is previewed whole all the same.
+// hook of the wasm module) is previewed whole all the same. The workers grow the shell and
+// never touch the GPU, so these run on WebGL2 alone (the backend every engine can give); the
+// drawing on WebGPU is the other suites' (drawing, growth, implicit, survive).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -16,6 +18,7 @@ import { readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { open, session, waitForState } from './browser.mjs';
+import { nativeMesh, nativePattern } from './native.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 
@@ -56,136 +59,134 @@ async function finished(browser, base, query, fragment, glb = false) {
   }
 }
 
-for (const backend of ['WebGL2', 'WebGPU']) {
-  test(`the Murex finished by 1, 2 or 4 workers or on the page's thread is the same on ${backend}`, async () => {
-    const { browser, base, close } = await session(backend);
-    try {
-      const runs = {};
-      for (const workers of [1, 2, 4, 0]) {
-        // With 4 workers the GLB is asked for while the shell grows: the export finishes it.
-        runs[workers] = await finished(browser, base, `workers=${workers}`, MUREX, workers === 4);
-        assert.equal(runs[workers].workers, String(workers));
-      }
-      // The file is the command line's (its triangles may come in another order: the page grew
-      // some before finishing), by its layout: counts, bounds, attributes.
-      const out = join(tmpdir(), `murex-${process.pid}.glb`);
-      execFileSync(`${ROOT}target/release/seashells`, ['mesh', '--link', MUREX, '--out', out]);
-      const cli = readFileSync(out);
-      assert.equal(runs[4].bytes.length, cli.length, 'the GLB of the whole shell');
-      assert.deepEqual(glbJson(runs[4].bytes), glbJson(cli));
-      // Without workers the shell grows on the thread that draws the view: the drawing
-      // worker's.
-      assert.match(runs[0].status, /drawing worker's own thread/);
-      assert.match(runs[2].status, /2 workers/);
-      for (const workers of [2, 4, 0]) {
-        assert.equal(runs[workers].meshHash, runs[1].meshHash, `mesh with ${workers} workers`);
-        assert.equal(runs[workers].patternHash, runs[1].patternHash, `pattern with ${workers} workers`);
-        assert.equal(runs[workers].mesh, runs[1].mesh);
-      }
-      assert.match(runs[1].meshHash, /^[0-9a-f]{16}$/);
-    } finally {
-      await close();
+const backend = 'WebGL2';
+test(`the Murex finished by 1, 2 or 4 workers or on the page's thread is the same on ${backend}`, async () => {
+  const { browser, base, close } = await session(backend);
+  try {
+    const runs = {};
+    for (const workers of [1, 2, 4, 0]) {
+      // With 4 workers the GLB is asked for while the shell grows: the export finishes it.
+      runs[workers] = await finished(browser, base, `workers=${workers}`, MUREX, workers === 4);
+      assert.equal(runs[workers].workers, String(workers));
     }
-  });
+    // The file is the command line's (its triangles may come in another order: the page grew
+    // some before finishing), by its layout: counts, bounds, attributes.
+    const out = join(tmpdir(), `murex-${process.pid}.glb`);
+    execFileSync(`${ROOT}target/release/seashells`, ['mesh', '--link', MUREX, '--out', out]);
+    const cli = readFileSync(out);
+    assert.equal(runs[4].bytes.length, cli.length, 'the GLB of the whole shell');
+    assert.deepEqual(glbJson(runs[4].bytes), glbJson(cli));
+    // Without workers the shell grows on the thread that draws the view: the drawing
+    // worker's.
+    assert.match(runs[0].status, /drawing worker's own thread/);
+    assert.match(runs[2].status, /2 workers/);
+    for (const workers of [2, 4, 0]) {
+      assert.equal(runs[workers].meshHash, runs[1].meshHash, `mesh with ${workers} workers`);
+      assert.equal(runs[workers].patternHash, runs[1].patternHash, `pattern with ${workers} workers`);
+      assert.equal(runs[workers].mesh, runs[1].mesh);
+    }
+    assert.match(runs[1].meshHash, /^[0-9a-f]{16}$/);
+  } finally {
+    await close();
+  }
+});
 
-  test(`a value changed while the Murex grows cancels the old growth on ${backend}`, async () => {
-    const { browser, base, close } = await session(backend);
-    try {
-      const { page, errors } = await open(browser, `${base}?workers=2#${MUREX}&growth.speed=2`);
-      await waitForState(page, ['growing']);
-      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 40, null, { timeout: 120_000 });
-      const number = page.locator('[data-key="form.resolution"] input.number');
-      await number.fill('40');
-      await number.press('Enter');
-      await page.waitForFunction(() => location.hash.includes('form.resolution=40'));
-      await page.locator('#shell').click();
-      await page.keyboard.press('End');
-      const edited = await waitForState(page, ['grown', 'error'], 180_000);
-      assert.equal(edited.state, 'grown');
-      const link = await page.evaluate(() => location.hash.slice(1));
-      // A value changed on the grown shell, growth paused: it is remeshed whole at once, with
-      // no End pressed (grown again from its apex, it would wait at its first rows).
-      await page.locator('#shell').click();
-      await page.keyboard.press('Space');
-      await page.waitForFunction(() => document.body.dataset.playing === 'false');
-      await number.fill('44');
-      await number.press('Enter');
-      await page.waitForFunction(() => location.hash.includes('form.resolution=44'));
-      const remeshed = await waitForState(page, ['grown', 'error'], 180_000);
-      assert.equal(remeshed.state, 'grown');
-      const remeshedLink = await page.evaluate(() => location.hash.slice(1));
-      assert.deepEqual(errors, []);
-      await page.close();
-      const fresh = await finished(browser, base, 'workers=2', link);
-      assert.equal(edited.meshHash, fresh.meshHash, 'the edited shell is the new link\'s');
-      assert.equal(edited.patternHash, fresh.patternHash);
-      const freshRemeshed = await finished(browser, base, 'workers=1', remeshedLink);
-      assert.equal(remeshed.meshHash, freshRemeshed.meshHash, 'the remeshed shell is the new link\'s');
-      assert.equal(remeshed.patternHash, freshRemeshed.patternHash);
-    } finally {
-      await close();
-    }
-  });
+test(`a value changed while the Murex grows cancels the old growth on ${backend}`, async () => {
+  const { browser, base, close } = await session(backend);
+  try {
+    const { page, errors } = await open(browser, `${base}?workers=2#${MUREX}&growth.speed=2`);
+    await waitForState(page, ['growing']);
+    await page.waitForFunction(() => Number(document.body.dataset.rows) >= 40, null, { timeout: 120_000 });
+    const number = page.locator('[data-key="form.resolution"] input.number');
+    await number.fill('40');
+    await number.press('Enter');
+    await page.waitForFunction(() => location.hash.includes('form.resolution=40'));
+    await page.locator('#shell').click();
+    await page.keyboard.press('End');
+    const edited = await waitForState(page, ['grown', 'error'], 180_000);
+    assert.equal(edited.state, 'grown');
+    const link = await page.evaluate(() => location.hash.slice(1));
+    // A value changed on the grown shell, growth paused: it is remeshed whole at once, with
+    // no End pressed (grown again from its apex, it would wait at its first rows).
+    await page.locator('#shell').click();
+    await page.keyboard.press('Space');
+    await page.waitForFunction(() => document.body.dataset.playing === 'false');
+    await number.fill('44');
+    await number.press('Enter');
+    await page.waitForFunction(() => location.hash.includes('form.resolution=44'));
+    const remeshed = await waitForState(page, ['grown', 'error'], 180_000);
+    assert.equal(remeshed.state, 'grown');
+    const remeshedLink = await page.evaluate(() => location.hash.slice(1));
+    assert.deepEqual(errors, []);
+    await page.close();
+    const fresh = await finished(browser, base, 'workers=2', link);
+    assert.equal(edited.meshHash, fresh.meshHash, 'the edited shell is the new link\'s');
+    assert.equal(edited.patternHash, fresh.patternHash);
+    const freshRemeshed = await finished(browser, base, 'workers=1', remeshedLink);
+    assert.equal(remeshed.meshHash, freshRemeshed.meshHash, 'the remeshed shell is the new link\'s');
+    assert.equal(remeshed.patternHash, freshRemeshed.patternHash);
+  } finally {
+    await close();
+  }
+});
 
-  test(`workers that throw or hang are replaced and their work redone on ${backend}`, async () => {
-    const { browser, base, close } = await session(backend);
-    try {
-      const reference = await finished(browser, base, 'workers=1', MUREX);
-      const crashed = await finished(browser, base, 'workers=1&crash-workers=2', MUREX);
-      assert.equal(crashed.workerDeaths, '2');
-      assert.match(crashed.status, /second time; it was replaced and its work done again/);
-      assert.equal(crashed.meshHash, reference.meshHash);
-      assert.equal(crashed.patternHash, reference.patternHash);
-      // Both first workers spin without answering: the sessions' worker on building the shell,
-      // the other on its first piece of the finish. Each is found out after a fifth of its
-      // request's allowance (the switch's), terminated, and its work done by a fresh one.
-      const hung = await finished(browser, base, 'workers=2&hang-workers=2', MUREX);
-      assert.equal(hung.workerDeaths, '2');
-      assert.match(hung.status, /did not answer in time\) for the second time; it was replaced and its work done again/);
-      assert.equal(hung.meshHash, reference.meshHash);
-      assert.equal(hung.patternHash, reference.patternHash);
-      assert.equal(hung.mesh, reference.mesh);
-      if (backend === 'WebGL2') {
-        // No worker answers anything (every one throws on its first request, as where module
-        // workers cannot run): after the pool's size and two more, the shell grows where the
-        // view is drawn, to the same bits.
-        const none = await finished(browser, base, 'workers=2&crash-workers=50', MUREX);
-        assert.match(none.status, /Growing on the drawing worker's own thread: workers could not run here \(each stopped before answering/);
-        assert.equal(none.meshHash, reference.meshHash);
-        assert.equal(none.patternHash, reference.patternHash);
-      }
-    } finally {
-      await close();
-    }
-  });
+test(`workers that throw or hang are replaced and their work redone on ${backend}`, async () => {
+  const { browser, base, close } = await session(backend);
+  try {
+    const native = nativeMesh(MUREX);
+    const reference = { meshHash: native.hash, patternHash: nativePattern(MUREX), mesh: native.counts };
+    const crashed = await finished(browser, base, 'workers=1&crash-workers=2', MUREX);
+    assert.equal(crashed.workerDeaths, '2');
+    assert.match(crashed.status, /second time; it was replaced and its work done again/);
+    assert.equal(crashed.meshHash, reference.meshHash);
+    assert.equal(crashed.patternHash, reference.patternHash);
+    // Both first workers spin without answering: the sessions' worker on building the shell,
+    // the other on its first piece of the finish. Each is found out after a fifth of its
+    // request's allowance (the switch's), terminated, and its work done by a fresh one.
+    const hung = await finished(browser, base, 'workers=2&hang-workers=2', MUREX);
+    assert.equal(hung.workerDeaths, '2');
+    assert.match(hung.status, /did not answer in time\) for the second time; it was replaced and its work done again/);
+    assert.equal(hung.meshHash, reference.meshHash);
+    assert.equal(hung.patternHash, reference.patternHash);
+    assert.equal(hung.mesh, reference.mesh);
+    // No worker answers anything (every one throws on its first request, as where module
+    // workers cannot run): after the pool's size and two more, the shell grows where the
+    // view is drawn, to the same bits.
+    const none = await finished(browser, base, 'workers=2&crash-workers=50', MUREX);
+    assert.match(none.status, /Growing on the drawing worker's own thread: workers could not run here \(each stopped before answering/);
+    assert.equal(none.meshHash, reference.meshHash);
+    assert.equal(none.patternHash, reference.patternHash);
+  } finally {
+    await close();
+  }
+});
 
-  test(`a pattern previewed while its worker dies is previewed whole by a fresh one on ${backend}`, async () => {
-    const { browser, base, close } = await session(backend);
-    try {
-      const { page, errors } = await open(browser, `${base}?workers=1#v=1&preset=oliva-porphyria&growth.speed=1`);
-      await waitForState(page, ['growing']);
-      await page.evaluate(async () => {
-        const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
-        module.debug_crash_worker_on_fill();
-        const range = document.querySelector('.field[data-key="pattern.model.d_a"] input[type=range]');
-        range.value = String(Math.round(Number(range.max) * 0.04));
-        range.dispatchEvent(new Event('input', { bubbles: true }));
-      });
-      await page.waitForFunction(() => document.body.dataset.preview === 'whole', null, { timeout: 60_000 });
-      const state = await page.evaluate(() => ({ ...document.body.dataset }));
-      assert.equal(state.workerDeaths, '1', 'the worker threw on its first rows of the preview');
-      const drawn = await page.evaluate(() => {
-        const c = document.getElementById('planar');
-        const { data } = c.getContext('2d').getImageData(0, c.height - 200, c.width, 200);
-        let n = 0;
-        for (let i = 3; i < data.length; i += 4) n += data[i] === 0 ? 0 : 1;
-        return n;
-      });
-      assert.equal(drawn, 400 * 200, 'every cell of the preview\'s last rows is drawn');
-      assert.deepEqual(errors, []);
-      await page.close();
-    } finally {
-      await close();
-    }
-  });
-}
+test(`a pattern previewed while its worker dies is previewed whole by a fresh one on ${backend}`, async () => {
+  const { browser, base, close } = await session(backend);
+  try {
+    const { page, errors } = await open(browser, `${base}?workers=1#v=1&preset=oliva-porphyria&growth.speed=1`);
+    await waitForState(page, ['growing']);
+    await page.evaluate(async () => {
+      const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
+      module.debug_crash_worker_on_fill();
+      const range = document.querySelector('.field[data-key="pattern.model.d_a"] input[type=range]');
+      range.value = String(Math.round(Number(range.max) * 0.04));
+      range.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await page.waitForFunction(() => document.body.dataset.preview === 'whole', null, { timeout: 60_000 });
+    const state = await page.evaluate(() => ({ ...document.body.dataset }));
+    assert.equal(state.workerDeaths, '1', 'the worker threw on its first rows of the preview');
+    const drawn = await page.evaluate(() => {
+      const c = document.getElementById('planar');
+      const { data } = c.getContext('2d').getImageData(0, c.height - 200, c.width, 200);
+      let n = 0;
+      for (let i = 3; i < data.length; i += 4) n += data[i] === 0 ? 0 : 1;
+      return n;
+    });
+    assert.equal(drawn, 400 * 200, 'every cell of the preview\'s last rows is drawn');
+    assert.deepEqual(errors, []);
+    await page.close();
+  } finally {
+    await close();
+  }
+});
