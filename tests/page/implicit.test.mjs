@@ -1,18 +1,14 @@
 // Implicit surfaces in the page (Galbraith, Prusinkiewicz & Wyvill): a BlobTree whorl grows on
-// screen on both backends, every implicit preset grows on WebGPU too (WebGL2:
-// presets.test.mjs), wasm meshes the same triangles, bit for bit, as the command line, and a
+// screen on both backends (every implicit preset grows in presets.test.mjs), wasm meshes the same triangles, bit for bit, as the command line, and a
 // link with bad implicit numbers gets a message, and the preset's values or the cap.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readdirSync } from 'node:fs';
-import { growPreset, open, session, waitForState, measureCanvas } from './browser.mjs';
+import { mkdirSync } from 'node:fs';
+import { open, session, waitForState, measureCanvas } from './browser.mjs';
 import { nativeMesh } from './native.mjs';
 
 const SHOTS = new URL('./screenshots/implicit/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
-const IMPLICIT_PRESETS = readdirSync(new URL('../../species/', import.meta.url))
-  .filter((f) => (f.startsWith('implicit-') || f.startsWith('murex-')) && f.endsWith('.json'))
-  .map((f) => f.slice(0, -5));
 
 for (const backend of ['WebGL2', 'WebGPU']) {
   test(`an implicit whorl grows section by section on ${backend}`, async () => {
@@ -39,19 +35,6 @@ for (const backend of ['WebGL2', 'WebGPU']) {
     }
   });
 }
-
-test('every implicit preset grows on WebGPU', async () => {
-  const { browser, base, close } = await session('WebGPU');
-  try {
-    assert.ok(IMPLICIT_PRESETS.length >= 6, IMPLICIT_PRESETS.join(' '));
-    for (const id of IMPLICIT_PRESETS) {
-      const state = await growPreset(browser, base, id, `${SHOTS}${id}-WebGPU.png`);
-      assert.equal(state.backend, 'WebGPU');
-    }
-  } finally {
-    await close();
-  }
-});
 
 test('an implicit shell grows in wasm into the very mesh the command line writes', async () => {
   const { browser, base, close } = await session();
