@@ -4,6 +4,7 @@
 
 use seashells_core::generator::Generator;
 use seashells_core::presets::{preset, presets};
+use seashells_core::spec::form::Form;
 use seashells_core::spec::pattern::Model;
 
 #[test]
@@ -12,7 +13,13 @@ fn every_row_the_clock_counts_is_a_row_of_the_pattern() {
         .iter()
         .filter(|p| p.spec.pattern.model != Model::None)
     {
-        let mut g = Generator::new(&p.spec).unwrap();
+        // The clock counts the same rows whatever the grid: an implicit shell meshes on a
+        // coarse one here, and its own is tested in murex_resolutions.rs.
+        let mut spec = p.spec.clone();
+        if let Form::Implicit(i) = &mut spec.form {
+            i.resolution = 32;
+        }
+        let mut g = Generator::new(&spec).unwrap();
         let mut step = 3;
         while !g.is_done() {
             let a = g.advance(step);

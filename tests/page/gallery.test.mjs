@@ -1,11 +1,13 @@
 // The gallery, the viewer's controls and panel, and links: every preset has a card with a
-// picture; a card opens a growing shell and Back returns; a slider changes the link and the
+// picture of its shell, grown in the page's workers from the preset's own spec (its mesh no
+// finer than the picture shows, src/view/picture.rs) and drawn lit on WebGL2 (on WebGPU in
+// survive.test.mjs; natively, every preset grows whole in tests/species.rs); a card opens a growing shell and Back returns; a slider changes the link and the
 // link reproduces the pattern bit for bit; bad links get messages and a working page;
 // the keyboard works; older links open; links copy; meshes download.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readdirSync, readFileSync } from 'node:fs';
-import { open, session, waitForState, cardPictures } from './browser.mjs';
+import { open, session, waitForState, cardPictures, measurePng } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -42,6 +44,11 @@ test('the gallery lists every preset in its group, each with a picture of its sh
     const pictures = await cardPictures(page);
     assert.ok(pictures.every((p) => p.png !== null), 'every card has its picture');
     assert.equal(new Set(pictures.map((p) => p.png.join(','))).size, pictures.length, 'every picture is a different shell');
+    // A lit surface has many shades; a small picture of a pale, plain shell (the Cardium's 26)
+    // has fewer than a large view, a flat fill a handful.
+    const unlit = pictures.map((p) => ({ preset: p.preset, ...measurePng(Buffer.from(p.png)) }))
+      .filter((m) => !(m.share > 0.03 && m.shades > 15)).map((m) => `${m.preset}: ${m.share.toFixed(3)} covered, ${m.shades} shades`);
+    assert.deepEqual(unlit, [], 'every picture is a visible, lit shell');
     await page.screenshot({ path: `${SHOTS}gallery.png`, fullPage: true });
     assert.deepEqual(errors, []);
   } finally {

@@ -1,10 +1,11 @@
 // Implicit surfaces in the page (Galbraith, Prusinkiewicz & Wyvill): a BlobTree whorl grows on
-// screen on both backends (every implicit preset grows in presets.test.mjs), wasm meshes the same triangles, bit for bit, as the command line, and a
-// link with bad implicit numbers gets a message, and the preset's values or the cap.
+// screen on both backends (every implicit preset is drawn in the gallery), wasm meshes the
+// same triangles, bit for bit, as the command line, and a link with bad implicit numbers gets a
+// message, and the preset's values or the cap.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { open, session, waitForState, measureCanvas } from './browser.mjs';
+import { finishGrowth, open, session, waitForState, measureCanvas } from './browser.mjs';
 import { nativeMesh } from './native.mjs';
 
 const SHOTS = new URL('./screenshots/implicit/', import.meta.url).pathname;
@@ -46,9 +47,9 @@ test('an implicit shell grows in wasm into the very mesh the command line writes
       'v=1&preset=murex-cabritii&form.resolution=48',
       'v=1&preset=murex-rd-spines&form.resolution=48',
     ]) {
-      const { page, errors } = await open(browser, `${base}#${link}&growth.speed=200`);
-      // Speed is the benchmark's to measure: a loaded machine may take minutes.
-      const grown = await waitForState(page, ['grown'], 300_000);
+      const { page, errors } = await open(browser, `${base}#${link}`);
+      const grown = await finishGrowth(page);
+      assert.equal(grown.state, 'grown', await page.textContent('#message'));
       const out = nativeMesh(link).said;
       assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}, \\d+ bytes$`, 'm'),
         `${link}: wasm ${grown.mesh} ${grown.meshHash}, native ${out}`);

@@ -1,5 +1,5 @@
 // Kawaguchi's GROWTH in the page: a chamber shell grows chamber by chamber on both backends
-// (every Kawaguchi preset grows in presets.test.mjs), the panel shows the chamber's own fields
+// (every Kawaguchi preset is drawn in the gallery), the panel shows the chamber's own fields
 // and a slider reshapes it, the panel's form switch turns a swept shell into a chamber stack,
 // and a branching form grows in wasm into the same mesh, segment for segment, as natively.
 import { test } from 'node:test';

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { differing, open, session, waitForState, measureCanvas } from './browser.mjs';
+import { differing, finishGrowth, open, session, measureCanvas } from './browser.mjs';
 
 const SHOTS = new URL('./screenshots/rendering/', import.meta.url).pathname;
 mkdirSync(SHOTS, { recursive: true });
@@ -20,13 +20,13 @@ const EFFECTS = [
 ];
 
 async function shot(browser, base, fragment, file) {
-  const { page, errors } = await open(browser, `${base}#${fragment}&growth.speed=200`, { width: 560, height: 560 });
+  const { page, errors } = await open(browser, `${base}#${fragment}`, { width: 560, height: 560 });
   try {
-    await waitForState(page, ['grown']);
+    assert.equal((await finishGrowth(page)).state, 'grown', fragment);
     const measure = await measureCanvas(page, file);
     assert.ok(measure.share > 0.03 && measure.shades > 30, `${fragment}: a blank picture`);
     assert.deepEqual(errors, []);
-    return { page: null, png: readFileSync(file) };
+    return readFileSync(file);
   } finally {
     await page.close();
   }
@@ -40,9 +40,7 @@ for (const backend of ['WebGL2', 'WebGPU']) {
       for (const [name, preset, change, least] of effects) {
         const plain = await shot(browser, base, `v=1&preset=${preset}&${PLAIN}`, `${SHOTS}${backend}-${name}-plain.png`);
         const shown = await shot(browser, base, `v=1&preset=${preset}&${PLAIN}&${change}`, `${SHOTS}${backend}-${name}.png`);
-        const { page } = await open(browser, base);
-        const share = await differing(page, plain.png, shown.png);
-        await page.close();
+        const share = differing(plain, shown);
         assert.ok(share > least, `${name} changed only ${share} of the picture of ${preset}`);
       }
     } finally {

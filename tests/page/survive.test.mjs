@@ -13,7 +13,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { session, open, waitForState, measureCanvas, measurePng, differing, cardPictures } from './browser.mjs';
+import { finishGrowth, session, open, waitForState, measureCanvas, measurePng, differing, cardPictures } from './browser.mjs';
 import { nativeMesh, nativePattern } from './native.mjs';
 
 const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
@@ -33,8 +33,7 @@ function hook(page, name, ...args) {
 
 /** The page's hashes of the finished shell. */
 async function finished(page) {
-  await page.keyboard.press('e');
-  const state = await waitForState(page, ['grown', 'error']);
+  const state = await finishGrowth(page);
   assert.equal(state.state, 'grown', await page.textContent('#message'));
   return { pattern: state.patternHash, mesh: state.meshHash, counts: state.mesh };
 }
@@ -106,7 +105,7 @@ async function checkRecovered(page, { row, backend, sameCanvas, shot }) {
   await page.mouse.up();
   await page.waitForTimeout(800);
   const turned = await page.locator('#shell').screenshot();
-  const moved = await differing(page, before, turned);
+  const moved = differing(before, turned);
   assert.ok(moved > 0.01, `a drag after recovery changed only ${moved} of the canvas`);
   const after = await finished(page);
   assert.deepEqual(after, fresh(), 'the finished shell is the link\'s, as the native core grows it');
