@@ -22,6 +22,11 @@ const ZOOM_RANGE: (f32, f32) = (0.15, 6.0);
 const DEFAULT_PITCH: f32 = 0.2;
 /// Time constant of the easing towards the grown part, seconds: smooth, yet close behind.
 const FOLLOW_TIME: f32 = 0.35;
+/// The longest step of the easing one frame takes, seconds. A frame of software rendering can
+/// take most of a second, and the view then settles in about the wall time it takes at 60 frames
+/// a second (with a quarter of a second a frame, it took four times as long); a longer gap (a tab
+/// in the background) moves the view most of the way at once.
+const LONGEST_STEP: f32 = 1.0;
 /// The smallest framing while following, as a fraction of the final one (the first rims of a
 /// shell can be a point).
 const SMALLEST_FRAME: f32 = 0.02;
@@ -105,14 +110,14 @@ impl OrbitCamera {
         (target, radius)
     }
 
-    /// Eases the framing towards `grown` over `dt` seconds; returns whether the view changed.
-    /// Does nothing once the user has moved the camera.
+    /// Eases the framing towards `grown` over `dt` seconds (at most [`LONGEST_STEP`]); returns
+    /// whether the view changed. Does nothing once the user has moved the camera.
     pub fn follow(&mut self, grown: &Bounds, dt: f32) -> bool {
         if !self.following {
             return false;
         }
         let (target, radius) = self.framing_of(grown);
-        let k = 1.0 - (-dt.max(0.0) / FOLLOW_TIME).exp();
+        let k = 1.0 - (-dt.clamp(0.0, LONGEST_STEP) / FOLLOW_TIME).exp();
         let (t0, r0) = (self.target, self.radius);
         self.target += (target - self.target) * k;
         self.radius += (radius - self.radius) * k;
@@ -312,6 +317,32 @@ mod tests {
             views.push(cam.eye());
         }
         assert!(views.windows(2).all(|w| w[0] == w[1]), "{views:?}");
+    }
+
+    /// Frames `dt` seconds apart until the easing rests on the whole shell.
+    fn frames_to_settle(dt: f32) -> u32 {
+        let whole = grown(2.0);
+        let mut cam = OrbitCamera::framing(&whole, DVec3::X, 0.0, 0.0).following(&grown(0.1));
+        let mut frames = 0;
+        while cam.follow(&whole, dt) {
+            frames += 1;
+        }
+        frames
+    }
+
+    #[test]
+    fn slow_frames_settle_in_about_the_wall_time_of_fast_ones() {
+        let fast = frames_to_settle(1.0 / 60.0) as f32 / 60.0;
+        let slow = frames_to_settle(0.7) as f32 * 0.7;
+        assert!(
+            slow < 1.5 * fast,
+            "0.7 s frames settle in {slow} s, 60 fps in {fast} s"
+        );
+        let after_an_hour = frames_to_settle(3600.0);
+        assert!(
+            after_an_hour <= 3,
+            "an hour in the background, then {after_an_hour} frames"
+        );
     }
 
     #[test]

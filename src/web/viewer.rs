@@ -948,7 +948,7 @@ impl Viewer {
             self.owed = 0;
         }
         let time = now();
-        let dt = ((time - self.last_frame) / 1000.0).min(0.25) as f32;
+        let dt = ((time - self.last_frame) / 1000.0) as f32;
         self.last_frame = time;
         if let Some(g) = &mut self.growing
             && g.camera.follow(g.replica.grown(), dt)
