@@ -35,6 +35,9 @@ fn commands() -> Vec<ViewCommand> {
             spec: Box::new(edited.spec.clone()),
             finish: false,
         },
+        ViewCommand::Restyle(Box::new(
+            link::decode("#v=1&preset=murex-cabritii&material.gloss=0.9").spec,
+        )),
         ViewCommand::Preview(Box::new(edited.spec)),
         ViewCommand::EndPreview,
         ViewCommand::Grow(17),

@@ -360,6 +360,13 @@ impl Renderer {
         written
     }
 
+    /// Draws the shell loaded with `look` from the next frame on (its buffers stay).
+    pub fn set_look(&mut self, look: ShellLook) {
+        if let Some(shell) = self.shell.as_mut() {
+            shell.look = look;
+        }
+    }
+
     /// Hands the writes made since the last frame to the GPU without drawing.
     pub fn flush(&self) {
         self.gpu.queue.submit([]);

@@ -33,6 +33,17 @@ pub struct ShellSpec {
     pub seed: u64,
 }
 
+impl ShellSpec {
+    /// Whether `other` grows the very shell this one grows: the two differ at most in their
+    /// material, which only the drawing reads. A change of material redraws the grown shell and
+    /// grows nothing again.
+    pub fn grows_like(&self, other: &ShellSpec) -> bool {
+        let mut restyled = self.clone();
+        restyled.material = other.material.clone();
+        restyled == *other
+    }
+}
+
 /// How the shell is painted.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -53,4 +64,30 @@ pub struct GrowthSpec {
     pub rows: u32,
     /// Rows grown per animation frame.
     pub speed: f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::presets;
+
+    #[test]
+    fn a_shell_grows_like_another_that_differs_in_its_material_alone() {
+        let spec = presets::preset("oliva-porphyria").unwrap().spec.clone();
+        let mut glossy = spec.clone();
+        glossy.material.gloss = 1.0;
+        glossy.material.drawing = super::material::Drawing::Lines;
+        assert!(spec.grows_like(&glossy) && glossy.grows_like(&spec));
+        let mut reseeded = glossy.clone();
+        reseeded.seed += 1;
+        assert!(
+            !spec.grows_like(&reseeded),
+            "another seed grows another pattern"
+        );
+        let mut painted = spec.clone();
+        painted.colours.ground.0[0] ^= 1;
+        assert!(
+            !spec.grows_like(&painted),
+            "the ground colour is in the pattern's pixels"
+        );
+    }
 }

@@ -253,13 +253,40 @@ impl App {
             .current
             .as_ref()
             .is_some_and(|(p, s)| p.id == preset.id && *s == spec);
-        if !same {
-            // An embed for a reader who asked for less motion: the grown shell, still.
-            let still = presentation.ui.embedded() && share::reduced_motion();
-            self.load(preset, spec, still);
-            if still {
-                self.set_playing(false);
-            }
+        if same {
+            return;
+        }
+        if self.restyles(preset, &spec) {
+            self.restyle(preset, spec);
+            return;
+        }
+        // An embed for a reader who asked for less motion: the grown shell, still.
+        let still = presentation.ui.embedded() && share::reduced_motion();
+        self.load(preset, spec, still);
+        if still {
+            self.set_playing(false);
+        }
+    }
+
+    /// Whether `spec` of `preset` is the shell shown in another material: drawn again, not
+    /// grown again.
+    fn restyles(&self, preset: &Preset, spec: &ShellSpec) -> bool {
+        self.current
+            .as_ref()
+            .is_some_and(|(p, s)| p.id == preset.id && s.grows_like(spec))
+    }
+
+    /// Shows the shell shown in the material of `spec` (see [`Self::restyles`]): its growth,
+    /// its recording and its status go on.
+    fn restyle(&mut self, preset: &'static Preset, spec: ShellSpec) {
+        self.viewer
+            .command(ViewCommand::Restyle(Box::new(spec.clone())));
+        if let Some(panel) = &self.panel {
+            panel.refresh(&spec);
+        }
+        self.current = Some((preset, spec));
+        if let Some(link) = self.link() {
+            share::show_qr(&link);
         }
     }
 
@@ -326,8 +353,9 @@ impl App {
     }
 
     /// A value changed in the panel: read it as a link's value. Set, growth restarts with the
-    /// result; passed by a dragged slider of the pattern, the planar view shows the whole
-    /// pattern of the result while the shell waits.
+    /// result, or the grown shell is drawn again when only its material changed; passed by a
+    /// dragged slider of the pattern, the planar view shows the whole pattern of the result
+    /// while the shell waits, and by one of the material, the shell is drawn in it.
     pub fn edit(&mut self, key: &str, value: String, change: Change) {
         activity::set(format!("applying {key}={value}"));
         let Some((preset, spec)) = &self.current else {
@@ -343,6 +371,9 @@ impl App {
             if previews(key) {
                 say(&problems);
                 self.viewer.command(ViewCommand::Preview(Box::new(next)));
+            } else if self.restyles(preset, &next) {
+                // A material slider dragged: the grown shell follows it.
+                self.viewer.command(ViewCommand::Restyle(Box::new(next)));
             }
             return;
         }
@@ -354,7 +385,11 @@ impl App {
             }
             return;
         }
-        self.load(preset, next, false);
+        if self.restyles(preset, &next) {
+            self.restyle(preset, next);
+        } else {
+            self.load(preset, next, false);
+        }
         self.url_due = Some(now() + URL_DELAY_MS);
     }
 

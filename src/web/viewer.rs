@@ -50,7 +50,8 @@ use std::rc::Rc;
 struct Growing {
     preset: &'static Preset,
     spec: ShellSpec,
-    /// The link its worker grows it from.
+    /// The link its worker grows it from (in the material it was loaded with: a restyle does
+    /// not change what the worker grows).
     link: String,
     replica: Replica,
     camera: OrbitCamera,
@@ -85,13 +86,18 @@ impl Growing {
             shell.capacity,
             self.planar_size
                 .and_then(|(cells, rows)| TextureLayout::new(cells, rows)),
-            ShellLook::new(
-                &self.spec.colours,
-                &self.spec.material,
-                crate::forms::rows_per_whorl(&self.spec),
-                shell.line_grid,
-            ),
+            self.look(shell),
         );
+    }
+
+    /// How its spec draws this shell.
+    fn look(&self, shell: &ShellInfo) -> ShellLook {
+        ShellLook::new(
+            &self.spec.colours,
+            &self.spec.material,
+            crate::forms::rows_per_whorl(&self.spec),
+            shell.line_grid,
+        )
     }
 
     /// Whether the view rests on what has grown (or where the user left it).
@@ -349,6 +355,7 @@ impl Viewer {
                     self.finish();
                 }
             }
+            ViewCommand::Restyle(spec) => self.restyle(&spec),
             ViewCommand::Preview(spec) => self.preview(&spec),
             ViewCommand::EndPreview => self.end_preview(),
             ViewCommand::Grow(rows) => self.grow(rows, GROWTH_BUDGET_MS),
@@ -419,6 +426,17 @@ impl Viewer {
             pending: 1,
             finishing: false,
         });
+        self.dirty = true;
+    }
+
+    /// Draws the shell grown so far in the material of `spec` (which grows it as the loaded
+    /// spec does). The worker's link stays: the worker never reads the material.
+    fn restyle(&mut self, spec: &ShellSpec) {
+        let Some(g) = &mut self.growing else { return };
+        g.spec.material = spec.material.clone();
+        if let (Some(d), Some(shell)) = (&mut self.drawing, g.replica.shell()) {
+            d.renderer.set_look(g.look(shell));
+        }
         self.dirty = true;
     }
 

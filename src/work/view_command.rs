@@ -23,6 +23,9 @@ pub enum ViewCommand {
         spec: Box<ShellSpec>,
         finish: bool,
     },
+    /// Draw the shell grown so far in the material of `spec`, which grows it as the loaded spec
+    /// does ([`ShellSpec::grows_like`]): nothing grows again.
+    Restyle(Box<ShellSpec>),
     /// Show the whole pattern of `spec` in the planar view while growth waits (a slider of
     /// the pattern being dragged).
     Preview(Box<ShellSpec>),

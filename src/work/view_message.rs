@@ -104,6 +104,7 @@ const BACKGROUND: u8 = 15;
 const RECORD_AT: u8 = 16;
 const ASK_FRAME: u8 = 17;
 const WRITE_FILE: u8 = 18;
+const RESTYLE: u8 = 19;
 
 /// `command` as bytes.
 pub fn encode_command(command: &ViewCommand) -> Vec<u8> {
@@ -118,6 +119,10 @@ pub fn encode_command(command: &ViewCommand) -> Vec<u8> {
             w.str(preset.id);
             write_spec(&mut w, spec);
             w.bool(*finish);
+        }
+        ViewCommand::Restyle(spec) => {
+            w.u8(RESTYLE);
+            write_spec(&mut w, spec);
         }
         ViewCommand::Preview(spec) => {
             w.u8(PREVIEW);
@@ -220,6 +225,7 @@ pub fn decode_command(bytes: &[u8]) -> Result<ViewCommand, WireError> {
                 finish: r.bool("finish")?,
             }
         }
+        RESTYLE => ViewCommand::Restyle(Box::new(read_spec(&mut r)?)),
         PREVIEW => ViewCommand::Preview(Box::new(read_spec(&mut r)?)),
         END_PREVIEW => ViewCommand::EndPreview,
         GROW => ViewCommand::Grow(r.len("rows")?),
