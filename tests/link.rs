@@ -4,13 +4,14 @@
 
 use proptest::prelude::*;
 use seashells_core::generator::Generator;
-use seashells_core::presets::{DEFAULT_PRESET, presets};
+use seashells_core::presets::{DEFAULT_PRESET, preset, presets};
 
 use seashells_core::share::link::{MAX_LINK, decode, encode, flatten};
 use seashells_core::share::presentation::{Presentation, Ui};
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{FORM_KINDS, Field, Kind, Section, field, fields};
+use seashells_core::spec::material::Drawing;
 use serde_json::Value;
 
 /// A random valid spec: a preset with some fields set to random values in their ranges.
@@ -362,4 +363,25 @@ fn a_panel_edit_is_read_like_a_link_value() {
     assert!(switched.problems.is_empty(), "{:?}", switched.problems);
     assert!(matches!(switched.spec.pattern.model, Model::Automaton(_)));
     assert_eq!(decode(&encode(oliva, &switched.spec)).spec, switched.spec);
+}
+
+#[test]
+fn a_shell_grows_like_another_that_differs_in_its_material_alone() {
+    let spec = preset("oliva-porphyria").unwrap().spec.clone();
+    let mut glossy = spec.clone();
+    glossy.material.gloss = 1.0;
+    glossy.material.drawing = Drawing::Lines;
+    assert!(spec.grows_like(&glossy) && glossy.grows_like(&spec));
+    let mut reseeded = glossy.clone();
+    reseeded.seed += 1;
+    assert!(
+        !spec.grows_like(&reseeded),
+        "another seed grows another pattern"
+    );
+    let mut painted = spec.clone();
+    painted.colours.ground.0[0] ^= 1;
+    assert!(
+        !spec.grows_like(&painted),
+        "the ground colour is in the pattern's pixels"
+    );
 }

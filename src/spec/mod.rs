@@ -65,29 +65,3 @@ pub struct GrowthSpec {
     /// Rows grown per animation frame.
     pub speed: f64,
 }
-
-#[cfg(test)]
-mod tests {
-    use crate::presets;
-
-    #[test]
-    fn a_shell_grows_like_another_that_differs_in_its_material_alone() {
-        let spec = presets::preset("oliva-porphyria").unwrap().spec.clone();
-        let mut glossy = spec.clone();
-        glossy.material.gloss = 1.0;
-        glossy.material.drawing = super::material::Drawing::Lines;
-        assert!(spec.grows_like(&glossy) && glossy.grows_like(&spec));
-        let mut reseeded = glossy.clone();
-        reseeded.seed += 1;
-        assert!(
-            !spec.grows_like(&reseeded),
-            "another seed grows another pattern"
-        );
-        let mut painted = spec.clone();
-        painted.colours.ground.0[0] ^= 1;
-        assert!(
-            !spec.grows_like(&painted),
-            "the ground colour is in the pattern's pixels"
-        );
-    }
-}
