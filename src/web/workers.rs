@@ -160,8 +160,8 @@ pub struct Workers {
 
 /// Least milliseconds a worker grows the shell per request: off the page's thread a request
 /// may take longer than the page's own frame budget, for fewer round trips, while a change of
-/// value still waits at most this long behind the growth under way (see the README's "Who runs
-/// where" for the measurement).
+/// value still waits at most this long behind the growth under way (see "Who runs where" in
+/// `docs/design/architecture.md` for the measurement).
 const WORKER_GROWTH_MS: f64 = 24.0;
 
 /// The page address's query parameter `key`, as a number.

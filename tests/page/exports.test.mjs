@@ -1,7 +1,7 @@
 // Exports from the page: the download menu offers GLB first, then PLY, 3MF, OBJ, STL, the
 // picture and the pattern, each with its size; the Oliva's GLB passes the Khronos glTF
 // validator and opens in three.js's GLTFLoader, drawn beside the page's own picture of it
-// (exports/oliva-page-and-three.png, in the README); the Murex at its own resolution is
+// (exports/oliva-page-and-three.png, in docs/exports.md); the Murex at its own resolution is
 // written over many frames with a progress bar, into the file the command line writes; a mesh
 // of an implicit shell still growing is of the whole shell, finished first; and what cannot be
 // exported says why instead of downloading anything.

@@ -1,6 +1,6 @@
 // Pictures to look at, not a test: grows each link to its end in headless Chromium (WebGL2),
 // photographs the canvas alone, and lays the pictures out on one sheet, a caption under each,
-// `columns` to a row. The README's pictures are made with it.
+// `columns` to a row. The pictures of the README and docs/ are made with it.
 //
 //     node tests/page/sheet.mjs OUT.png COLUMNS SIZE 'caption|v=1&preset=…' …
 import { writeFileSync } from 'node:fs';
