@@ -120,6 +120,24 @@ impl Mesh {
         self.indices.len() / 3
     }
 
+    /// Whether triangle `t` has two corners at one position, bit for bit: it has no area, and
+    /// every file leaves it out.
+    pub fn collapsed(&self, t: usize) -> bool {
+        let [a, b, c] = [0, 1, 2].map(|k| {
+            self.vertices[self.indices[3 * t + k] as usize]
+                .position
+                .map(f32::to_bits)
+        });
+        a == b || b == c || c == a
+    }
+
+    /// Whether every position and normal is a finite number.
+    pub fn is_finite(&self) -> bool {
+        self.vertices
+            .iter()
+            .all(|v| v.position.iter().chain(&v.normal).all(|x| x.is_finite()))
+    }
+
     /// A hash of the triangles' vertex data (every bit of position, normal, pattern coordinates
     /// and surface) that does not depend on the order of the triangles: two meshes made of the
     /// same triangles in another order hash alike. Used to check that native and wasm builds,

@@ -333,3 +333,40 @@ fn a_link_that_would_make_an_implicit_shell_empty_is_refused_naming_its_key() {
         assert!(!std::path::Path::new(&out).exists(), "{link} wrote a file");
     }
 }
+
+#[test]
+fn help_is_asked_for_in_every_usual_way_and_a_refusal_is_exit_status_2() {
+    for args in [&["--help"][..], &["-h"], &["help"]] {
+        let out = run(args);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{args:?}");
+        assert!(
+            text.contains("seashells mesh") && text.contains("Exit status"),
+            "{args:?}: {text}"
+        );
+    }
+    for args in [&["help", "mesh"][..], &["mesh", "--help"]] {
+        let out = run(args);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{args:?}");
+        assert!(text.contains("--resolution N"), "{args:?}: {text}");
+    }
+    let out = run(&["help", "grow"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no command 'grow'"));
+}
+
+#[test]
+fn a_link_that_grows_out_of_the_range_of_numbers_writes_no_file() {
+    let out_file = temp("out-of-range-horn.stl");
+    let out = run(&[
+        "mesh",
+        "--link",
+        "v=1&preset=kawaguchi-horn&form.chamber.ratio=0.5&form.chambers=2000",
+        "--out",
+        &out_file,
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not finite"));
+    assert!(!std::path::Path::new(&out_file).exists());
+}

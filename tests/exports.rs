@@ -139,6 +139,41 @@ fn an_empty_or_collapsed_shell_is_refused_in_every_format() {
 }
 
 #[test]
+fn a_shell_grown_out_of_the_range_of_numbers_is_refused_not_written() {
+    // Values inside the panel's ranges whose product is not: about 1,080 chambers at ratio 0.5
+    // shrink the horn below the smallest float, and its coordinates become NaN.
+    let fragment = "v=1&preset=kawaguchi-horn&form.chamber.ratio=0.5&form.chambers=2000";
+    let (generator, refused) = grown(fragment);
+    assert!(generator.failure().is_none());
+    let Err(e) = refused else {
+        panic!("a mesh with coordinates that are not finite was accepted for export");
+    };
+    assert_eq!(e, ExportError::NotFinite);
+    assert!(e.to_string().contains("not finite"), "{e}");
+}
+
+#[test]
+fn the_stl_holds_every_triangle_but_those_of_no_area() {
+    let mut mesh = Mesh::default();
+    for (x, y) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 0.0)] {
+        mesh.vertices.push(Vertex::new(
+            DVec3::new(x, y, 0.0),
+            DVec3::Z,
+            [0.0, 0.0],
+            Surface::Outer,
+        ));
+    }
+    mesh.triangle([0, 1, 2], false);
+    mesh.triangle([0, 1, 3], false);
+    let collapsed: Vec<bool> = (0..2).map(|t| mesh.collapsed(t)).collect();
+    assert_eq!(collapsed, [false, true], "corners 1 and 3 share a position");
+    let stl = seashells_core::export::stl::write(&mesh).unwrap();
+    let written = u32::from_le_bytes(stl[80..84].try_into().unwrap());
+    assert_eq!(written, 1);
+    assert_eq!(stl.len(), 84 + 50);
+}
+
+#[test]
 fn a_surface_without_a_wall_is_refused_as_3mf_and_exported_as_glb() {
     let fragment = "v=1&preset=turbinate&form.wall.thickness=0";
     let e = Export::new(MeshFormat::ThreeMf, shell(fragment))

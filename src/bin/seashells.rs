@@ -6,8 +6,9 @@
 //!                       [--cells N] [--rows N] [--iterations N]
 //!     seashells presets
 //!     seashells bench
+//!     seashells help [COMMAND]
 //!
-//! A wrong preset, link, option or extension gets one line on stderr and a non-zero exit.
+//! A wrong preset, link, option or extension gets one line on stderr and exit status 2.
 
 use seashells_core::export::job::Export;
 use seashells_core::export::print_size::PrintSize;
@@ -26,7 +27,7 @@ use std::process::ExitCode;
 
 const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl} [--resolution N] [--size MM] | \
 seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N] | \
-seashells presets | seashells bench";
+seashells presets | seashells bench | seashells help [COMMAND]";
 
 /// Options given as `--name value`.
 struct Options(BTreeMap<String, String>);
@@ -129,12 +130,18 @@ fn mesh(args: &[String]) -> Result<String, String> {
         shell.mesh.triangle_count(),
         shell.mesh.content_hash(),
     );
+    // The counts and hash are the grown mesh's (as the page shows them); the file leaves out
+    // the triangles of no area, and says how many.
+    let left_out = match (0..triangles).filter(|&t| shell.mesh.collapsed(t)).count() {
+        0 => String::new(),
+        n => format!(" ({n} of no area left out of the file)"),
+    };
     let bytes = Export::new(format, shell)
         .and_then(Export::run)
         .map_err(|e| e.to_string())?;
     write(out, &bytes)?;
     Ok(format!(
-        "wrote {out}: {vertices} vertices, {triangles} triangles, hash {hash:016x}, {} bytes",
+        "wrote {out}: {vertices} vertices, {triangles} triangles{left_out}, hash {hash:016x}, {} bytes",
         bytes.len()
     ))
 }
@@ -236,9 +243,56 @@ fn list() -> String {
     lines.join("\n")
 }
 
+/// What `seashells help` prints.
+const HELP: &str = "seashells: the shells of the page's gallery and links, written as files by the same core
+
+usage:
+  seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl} [--resolution N] [--size MM]
+  seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N]
+  seashells presets       lists every preset's ID and name
+  seashells bench         times growth, patterns and meshing natively
+  seashells help [COMMAND]
+
+A FRAGMENT is the part of a page's link after '#', as in 'v=1&preset=turbinate&form.spiral.whorls=5'.
+Exit status: 0 when done; 2 when refused or failed, with one line on standard error saying why.";
+
+/// What `seashells help mesh` prints.
+const HELP_MESH: &str =
+    "seashells mesh (--preset ID | --link FRAGMENT) --out FILE [--resolution N] [--size MM]
+
+Grows the shell to its end and writes its mesh in the format of FILE's extension: .glb (glTF
+binary, with its pattern as a texture), .ply and .3mf (colour per vertex), .obj, .stl. Prints the
+mesh's vertex and triangle counts and hash (as the page shows them) and the file's bytes.
+  --resolution N   the polygonization grid of an implicit shell (the Murex), N³ voxels
+  --size MM        the height of a .glb or .3mf shell in millimetres, 5 to 500 (80 unless given)
+A shell whose growth stopped, one whose values take it out of the range of numbers, or a wall-less
+surface as .3mf is refused, and no file is written.";
+
+/// What `seashells help pattern` prints.
+const HELP_PATTERN: &str = "seashells pattern (--preset ID | --link FRAGMENT) --out FILE [--cells N] [--rows N] [--iterations N]
+
+Computes the shell's pigmentation pattern on its growing edge and writes its planar
+representation: .png (the colours, a row per time step) or .csv (the recorded value, the
+activator's concentration, a line per row and a value per cell).
+  --cells N, --rows N, --iterations N   override the spec's cells, rows and iterations per row";
+
+/// The help on `topic` (a command, or everything).
+fn help(topic: Option<&str>) -> Result<String, String> {
+    match topic {
+        None => Ok(HELP.into()),
+        Some("mesh") => Ok(HELP_MESH.into()),
+        Some("pattern") => Ok(HELP_PATTERN.into()),
+        Some("presets" | "bench" | "help") => Ok(HELP.into()),
+        Some(other) => Err(format!("there is no command '{other}' ({USAGE})")),
+    }
+}
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    let asks_help = |a: &String| matches!(a.as_str(), "--help" | "-h");
     let result = match args.first().map(String::as_str) {
+        Some("help" | "--help" | "-h") => help(args.get(1).map(String::as_str)),
+        Some(command) if args[1..].iter().any(asks_help) => help(Some(command)),
         Some("mesh") => mesh(&args[1..]),
         Some("pattern") => pattern(&args[1..]),
         Some("presets") => Ok(list()),

@@ -9,6 +9,9 @@ pub enum ExportError {
     Empty,
     /// Growth stopped early; the message says why.
     Failed(String),
+    /// Some coordinate or normal of the grown mesh is not a finite number: values whose
+    /// product runs out of range (no file may carry it).
+    NotFinite,
     /// A closed solid was needed (3MF, for printing) and the surface is open: a swept shell
     /// with no wall is a single surface.
     Open { key: &'static str },
@@ -33,6 +36,12 @@ impl fmt::Display for ExportError {
                 "this shell stopped growing before its end, so there is no whole shell to \
                  export ({})",
                 why.trim_end_matches('.')
+            ),
+            ExportError::NotFinite => write!(
+                f,
+                "this shell's values make it grow out of the range of numbers (some of its \
+                 coordinates are not finite), so no file is written: bring the values you \
+                 changed back towards the preset's"
             ),
             ExportError::Open { key } => write!(
                 f,

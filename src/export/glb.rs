@@ -155,11 +155,11 @@ impl Glb {
     fn weld(&mut self) -> Result<(), ExportError> {
         let mesh = &self.shell.mesh;
         for t in self.cursor.next(TRIANGLES_PER_STEP) {
-            let corners = [0, 1, 2].map(|k| mesh.indices[3 * t + k]);
-            let [a, b, c] = corners.map(|i| mesh.vertices[i as usize].position);
-            if a == b || b == c || c == a {
+            if mesh.collapsed(t) {
                 continue;
             }
+            let corners = [0, 1, 2].map(|k| mesh.indices[3 * t + k]);
+            let [a, b, c] = corners.map(|i| mesh.vertices[i as usize].position);
             let first = &mesh.vertices[corners[0] as usize];
             let part = &mut self.parts[usize::from(!first.is_outer())];
             let welded = corners.map(|i| part.weld(&mesh.vertices[i as usize], i));

@@ -41,7 +41,7 @@ pub struct Grown<'a> {
 
 impl Shell {
     /// The shell `generator` has grown so far from `spec` (a variant of `preset`); refused
-    /// when it has no surface yet or growth stopped on a failure.
+    /// when it has no surface yet, growth stopped on a failure, or a coordinate is not finite.
     pub fn new(
         generator: &Generator,
         spec: &ShellSpec,
@@ -69,6 +69,9 @@ impl Shell {
         }
         if grown.mesh.triangle_count() == 0 {
             return Err(ExportError::Empty);
+        }
+        if !grown.mesh.is_finite() {
+            return Err(ExportError::NotFinite);
         }
         Ok(Self {
             mesh: grown.mesh,
