@@ -12,7 +12,8 @@
 //! (video frames captured), `data-growth` (growing, done: whether the shell is grown whole, before
 //! the view comes to rest), `data-workers` (workers in the pool, 0 on the page's own thread),
 //! `data-worker-deaths` (workers replaced so far), `data-settled` (true when the page's copy
-//! of the shell has every answer it asked its worker for: paused, it stands still) and
+//! of the shell has every answer it asked its worker for, said in the frame that shows its
+//! rows: paused, it stands still) and
 //! `data-recoveries` (how many times the graphics device was lost and opened again; the state
 //! is `recovering` meanwhile), `data-backend` (WebGPU, WebGL2, none) and `data-drawn-in`
 //! (worker, page, nowhere: where the main view is drawn).
@@ -980,7 +981,11 @@ impl App {
             signal("settled", "false");
             return Ok(());
         };
-        signal("settled", if shell.settled { "true" } else { "false" });
+        // Settled is said with the rows it settled on, in a frame that shows them: a test that
+        // reads the rows once settled reads the last.
+        if !shell.settled {
+            signal("settled", "false");
+        }
         self.show_progress();
         if !drawn {
             return Ok(());
@@ -989,6 +994,7 @@ impl App {
             return Ok(());
         };
         signal("rows", &shell.rows_done.to_string());
+        signal("settled", if shell.settled { "true" } else { "false" });
         let whole = shell.done && shell.settled;
         signal("growth", if whole { "done" } else { "growing" });
         self.downloads.show_sizes(shell);
