@@ -22,7 +22,7 @@ export NPM_INSTALLED := const fs = require('fs'); \
     try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
     catch { return false; } }) ? 0 : 1);
 
-.PHONY: run test build bench deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots
+.PHONY: run test build bench fuzz deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
@@ -50,10 +50,11 @@ deps-browser:
 	  if [ -n "$$missing" ]; then $(APT) update && $(APT) install -y $$missing; fi
 
 ## Checkers nobody here wrote, for what leaves the product: trimesh for meshes (networkx and
-## lxml for 3MF, Pillow for textures), the Khronos glTF validator (npm, in deps-build).
+## lxml for 3MF, Pillow for textures), MeshLab's filters (pymeshlab) for faces that cross
+## one another, the Khronos glTF validator (npm, in deps-build).
 deps-check:
-	@python3 -c 'import trimesh, networkx, lxml, PIL' 2>/dev/null || \
-	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml pillow
+	@python3 -c 'import trimesh, networkx, lxml, PIL, pymeshlab' 2>/dev/null || \
+	  python3 -m pip install --quiet --disable-pip-version-check trimesh==5.2.0 networkx lxml pillow pymeshlab==2025.7.post1
 
 deps: deps-build deps-browser deps-check
 
@@ -112,6 +113,13 @@ test:
 	done; printf '\nmake test: every phase passed, in %d s:%s\n' $$SECONDS "$$report"
 
 ## Benchmarks print figures; they assert nothing.
+
+## A long run of the property test over the field table (tests/any_link.rs): FUZZ_CASES links
+## drawn over every field's whole range from a random seed; FUZZ_SEED=N repeats a run.
+FUZZ_CASES ?= 1000
+fuzz: deps-build
+	SEASHELLS_FUZZ_CASES=$(FUZZ_CASES) $(if $(FUZZ_SEED),SEASHELLS_FUZZ_SEED=$(FUZZ_SEED)) \
+	  cargo test --test any_link -- --nocapture
 
 bench: build deps-browser
 	cargo build --release --bin seashells

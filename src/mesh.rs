@@ -153,6 +153,13 @@ impl Mesh {
     }
 }
 
+/// The most a shell may grow from its apex to its opening, as a power of ten. A file written
+/// in float32 (GLB, 3MF, STL) places the whole shell around the origin at its size, keeping
+/// about 7 significant digits: a part 10⁻⁵ of the whole keeps some 160 steps of float32 across
+/// it, so its triangles stay distinct, where at 10⁻⁷ they would collapse (and far beyond, the
+/// growth leaves the range of numbers). Every preset grows less than 10³.
+pub const MAX_GROWTH_DECADES: f64 = 5.0;
+
 /// Most vertices a shell's mesh may have (104 MB of vertex data): a spec whose form would
 /// make more is repaired.
 pub const MAX_VERTICES: u64 = 2_000_000;

@@ -343,7 +343,7 @@ fn each_chamber_is_a_row_and_each_apex_a_cell_of_the_pattern() {
 
 #[test]
 fn bad_parameters_get_messages_that_name_them() {
-    let cases: [(&str, &str); 6] = [
+    let cases: [(&str, &str); 7] = [
         ("form.mouth.apexes=2", "outside the range 3 to 256"),
         ("form.chamber.ratio=0", "outside the range 0.5 to 2"),
         ("form.chamber.ratio=-1", "outside the range 0.5 to 2"),
@@ -353,8 +353,12 @@ fn bad_parameters_get_messages_that_name_them() {
         ),
         ("form.chambers=5000", "outside the range 1 to 2000"),
         (
-            "form.mouth.apexes=256&form.chambers=2000&form.septa=true",
+            "form.mouth.apexes=256&form.chambers=2000&form.septa=true&form.chamber.ratio=1.001",
             "more than the cap of 2000000",
+        ),
+        (
+            "form.chambers=2000",
+            "2000 chambers at ratio 1.035 grow the last to 10^30 times the first: at most 334 at this ratio",
         ),
     ];
     for (change, expected) in cases {

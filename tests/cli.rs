@@ -356,17 +356,217 @@ fn help_is_asked_for_in_every_usual_way_and_a_refusal_is_exit_status_2() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("no command 'grow'"));
 }
 
-#[test]
-fn a_link_that_grows_out_of_the_range_of_numbers_writes_no_file() {
-    let out_file = temp("out-of-range-horn.stl");
-    let out = run(&[
+/// `seashells mesh` of the link to `preset` and its changes `link` (as "ID&key=value…").
+fn mesh_of(link: &str, path: &str) -> Output {
+    run(&[
         "mesh",
         "--link",
-        "v=1&preset=kawaguchi-horn&form.chamber.ratio=0.5&form.chambers=2000",
+        &format!("v=1&preset={link}"),
         "--out",
-        &out_file,
+        path,
+    ])
+}
+
+/// The links that once made bad files with exit status 0 (NaN or infinite coordinates, float32
+/// losing faces, whorls lying on one another, an ammonite passing through itself): each is
+/// refused naming its key and no file is written, or it makes a closed solid of finite
+/// coordinates.
+#[test]
+fn the_links_that_made_bad_files_are_refused_naming_the_key_or_make_a_solid() {
+    let refused = [
+        (
+            "kawaguchi-horn&form.chamber.ratio=0.5&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 0.5 shrink the last to 10^-602 of the first: at most 16 at this ratio",
+        ),
+        (
+            "kawaguchi-horn&form.chamber.ratio=2&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 2 grow",
+        ),
+        (
+            "kawaguchi-tusk&form.chamber.ratio=1.5&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 1.5 grow the last to 10^352 times the first: at most 28",
+        ),
+        (
+            "kawaguchi-tusk&form.chamber.ratio=2&form.chambers=2000",
+            "at most 16 at this ratio",
+        ),
+        (
+            "kawaguchi-ammonite&form.chamber.ratio=2&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 2",
+        ),
+        (
+            "kawaguchi-ammonite&form.chamber.ratio=0.5&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 0.5",
+        ),
+        (
+            "kawaguchi-claw&form.chamber.ratio=0.5&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 0.5",
+        ),
+        (
+            "kawaguchi-shell&form.chambers=2000",
+            "form.chambers: 2000 chambers at ratio 1.035 grow the last to 10^30 times the first: at most 334",
+        ),
+        (
+            "kawaguchi-painted&form.chambers=2000",
+            "at most 667 at this ratio",
+        ),
+        (
+            "kawaguchi-ammonite&form.chamber.ratio=1.0",
+            "form.chamber.ratio: whorls overlap: each chamber passes through the one 24 chambers later",
+        ),
+        (
+            "kawaguchi-ammonite&form.chamber.ratio=1.036",
+            "form.chamber.ratio: whorls overlap",
+        ),
+    ];
+    for (link, said) in refused {
+        let path = temp("refused-link.3mf");
+        let _ = std::fs::remove_file(&path);
+        let out = mesh_of(link, &path);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{link}: {stderr}");
+        assert!(stderr.contains(said), "{link}: {stderr}");
+        assert!(!std::path::Path::new(&path).exists(), "{link} wrote a file");
+    }
+    for link in [
+        "kawaguchi-ammonite",
+        "kawaguchi-tusk&form.chambers=2000&form.chamber.ratio=1.002",
+        "kawaguchi-horn&form.chambers=334&form.chamber.ratio=1.0345",
+    ] {
+        let path = temp("solid-link.stl");
+        let out = mesh_of(link, &path);
+        assert!(
+            out.status.success(),
+            "{link}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let bytes = std::fs::read(&path).unwrap();
+        assert!(common::watertight_stl_triangles(&bytes) > 1000, "{link}");
+        let finite = bytes[84..].chunks_exact(50).all(|t| {
+            t[0..48]
+                .chunks_exact(4)
+                .all(|f| f32::from_le_bytes(f.try_into().unwrap()).is_finite())
+        });
+        assert!(finite, "{link}: a coordinate is not finite");
+    }
+}
+
+#[test]
+fn a_file_written_to_standard_output_is_the_file_written_to_a_path() {
+    let path = temp("to-path.stl");
+    let to_path = run(&["mesh", "--preset", "kawaguchi-horn", "--out", &path]);
+    assert!(to_path.status.success());
+    let to_stdout = run(&[
+        "mesh",
+        "--preset",
+        "kawaguchi-horn",
+        "--out",
+        "-",
+        "--format",
+        "stl",
     ]);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("not finite"));
-    assert!(!std::path::Path::new(&out_file).exists());
+    assert!(to_stdout.status.success());
+    assert_eq!(to_stdout.stdout, std::fs::read(&path).unwrap());
+    // The report goes to standard error, out of the file's way.
+    assert!(String::from_utf8_lossy(&to_stdout.stderr).starts_with("wrote -: "));
+    let png = run(&[
+        "pattern",
+        "--preset",
+        "oliva-porphyria",
+        "--out",
+        "-",
+        "--format",
+        "png",
+    ]);
+    assert!(png.stdout.starts_with(b"\x89PNG"));
+    let unnamed = run(&["mesh", "--preset", "kawaguchi-horn", "--out", "-"]);
+    assert_eq!(unnamed.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&unnamed.stderr).contains("--out - needs --format"));
+}
+
+#[test]
+fn a_file_that_cannot_be_written_is_exit_status_1_and_a_refusal_2() {
+    let failed = run(&[
+        "mesh",
+        "--preset",
+        "kawaguchi-horn",
+        "--out",
+        "/no/such/folder/horn.stl",
+    ]);
+    assert_eq!(failed.status.code(), Some(1));
+    assert!(
+        String::from_utf8_lossy(&failed.stderr).contains("cannot write '/no/such/folder/horn.stl'")
+    );
+    let refused = run(&["mesh", "--preset", "kawaguchi-horn", "--out", "horn.xyz"]);
+    assert_eq!(refused.status.code(), Some(2));
+}
+
+#[test]
+fn a_link_the_page_opens_the_command_line_opens_saying_what_it_read() {
+    // A link of the retired reading of T: the page opens it with a note, and so does this.
+    let link = "v=1&preset=kawaguchi-shell&form.chamber.translation.x=0.1&form.chamber.translation.y=0.2&form.chamber.translation.z=0.15";
+    let path = temp("retired.stl");
+    let out = run(&["mesh", "--link", link, "--out", &path]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.starts_with("seashells: note: form.chamber.translation: links made before T became the top base's position"),
+        "{stderr}"
+    );
+    // A whole address is read by its fragment.
+    let whole = run(&["info", "http://127.0.0.1:8000/#v=1&preset=kawaguchi-horn"]);
+    assert!(whole.status.success());
+    assert!(
+        String::from_utf8_lossy(&whole.stdout).starts_with("shell: kawaguchi-horn (Ram's horn)")
+    );
+}
+
+#[test]
+fn info_says_the_shells_counts_its_size_and_the_files_it_makes() {
+    let out = run(&["info", "v=1&preset=kawaguchi-tusk"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    // The same counts and bytes as the files themselves.
+    let path = temp("info-tusk.stl");
+    let mesh = run(&["mesh", "--preset", "kawaguchi-tusk", "--out", &path]);
+    let wrote = String::from_utf8_lossy(&mesh.stdout);
+    let counts = wrote
+        .split(": ")
+        .nth(1)
+        .unwrap()
+        .split(", hash")
+        .next()
+        .unwrap();
+    assert!(text.contains(counts), "{text} lacks {counts}");
+    let bytes = std::fs::metadata(&path).unwrap().len();
+    assert!(
+        text.lines()
+            .any(|l| l.contains("kawaguchi-tusk.stl") && l.ends_with(&format!(" {bytes} bytes"))),
+        "{text}"
+    );
+    // The tusk lies long: 80 mm is its length, and it stands far lower.
+    let size = text
+        .lines()
+        .find(|l| l.starts_with("size: "))
+        .expect("a size line");
+    let sides: Vec<f64> = size["size: ".len()..]
+        .split(" mm")
+        .next()
+        .unwrap()
+        .split(" × ")
+        .map(|s| s.parse().unwrap())
+        .collect();
+    assert_eq!(sides.iter().cloned().fold(0.0, f64::max), 80.0, "{size}");
+    assert!(sides[2] < 20.0, "{size}");
+    let refused = run(&["info", "v=1&preset=turbinate&form.wall.thickness=0"]);
+    let text = String::from_utf8_lossy(&refused.stdout);
+    assert!(
+        text.lines()
+            .any(|l| l.contains("turbinate.3mf") && l.contains("refused: 3MF holds closed solids")),
+        "{text}"
+    );
 }

@@ -5,7 +5,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::export::estimate::Counts;
-use seashells_core::export::print_size::PrintSize;
+use seashells_core::export::print_size::{Along, PrintSize};
 use seashells_core::export::{Download, MeshFormat};
 use seashells_core::presets;
 use seashells_core::share::link;
@@ -76,7 +76,9 @@ fn commands() -> Vec<ViewCommand> {
         }),
         ViewCommand::WriteFile {
             what: Download::Mesh(MeshFormat::ThreeMf),
-            size: PrintSize::new(120.0, "height").expect("in range"),
+            size: PrintSize::new(120.0, "size")
+                .expect("in range")
+                .along(Along::Z),
         },
         ViewCommand::WriteFile {
             what: Download::Picture,
@@ -288,9 +290,17 @@ fn unknown_names_and_sizes_out_of_range_are_refused_by_field() {
         what: Download::Mesh(MeshFormat::Stl),
         size: PrintSize::default(),
     });
-    let mut huge = file[..file.len() - 8].to_vec();
+    // The size's millimetres, then the side it is of.
+    let mut huge = file[..file.len() - 9].to_vec();
     huge.extend_from_slice(&1e6f64.to_le_bytes());
+    huge.push(0);
     assert_eq!(decode_command(&huge).expect_err("too large").key, "size");
+    let mut sideways = file.clone();
+    *sideways.last_mut().unwrap() = 4;
+    assert_eq!(
+        decode_command(&sideways).expect_err("no such side").key,
+        "side"
+    );
     let mut unknown_tag = file.clone();
     unknown_tag[0] = 200;
     assert_eq!(

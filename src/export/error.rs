@@ -1,5 +1,6 @@
 //! Why a file cannot be exported, in words that name what to change.
 
+use crate::spec::problem::Problem;
 use std::fmt;
 
 /// Why an export was refused.
@@ -12,6 +13,9 @@ pub enum ExportError {
     /// Some coordinate or normal of the grown mesh is not a finite number: values whose
     /// product runs out of range (no file may carry it).
     NotFinite,
+    /// The form passes through itself (whorls that overlap): the problem names the key and
+    /// the fix.
+    Overlap(Problem),
     /// A closed solid was needed (3MF, for printing) and the surface is open: a swept shell
     /// with no wall is a single surface.
     Open { key: &'static str },
@@ -43,6 +47,7 @@ impl fmt::Display for ExportError {
                  coordinates are not finite), so no file is written: bring the values you \
                  changed back towards the preset's"
             ),
+            ExportError::Overlap(problem) => write!(f, "{problem}"),
             ExportError::Open { key } => write!(
                 f,
                 "3MF holds closed solids for printing, and this shell is an open surface: give \
@@ -50,12 +55,12 @@ impl fmt::Display for ExportError {
             ),
             ExportError::Size { key, mm, min, max } if mm.is_finite() => write!(
                 f,
-                "{key}: {mm} mm is outside the heights an exported shell may have, {min} to \
+                "{key}: {mm} mm is outside the sizes an exported shell may have, {min} to \
                  {max} mm"
             ),
             ExportError::Size { key, min, max, .. } => write!(
                 f,
-                "{key}: give the exported shell's height in millimetres, from {min} to {max}"
+                "{key}: give the exported shell's size in millimetres, from {min} to {max}"
             ),
         }
     }

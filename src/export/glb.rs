@@ -334,7 +334,7 @@ impl Glb {
                 "doubleSided": true,
             }));
         }
-        let (scale, translation) = fit(&self.bounds, self.shell.size.mm() / 1000.0, 1);
+        let (scale, translation) = fit(&self.bounds, self.shell.size, 1000.0, 1);
         let q = self.turn;
         let mut document = json!({
             "asset": { "version": "2.0", "generator": "seashells" },

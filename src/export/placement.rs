@@ -1,7 +1,8 @@
 //! Where an exported shell stands: turned apex up and facing the way the page first shows it,
-//! scaled to the height asked for, standing on the ground centred on the vertical axis. glTF's
+//! scaled to the size asked for, standing on the ground centred on the vertical axis. glTF's
 //! up is +y and its front +z; 3MF's up is +z and a slicer's front −y.
 
+use super::print_size::PrintSize;
 use crate::mesh::Bounds;
 use glam::{DQuat, DVec3};
 
@@ -23,12 +24,18 @@ pub(crate) fn turn(facing: f64, z_up: bool) -> DQuat {
     }
 }
 
-/// The scale and translation that make the turned shell `bounds` `height` tall along `up`
-/// (1 for y, 2 for z), standing at 0 on it and centred on the other two axes: a point p of the
-/// turned shell goes to `translation + scale · p`.
-pub(crate) fn fit(bounds: &Bounds, height: f64, up: usize) -> (f64, DVec3) {
-    let extent = bounds.max[up] - bounds.min[up];
-    let scale = if extent > 0.0 { height / extent } else { 1.0 };
+/// The scale and translation that make the turned shell `bounds` `size` long along the side
+/// it names (in units of `unit_mm` millimetres) in a file whose up axis is `up` (1 for y, 2
+/// for z), standing at 0 on it and centred on the other two axes: a point p of the turned shell
+/// goes to `translation + scale · p`.
+pub(crate) fn fit(bounds: &Bounds, size: PrintSize, unit_mm: f64, up: usize) -> (f64, DVec3) {
+    let sides = bounds.max - bounds.min;
+    let extent = match size.side().file_axis(up) {
+        Some(axis) => sides[axis],
+        None => sides.max_element(),
+    };
+    let length = size.mm() / unit_mm;
+    let scale = if extent > 0.0 { length / extent } else { 1.0 };
     let mut anchor = bounds.center();
     anchor[up] = bounds.min[up];
     (scale, -anchor * scale)
@@ -37,6 +44,7 @@ pub(crate) fn fit(bounds: &Bounds, height: f64, up: usize) -> (f64, DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::export::print_size::Along;
 
     fn close(a: DVec3, b: DVec3) -> bool {
         a.distance(b) < 1e-12
@@ -58,14 +66,23 @@ mod tests {
     }
 
     #[test]
-    fn a_fitted_shell_stands_on_the_ground_at_its_height() {
+    fn a_fitted_shell_stands_on_the_ground_at_its_size() {
         let bounds = Bounds {
             min: DVec3::new(1.0, 2.0, 3.0),
-            max: DVec3::new(3.0, 6.0, 7.0),
+            max: DVec3::new(3.0, 6.0, 5.0),
         };
-        let (scale, t) = fit(&bounds, 80.0, 2);
+        let size = PrintSize::new(80.0, "size").unwrap();
+        // The largest side (y, 4 long) is 80 mm.
+        let (scale, t) = fit(&bounds, size, 1.0, 2);
         assert_eq!(scale, 20.0);
         assert!(close(t + bounds.min * scale, DVec3::new(-20.0, -40.0, 0.0)));
-        assert!(close(t + bounds.max * scale, DVec3::new(20.0, 40.0, 80.0)));
+        assert!(close(t + bounds.max * scale, DVec3::new(20.0, 40.0, 40.0)));
+        // Up (z in a 3MF, 2 long) is 80 mm; in metres for a glTF, whose up is y (4 long).
+        assert_eq!(fit(&bounds, size.along(Along::Z), 1.0, 2).0, 40.0);
+        assert_eq!(fit(&bounds, size.along(Along::Z), 1000.0, 1).0, 0.02);
+        // Across is x in both; the depth is y in a 3MF and z in a glTF.
+        assert_eq!(fit(&bounds, size.along(Along::X), 1.0, 2).0, 40.0);
+        assert_eq!(fit(&bounds, size.along(Along::Y), 1.0, 2).0, 20.0);
+        assert_eq!(fit(&bounds, size.along(Along::Y), 1.0, 1).0, 40.0);
     }
 }

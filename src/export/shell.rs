@@ -5,9 +5,11 @@
 
 use super::error::ExportError;
 use super::paint::{Paint, PatternImage};
+use super::placement::{fit, turn};
 use super::print_size::PrintSize;
+use crate::forms;
 use crate::generator::Generator;
-use crate::mesh::Mesh;
+use crate::mesh::{Bounds, Mesh};
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
 use crate::view::camera::facing;
@@ -41,7 +43,8 @@ pub struct Grown<'a> {
 
 impl Shell {
     /// The shell `generator` has grown so far from `spec` (a variant of `preset`); refused
-    /// when it has no surface yet, growth stopped on a failure, or a coordinate is not finite.
+    /// when it has no surface yet, growth stopped on a failure, a coordinate is not finite, or
+    /// the form passes through itself.
     pub fn new(
         generator: &Generator,
         spec: &ShellSpec,
@@ -73,6 +76,9 @@ impl Shell {
         if !grown.mesh.is_finite() {
             return Err(ExportError::NotFinite);
         }
+        if let Some(problem) = forms::self_overlap(&spec.form) {
+            return Err(ExportError::Overlap(problem));
+        }
         Ok(Self {
             mesh: grown.mesh,
             paint: Paint::new(&spec.colours, grown.pattern),
@@ -81,6 +87,20 @@ impl Shell {
             title: preset.name.clone(),
             size,
         })
+    }
+}
+
+impl Shell {
+    /// The sides (mm) of the box the shell fills in a 3MF file at its size: x across, y from
+    /// front to back, z up (the apex), as a printer's plate has them.
+    pub fn printed_sides(&self) -> DVec3 {
+        let turn = turn(self.facing, true);
+        let mut bounds = Bounds::EMPTY;
+        for v in &self.mesh.vertices {
+            bounds.include(turn * DVec3::from(v.position.map(f64::from)));
+        }
+        let (scale, _) = fit(&bounds, self.size, 1.0, 2);
+        (bounds.max - bounds.min) * scale
     }
 }
 

@@ -189,7 +189,7 @@ impl ThreeMf {
             self.body.push(body);
         }
         if self.cursor.done() {
-            self.fit = fit(&self.bounds, self.shell.size.mm(), 2);
+            self.fit = fit(&self.bounds, self.shell.size, 1.0, 2);
             self.begin(Stage::Sort, self.triangles.len());
         }
     }

@@ -20,7 +20,7 @@ use crate::spec::pattern::PatternSpec;
 use crate::spec::problem::Problem;
 use kawaguchi::branching::branching_mesh::BranchingMesh;
 use kawaguchi::chambers::chamber_mesh::ChamberMesh;
-use kawaguchi::chambers::chamber_stack::turn_per_chamber;
+use kawaguchi::chambers::chamber_stack::{ChamberStack, turn_per_chamber};
 use murex::implicit_mesh::ImplicitMesh;
 pub use murex::implicit_mesh::PieceMaker;
 use sweep::sweep_mesh::SweepMesh;
@@ -73,6 +73,18 @@ pub(crate) fn repair(
         }
         (Form::Implicit(i), Form::Implicit(f)) => murex::repair::repair(i, f, pattern, problems),
         _ => unreachable!("the fallback is a form of the same kind"),
+    }
+}
+
+/// Why `form`, though the page shows it, is no solid a file may carry: whorls of a chamber
+/// stack that pass through one another. None for a form that builds a solid.
+pub fn self_overlap(form: &Form) -> Option<Problem> {
+    match form {
+        Form::Chambers(c) => ChamberStack::new(c)
+            .ok()
+            .as_ref()
+            .and_then(kawaguchi::chambers::repair::overlap_problem),
+        _ => None,
     }
 }
 

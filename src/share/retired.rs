@@ -71,7 +71,7 @@ impl Retired {
         };
         let (slot, old) = chamber;
         let new = chamber_of_shift_beyond_top(&old, beyond);
-        problems.push(Problem::new(
+        problems.push(Problem::read_as(
             KEY,
             format!(
                 "links made before T became the top base's position shifted each chamber by T = ({}, {}, {}) beyond its top base; read as the same growth with no gaps: width H = {}, position (Tx, Ty) = ({}, {})",

@@ -11,6 +11,9 @@ pub struct Problem {
     pub key: String,
     /// What was wrong, and what was used instead.
     pub message: String,
+    /// Whether the value was only read another way, meaning the same shell (a key of an
+    /// earlier version, converted): a note, where every other problem changed what was asked.
+    pub same_shell: bool,
 }
 
 impl Problem {
@@ -18,6 +21,15 @@ impl Problem {
         Self {
             key: key.into(),
             message: message.into(),
+            same_shell: false,
+        }
+    }
+
+    /// A value read another way that means the same shell.
+    pub fn read_as(key: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            same_shell: true,
+            ..Self::new(key, message)
         }
     }
 }

@@ -1,9 +1,9 @@
 //! The download menu: every file the page offers for the shell shown (GLB first, then PLY,
-//! 3MF, OBJ, STL, the picture and the pattern), each with its size, and the height that GLB
+//! 3MF, OBJ, STL, the picture and the pattern), each with its size, and the size that GLB
 //! and 3MF files are made at. The viewer writes a file where its copy of the shell is
 //! (`work/file_writer.rs`), a frame's budget at a time; the page shows where it stands, with a
 //! progress bar while it takes longer than a frame, then offers it as a download. What cannot
-//! be exported (nothing grown yet, a shell that stopped, an open surface as 3MF, a height out
+//! be exported (nothing grown yet, a shell that stopped, an open surface as 3MF, a size out
 //! of bounds) is said in words. `<body data-download>`: finishing (an implicit shell still
 //! growing is grown whole first), writing, offered, refused (empty before any).
 
@@ -23,8 +23,8 @@ use web_sys::{
 
 /// Least time between two updates of the sizes shown while the shell grows.
 const SIZES_EVERY_MS: f64 = 500.0;
-/// What the height field is called in messages.
-const HEIGHT: &str = "Height";
+/// What the size field is called in messages.
+const SIZE: &str = "Size";
 
 /// The download menu, and whether a file is under way.
 #[derive(Default)]
@@ -35,14 +35,14 @@ pub struct Downloads {
 }
 
 impl Downloads {
-    /// What to ask the viewer for the file `what` of the shell it shows, at the height the
+    /// What to ask the viewer for the file `what` of the shell it shows, at the size the
     /// field asks for; a message says why when it cannot be made.
     pub fn start(&mut self, what: Download) -> Option<ViewCommand> {
         if self.busy {
             return None;
         }
         let size = match what {
-            Download::Mesh(format) if format.sized() => height(),
+            Download::Mesh(format) if format.sized() => size(),
             _ => Ok(PrintSize::default()),
         };
         match size {
@@ -158,11 +158,11 @@ fn megabytes(bytes: f64) -> String {
     }
 }
 
-/// The height the field asks for, refused out of bounds by name.
-fn height() -> Result<PrintSize, String> {
-    let input = element("download-height").and_then(|e| e.dyn_into::<HtmlInputElement>().ok());
+/// The size (largest side) the field asks for, refused out of bounds by name.
+fn size() -> Result<PrintSize, String> {
+    let input = element("download-size").and_then(|e| e.dyn_into::<HtmlInputElement>().ok());
     let mm = input.map_or(PrintSize::DEFAULT_MM, |i| i.value_as_number());
-    PrintSize::new(mm, HEIGHT).map_err(|e| e.to_string())
+    PrintSize::new(mm, SIZE).map_err(|e| e.to_string())
 }
 
 fn set_buttons_enabled(enabled: bool) {

@@ -11,7 +11,7 @@ use super::view_status::{Device, FrameReport, ShellStatus, ViewStatus};
 use super::wire::{Reader, WireError, Writer};
 use crate::export::Download;
 use crate::export::estimate::Counts;
-use crate::export::print_size::PrintSize;
+use crate::export::print_size::{Along, PrintSize};
 use crate::presets;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
@@ -205,6 +205,10 @@ pub fn encode_command(command: &ViewCommand) -> Vec<u8> {
             w.u8(WRITE_FILE);
             write_download(&mut w, *what);
             w.f64(size.mm());
+            w.u8(Along::ALL
+                .iter()
+                .position(|&a| a == size.side())
+                .unwrap_or(0) as u8);
         }
     }
     w.into_bytes()
@@ -282,6 +286,11 @@ pub fn decode_command(bytes: &[u8]) -> Result<ViewCommand, WireError> {
             let what = read_download(&mut r)?;
             let at = r.at();
             let size = PrintSize::new(r.f64("size")?, "size").map_err(|_| bad("size", at))?;
+            let at = r.at();
+            let along = *Along::ALL
+                .get(usize::from(r.u8("side")?))
+                .ok_or_else(|| bad("side", at))?;
+            let size = size.along(along);
             ViewCommand::WriteFile { what, size }
         }
         _ => return Err(bad("command", at)),

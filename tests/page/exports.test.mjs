@@ -266,8 +266,8 @@ test('what cannot be exported says why, and nothing downloads', async () => {
   const cases = [
     // Growth stopped: the pattern diverged.
     ['v=1&preset=oliva-porphyria&pattern.model.kappa=0&pattern.model.rho=5', 'stopped', 'glb', null, /stopped growing/],
-    // A height no printer makes.
-    ['v=1&preset=turbinate&form.spiral.whorls=2&growth.speed=200', 'grown', '3mf', '0', /Height: 0 mm is outside/],
+    // A size no printer makes.
+    ['v=1&preset=turbinate&form.spiral.whorls=2&growth.speed=200', 'grown', '3mf', '0', /Size: 0 mm is outside/],
     // A surface with no wall cannot be printed.
     ['v=1&preset=turbinate&form.spiral.whorls=2&form.wall.thickness=0&growth.speed=200', 'grown', '3mf', null, /form\.wall\.thickness/],
   ];
@@ -275,7 +275,7 @@ test('what cannot be exported says why, and nothing downloads', async () => {
     const { page } = await open(browser, `${base}#${link}`);
     try {
       assert.equal((await waitForState(page, [state, 'error'])).state, state, link);
-      if (height !== null) await page.fill('#download-height', height);
+      if (height !== null) await page.fill('#download-size', height);
       let downloaded = false;
       page.on('download', () => { downloaded = true; });
       await page.click(`#download-${what}`);

@@ -4,6 +4,7 @@
 use super::textures::check_textures;
 use crate::blobtree::bend::MAX_BEND_DEGREES;
 use crate::blobtree::falloff::support_of;
+use crate::mesh::MAX_GROWTH_DECADES;
 use crate::shape::ShapeError;
 use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec, Placement};
 use glam::DVec3;
@@ -14,6 +15,14 @@ pub const MAX_INSTANCES: u64 = 5_000;
 pub const MAX_RESOLUTION: u32 = 384;
 /// Fewest voxels along the longest side that still show a whorl.
 pub const MIN_RESOLUTION: u32 = 16;
+
+/// The most whorls a spiral whose radii grow by `lambda` a turn may have (at least 1): as
+/// many as keep its growth within 10^[`MAX_GROWTH_DECADES`].
+pub fn most_whorls(lambda: f64) -> u32 {
+    (MAX_GROWTH_DECADES / lambda.log10())
+        .floor()
+        .clamp(1.0, f64::from(u32::MAX)) as u32
+}
 
 /// Checks what the numbers must satisfy for the tree to be built.
 pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
@@ -43,6 +52,18 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
         return Err(ShapeError::new(
             "form.whorls",
             "whorls, sections and surfaces must each be at least 1",
+        ));
+    }
+    let most = most_whorls(h.lambda);
+    if spec.whorls > most {
+        return Err(ShapeError::new(
+            "form.whorls",
+            format!(
+                "{} whorls at λ = {} grow the shell 10^{:.0} times from its apex: at most {most} at this λ (a float32 file keeps no finer detail than 10^-{MAX_GROWTH_DECADES} of a shell)",
+                spec.whorls,
+                h.lambda,
+                f64::from(spec.whorls) * h.lambda.log10()
+            ),
         ));
     }
     let instances = u64::from(spec.whorls) * u64::from(spec.sections) * u64::from(spec.surfaces);

@@ -2,7 +2,7 @@
 //! violation repaired from the fallback's part it concerns, and spines placed by a pattern only
 //! where there is one.
 
-use super::check::check;
+use super::check::{self, check};
 use crate::spec::form::implicit::{ImplicitSpec, Placement};
 use crate::spec::pattern::{Model, PatternSpec};
 use crate::spec::problem::Problem;
@@ -18,7 +18,11 @@ pub(crate) fn repair(
 ) {
     if let Err(e) = check(i) {
         let key = e.key.as_str();
-        let used = if key == "form.resolution" {
+        let most = check::most_whorls(i.spiral.lambda);
+        let used = if key == "form.whorls" && i.whorls > most {
+            i.whorls = most;
+            most.to_string()
+        } else if key == "form.resolution" {
             i.resolution = f.resolution;
             format!("the preset's resolution {}", f.resolution)
         } else if key.starts_with("form.generator") {

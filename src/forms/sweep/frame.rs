@@ -25,14 +25,18 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// The Frenet frame of eq 3, from the analytic derivatives of 𝓗.
+    /// The Frenet frame of eq 3, from the analytic derivatives of 𝓗. A spiral that does not
+    /// curve has none (r₀ = 0 makes 𝓗 the axis itself, or a point): the axis-aligned frame
+    /// stands in, which is the Frenet frame of a flat spiral.
     pub fn frenet(spiral: &HelicoSpiral, t: f64) -> Self {
-        let e1 = spiral.derivative(t).normalize();
-        let e3 = e1.cross(spiral.second_derivative(t)).normalize();
-        Self {
-            e1,
-            e2: e3.cross(e1),
-            e3,
+        let e1 = spiral.derivative(t).try_normalize();
+        match e1.and_then(|e1| Some((e1, e1.cross(spiral.second_derivative(t)).try_normalize()?))) {
+            Some((e1, e3)) => Self {
+                e1,
+                e2: e3.cross(e1),
+                e3,
+            },
+            None => Self::axis_aligned(t),
         }
     }
 

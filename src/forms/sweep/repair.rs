@@ -1,7 +1,7 @@
-//! The sweep's cross-field checks: a curve with the control points its closedness needs, and a
-//! mesh within the vertex cap. Each violation is repaired from the fallback and reported.
+//! The sweep's cross-field checks: a curve with the control points its closedness needs, a
+//! growth from apex to opening that a file can hold, and a mesh within the vertex cap. Each violation is repaired from the fallback and reported.
 
-use crate::mesh::MAX_VERTICES;
+use crate::mesh::{MAX_GROWTH_DECADES, MAX_VERTICES};
 use crate::spec::form::sweep::{CurveSpec, SweepSpec};
 use crate::spec::problem::Problem;
 
@@ -14,6 +14,21 @@ fn sweep_vertices(s: &SweepSpec) -> u64 {
     rims * points * if s.wall.thickness > 0.0 { 2 } else { 1 }
 }
 
+/// The fewest whorls the panel offers.
+const MIN_WHORLS: f64 = 0.05;
+
+/// How many tenfold the sweep grows from apex to opening, the fastest of its radius, height
+/// and curve; and the whorls that would grow it by [`MAX_GROWTH_DECADES`].
+fn growth_decades(s: &SweepSpec) -> (f64, f64) {
+    let per_step = [s.spiral.lambda_r, s.spiral.lambda_z, s.curve.lambda_c]
+        .map(|l| l.log10().abs())
+        .into_iter()
+        .fold(0.0, f64::max);
+    let steps_per_whorl = 360.0 / s.spiral.delta_theta;
+    let most = MAX_GROWTH_DECADES / (per_step * steps_per_whorl);
+    (per_step * steps_per_whorl * s.spiral.whorls, most)
+}
+
 /// Whether the curve has the number of control points its closedness needs.
 fn curve_fits(curve: &CurveSpec) -> bool {
     let n = curve.points.len();
@@ -24,8 +39,8 @@ fn curve_fits(curve: &CurveSpec) -> bool {
     }
 }
 
-/// A sweep's curve must have the control points its closedness needs, and its mesh fit the
-/// vertex cap.
+/// A sweep's curve must have the control points its closedness needs, its growth stay within
+/// [`MAX_GROWTH_DECADES`], and its mesh fit the vertex cap.
 pub(crate) fn repair(s: &mut SweepSpec, f: &SweepSpec, problems: &mut Vec<Problem>) {
     if !curve_fits(&s.curve) {
         let n = s.curve.points.len();
@@ -43,6 +58,37 @@ pub(crate) fn repair(s: &mut SweepSpec, f: &SweepSpec, problems: &mut Vec<Proble
         ));
         s.curve.points = f.curve.points.clone();
         s.curve.closed = f.curve.closed;
+    }
+    let (decades, most) = growth_decades(s);
+    if decades > MAX_GROWTH_DECADES {
+        // Down to the hundredth of a whorl, as the panel shows whorls; rates so fast that not
+        // even the panel's fewest whorls fit take the preset's rates and whorls.
+        let whorls = (most * 100.0).floor() / 100.0;
+        let asked = format!(
+            "{} whorls at λᵣ = {}, λ_z = {}, λ_c = {} every {}° grow the shell 10^{decades:.0} times from its apex: at most {whorls} whorls at these rates (a float32 file keeps no finer detail than 10^-{MAX_GROWTH_DECADES} of a shell)",
+            s.spiral.whorls,
+            s.spiral.lambda_r,
+            s.spiral.lambda_z,
+            s.curve.lambda_c,
+            s.spiral.delta_theta
+        );
+        let used = if whorls >= MIN_WHORLS {
+            s.spiral.whorls = whorls;
+            whorls.to_string()
+        } else {
+            s.spiral.lambda_r = f.spiral.lambda_r;
+            s.spiral.lambda_z = f.spiral.lambda_z;
+            s.curve.lambda_c = f.curve.lambda_c;
+            if growth_decades(s).0 > MAX_GROWTH_DECADES {
+                s.spiral.whorls = f.spiral.whorls;
+                s.spiral.delta_theta = f.spiral.delta_theta;
+            }
+            "the preset's rates".to_string()
+        };
+        problems.push(Problem::new(
+            "form.spiral.whorls",
+            format!("{asked}; used {used}"),
+        ));
     }
     let vertices = sweep_vertices(s);
     if vertices > MAX_VERTICES {

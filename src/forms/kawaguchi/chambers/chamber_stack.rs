@@ -25,7 +25,7 @@
 //! and the axis of R(Q) along z.
 
 use super::mouth::mouth_polygon;
-use crate::mesh::Bounds;
+use crate::mesh::{Bounds, MAX_GROWTH_DECADES};
 use crate::shape::ShapeError;
 use crate::spec::form::chambers::{ChamberSpec, ChambersSpec, Pair};
 use crate::spec::handedness::Handedness;
@@ -43,6 +43,40 @@ pub enum RingKind {
     Suture,
     /// A chamber's top base.
     Top,
+}
+
+/// The most chambers a stack of growth ratio `ratio` may have (at least 1): as many as keep its
+/// growth from first to last chamber within 10^[`MAX_GROWTH_DECADES`].
+pub fn most_chambers(ratio: f64) -> u32 {
+    let decades = ratio.log10().abs();
+    if decades > 0.0 {
+        (MAX_GROWTH_DECADES / decades)
+            .floor()
+            .clamp(1.0, f64::from(u32::MAX)) as u32
+    } else {
+        u32::MAX
+    }
+}
+
+/// Refuses `chambers` chambers at growth ratio `ratio` when they grow beyond
+/// [`MAX_GROWTH_DECADES`], saying how many this ratio allows.
+pub fn check_growth(chambers: u32, ratio: f64) -> Result<(), ShapeError> {
+    let most = most_chambers(ratio);
+    if chambers <= most {
+        return Ok(());
+    }
+    let decades = f64::from(chambers) * ratio.log10();
+    let (verb, decades) = if decades < 0.0 {
+        ("shrink the last to", format!("10^{:.0} of", decades))
+    } else {
+        ("grow the last to", format!("10^{:.0} times", decades))
+    };
+    Err(ShapeError::new(
+        "form.chambers",
+        format!(
+            "{chambers} chambers at ratio {ratio} {verb} {decades} the first: at most {most} at this ratio (a float32 file keeps no finer detail than 10^-{MAX_GROWTH_DECADES} of a shell)"
+        ),
+    ))
 }
 
 /// R(Q): the inclination of the top base, rotations about x, then y, then z.
@@ -120,6 +154,7 @@ impl ChamberStack {
                 "a shell needs at least one chamber",
             ));
         }
+        check_growth(spec.chambers, c.ratio)?;
         let bottom: Vec<DVec3> = mouth_polygon(&spec.mouth)?
             .into_iter()
             .map(|p| p.extend(0.0))

@@ -5,4 +5,5 @@
 pub(crate) mod chamber_mesh;
 pub mod chamber_stack;
 pub(crate) mod mouth;
+pub(crate) mod overlap;
 pub(crate) mod repair;

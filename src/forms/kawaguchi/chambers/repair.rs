@@ -1,15 +1,18 @@
-//! The chamber stack's cross-field checks: a mouth that does not fold over itself, chambers
-//! whose top base stays above their bottom base, and a mesh within the vertex cap.
+//! The chamber stack's cross-field checks: a mouth that does not fold over itself, a growth
+//! from first to last chamber that a file can hold, chambers whose top base stays above their
+//! bottom base, and a mesh within the vertex cap.
 
 use super::chamber_mesh::mesh_capacity;
-use super::chamber_stack::ChamberStack;
+use super::chamber_stack::{ChamberStack, check_growth, most_chambers};
 use super::mouth::mouth_polygon;
+use super::overlap::whorls_overlap;
 use crate::mesh::MAX_VERTICES;
 use crate::spec::form::chambers::ChambersSpec;
 use crate::spec::problem::Problem;
 
-/// A chamber stack must build (a mouth that does not fold over itself, chambers whose top
-/// base stays above their bottom base) and fit the vertex cap.
+/// A chamber stack must build (a mouth that does not fold over itself, no more chambers than
+/// its ratio allows, chambers whose top base stays above their bottom base) and fit the
+/// vertex cap.
 pub(crate) fn repair(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<Problem>) {
     if let Err(e) = mouth_polygon(&c.mouth) {
         problems.push(e.repaired("the preset's protuberances"));
@@ -18,12 +21,20 @@ pub(crate) fn repair(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<
             c.mouth = f.mouth.clone();
         }
     }
+    if let Err(e) = check_growth(c.chambers, c.chamber.ratio) {
+        let most = most_chambers(c.chamber.ratio);
+        problems.push(e.repaired(&most.to_string()));
+        c.chambers = most;
+    }
     if let Err(e) = ChamberStack::new(c) {
         problems.push(e.repaired("the preset's chamber"));
         c.chamber = f.chamber.clone();
         if ChamberStack::new(c).is_err() {
             *c = f.clone();
         }
+    }
+    if let Some(problem) = ChamberStack::new(c).ok().as_ref().and_then(overlap_problem) {
+        problems.push(problem);
     }
     let vertices = mesh_capacity(c).0.vertices as u64;
     if vertices > MAX_VERTICES {
@@ -37,4 +48,17 @@ pub(crate) fn repair(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<
         c.chambers = f.chambers;
         c.mouth.apexes = f.mouth.apexes;
     }
+}
+
+/// Whorls that pass through one another, said with the fix; the stack is left as asked, since
+/// the page shows it well, but no file is written of it.
+pub(crate) fn overlap_problem(stack: &ChamberStack) -> Option<Problem> {
+    whorls_overlap(stack).map(|d| {
+        Problem::new(
+            "form.chamber.ratio",
+            format!(
+                "whorls overlap: each chamber passes through the one {d} chambers later, so no file is written of this shell; raise the growth ratio r, or move the position (Tx, Ty) to open the coil"
+            ),
+        )
+    })
 }
