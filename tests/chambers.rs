@@ -358,7 +358,7 @@ fn bad_parameters_get_messages_that_name_them() {
         ),
         (
             "form.chambers=2000",
-            "2000 chambers at ratio 1.035 grow the last to 10^30 times the first: at most 334 at this ratio",
+            "2000 chambers at ratio 1.035 grow the last to 10^30 times the first: at most 267 at this ratio",
         ),
     ];
     for (change, expected) in cases {

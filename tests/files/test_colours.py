@@ -109,13 +109,19 @@ class Glb(unittest.TestCase):
         self.assertEqual(texture.size, (400, 2900))
         self.assertTrue(np.array_equal(np.asarray(texture.convert("RGB")), np.asarray(planar)))
 
-    def test_the_size_is_the_height_in_metres(self):
-        for size, metres in [(None, 0.08), ("120", 0.12)]:
-            options = ["--size", size] if size else []
-            scene = trimesh.load(export("kawaguchi-shell", "glb", *options))
-            low, high = scene.bounds
-            self.assertAlmostEqual(high[1] - low[1], metres, places=6)
-            self.assertAlmostEqual(low[1], 0.0, places=6)
+    def test_the_size_is_the_largest_side_in_metres_or_the_side_named(self):
+        # glTF's up is y and its depth z; the options name a printer's sides (z up, y deep).
+        for options, axis, metres in [([], None, 0.08),
+                                      (["--size", "120"], None, 0.12),
+                                      (["--size", "120", "--size-axis", "z"], 1, 0.12),
+                                      (["--size", "50", "--size-axis", "y"], 2, 0.05),
+                                      (["--size", "50", "--size-axis", "x"], 0, 0.05)]:
+            with self.subTest(options=options):
+                scene = trimesh.load(export("kawaguchi-shell", "glb", *options))
+                low, high = scene.bounds
+                side = max(high - low) if axis is None else high[axis] - low[axis]
+                self.assertAlmostEqual(side, metres, places=6)
+                self.assertAlmostEqual(low[1], 0.0, places=6)
 
 
 class Ply(unittest.TestCase):

@@ -270,12 +270,14 @@ test('what cannot be exported says why, and nothing downloads', async () => {
     ['v=1&preset=turbinate&form.spiral.whorls=2&growth.speed=200', 'grown', '3mf', '0', /Size: 0 mm is outside/],
     // A surface with no wall cannot be printed.
     ['v=1&preset=turbinate&form.spiral.whorls=2&form.wall.thickness=0&growth.speed=200', 'grown', '3mf', null, /form\.wall\.thickness/],
+    // Whorls that come round onto themselves: the page shows them and says so; no file.
+    ['v=1&preset=kawaguchi-ammonite&form.chamber.ratio=1&growth.speed=200', 'grown', 'stl', null, /form\.chamber\.ratio: whorls overlap/],
   ];
-  for (const [link, state, what, height, said] of cases) {
+  for (const [link, state, what, size, said] of cases) {
     const { page } = await open(browser, `${base}#${link}`);
     try {
       assert.equal((await waitForState(page, [state, 'error'])).state, state, link);
-      if (height !== null) await page.fill('#download-size', height);
+      if (size !== null) await page.fill('#download-size', size);
       let downloaded = false;
       page.on('download', () => { downloaded = true; });
       await page.click(`#download-${what}`);

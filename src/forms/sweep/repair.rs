@@ -18,10 +18,14 @@ fn sweep_vertices(s: &SweepSpec) -> u64 {
 const MIN_WHORLS: f64 = 0.05;
 
 /// How many tenfold the sweep grows from apex to opening, the fastest of its radius, height
-/// and curve; and the whorls that would grow it by [`MAX_GROWTH_DECADES`].
+/// and curve, and of its curve against its radius and height; and the whorls that would grow
+/// it by [`MAX_GROWTH_DECADES`].
 fn growth_decades(s: &SweepSpec) -> (f64, f64) {
-    let per_step = [s.spiral.lambda_r, s.spiral.lambda_z, s.curve.lambda_c]
-        .map(|l| l.log10().abs())
+    let [r, z, c] = [s.spiral.lambda_r, s.spiral.lambda_z, s.curve.lambda_c].map(f64::log10);
+    // The curve against the spiral too: a curve that shrinks as the whorls widen leaves a rim
+    // small beside the shell's size at the opening.
+    let per_step = [r, z, c, c - r, c - z]
+        .map(f64::abs)
         .into_iter()
         .fold(0.0, f64::max);
     let steps_per_whorl = 360.0 / s.spiral.delta_theta;

@@ -147,7 +147,7 @@ impl Sweep {
                 l: table.length_at(&curve, s) / table.total(),
             }
         };
-        let columns = params
+        let mut columns: Vec<Column> = params
             .iter()
             .map(|&s| Column {
                 before: sample(s - DS),
@@ -155,6 +155,12 @@ impl Sweep {
                 after: sample(s + DS),
             })
             .collect();
+        // The neighbours of the last point wrap too, but s_max + DS wraps to DS give or take
+        // a float step: the last column is the first, so that the sculpted normal, and with it
+        // the inner wall, closes the seam bit for bit as the outer surface does.
+        if curve.is_closed() {
+            columns[n] = columns[0];
+        }
         let orientation = if curve.signed_area_uv() < 0.0 {
             -1.0
         } else {
