@@ -88,9 +88,7 @@ impl Shell {
             size,
         })
     }
-}
 
-impl Shell {
     /// The sides (mm) of the box the shell fills in a 3MF file at its size: x across, y from
     /// front to back, z up (the apex), as a printer's plate has them.
     pub fn printed_sides(&self) -> DVec3 {

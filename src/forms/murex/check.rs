@@ -18,7 +18,7 @@ pub const MIN_RESOLUTION: u32 = 16;
 
 /// The most whorls a spiral whose radii grow by `lambda` a turn may have (at least 1): as
 /// many as keep its growth within 10^[`MAX_GROWTH_DECADES`].
-pub fn most_whorls(lambda: f64) -> u32 {
+pub(crate) fn most_whorls(lambda: f64) -> u32 {
     (MAX_GROWTH_DECADES / lambda.log10())
         .floor()
         .clamp(1.0, f64::from(u32::MAX)) as u32

@@ -2,6 +2,7 @@
 //! growth from apex to opening that a file can hold, and a mesh within the vertex cap. Each violation is repaired from the fallback and reported.
 
 use crate::mesh::{MAX_GROWTH_DECADES, MAX_VERTICES};
+use crate::spec::fields::{self, Kind};
 use crate::spec::form::sweep::{CurveSpec, SweepSpec};
 use crate::spec::problem::Problem;
 
@@ -15,7 +16,12 @@ fn sweep_vertices(s: &SweepSpec) -> u64 {
 }
 
 /// The fewest whorls the panel offers.
-const MIN_WHORLS: f64 = 0.05;
+fn fewest_whorls() -> f64 {
+    match fields::field("sweep", "form.spiral.whorls").map(|f| f.kind) {
+        Some(Kind::Real { min, .. }) => min,
+        _ => unreachable!("the sweep's whorls are a real field"),
+    }
+}
 
 /// How many tenfold the sweep grows from apex to opening, the fastest of its radius, height
 /// and curve, and of its curve against its radius and height; and the whorls that would grow
@@ -76,7 +82,7 @@ pub(crate) fn repair(s: &mut SweepSpec, f: &SweepSpec, problems: &mut Vec<Proble
             s.curve.lambda_c,
             s.spiral.delta_theta
         );
-        let used = if whorls >= MIN_WHORLS {
+        let used = if whorls >= fewest_whorls() {
             s.spiral.whorls = whorls;
             whorls.to_string()
         } else {

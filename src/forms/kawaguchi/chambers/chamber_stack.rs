@@ -47,7 +47,7 @@ pub enum RingKind {
 
 /// The most chambers a stack of growth ratio `ratio` may have (at least 1): as many as keep its
 /// growth from first to last chamber within 10^[`MAX_GROWTH_DECADES`].
-pub fn most_chambers(ratio: f64) -> u32 {
+pub(crate) fn most_chambers(ratio: f64) -> u32 {
     let decades = ratio.log10().abs();
     if decades > 0.0 {
         (MAX_GROWTH_DECADES / decades)
@@ -60,7 +60,7 @@ pub fn most_chambers(ratio: f64) -> u32 {
 
 /// Refuses `chambers` chambers at growth ratio `ratio` when they grow beyond
 /// [`MAX_GROWTH_DECADES`], saying how many this ratio allows.
-pub fn check_growth(chambers: u32, ratio: f64) -> Result<(), ShapeError> {
+pub(crate) fn check_growth(chambers: u32, ratio: f64) -> Result<(), ShapeError> {
     let most = most_chambers(ratio);
     if chambers <= most {
         return Ok(());
