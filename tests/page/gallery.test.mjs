@@ -138,7 +138,8 @@ const BAD_LINKS = [
   ['#v=1&preset=kawaguchi-shell&form.mouth.protuberances=0,-1.5', 'fold the mouth polygon over itself'],
   ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=2', 'outside the range 3 to 256'],
   ['#v=1&preset=kawaguchi-shell&form.chamber.ratio=0', 'outside the range 0.5 to 2'],
-  ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true', 'cap of 2000000'],
+  ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true&form.chamber.ratio=1.001', 'cap of 2000000'],
+  ['#v=1&preset=kawaguchi-shell&form.chambers=2000', 'at most 267 at this ratio'],
 ];
 
 test('bad links each get a specific message and still a working page', async () => {
