@@ -1,7 +1,7 @@
 //! `seashells mesh`: the grown shell's mesh as a file.
 
 use crate::Failure;
-use crate::options::Options;
+use crate::options::{Options, WRITES};
 use crate::out::Out;
 use seashells_core::export::MeshFormat;
 use seashells_core::export::job::Export;
@@ -55,15 +55,7 @@ fn size(options: &Options, format: MeshFormat) -> Result<PrintSize, Failure> {
 pub fn mesh(args: &[String]) -> Result<(), Failure> {
     let options = Options::parse(
         args,
-        &[
-            "preset",
-            "link",
-            "out",
-            "format",
-            "resolution",
-            "size",
-            "size-axis",
-        ],
+        &[WRITES, &["resolution", "size", "size-axis"]].concat(),
         false,
     )?;
     let out = Out::new(options.required("out")?);

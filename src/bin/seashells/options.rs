@@ -7,6 +7,9 @@ use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{self, Kind};
 use std::collections::BTreeMap;
 
+/// The options of every command that writes a file: the shell, and where and how to write it.
+pub const WRITES: &[&str] = &["preset", "link", "out", "format"];
+
 /// Options given as `--name value`, and at most one word without a name (a link).
 pub struct Options {
     named: BTreeMap<String, String>,

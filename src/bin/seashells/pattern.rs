@@ -1,7 +1,7 @@
 //! `seashells pattern`: the pigmentation pattern's planar representation as a file.
 
 use crate::Failure;
-use crate::options::Options;
+use crate::options::{Options, WRITES};
 use crate::out::Out;
 use seashells_core::export;
 use seashells_core::pattern::run::PatternRun;
@@ -10,15 +10,7 @@ use seashells_core::share::repair::repair;
 pub fn pattern(args: &[String]) -> Result<(), Failure> {
     let options = Options::parse(
         args,
-        &[
-            "preset",
-            "link",
-            "out",
-            "format",
-            "cells",
-            "rows",
-            "iterations",
-        ],
+        &[WRITES, &["cells", "rows", "iterations"]].concat(),
         false,
     )?;
     let out = Out::new(options.required("out")?);
