@@ -80,6 +80,9 @@ pub struct App {
     /// What the viewer said of itself after the last frame (and nothing of a shell just
     /// loaded until it has).
     status: ViewStatus,
+    /// The session whose stop was said: said once, so that a message said since (a refused
+    /// download) stays.
+    stop_said: Option<u32>,
     /// Where shells, pictures and pieces grow.
     workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
@@ -185,6 +188,7 @@ impl App {
             replaced_canvas: None,
             planar,
             status: ViewStatus::default(),
+            stop_said: None,
             workers,
             pictures,
             map: MapView::default(),
@@ -999,7 +1003,10 @@ impl App {
         signal("growth", if whole { "done" } else { "growing" });
         self.downloads.show_sizes(shell);
         if let Some(failure) = &shell.failure {
-            show_message(failure);
+            if self.stop_said != Some(shell.session) {
+                show_message(failure);
+                self.stop_said = Some(shell.session);
+            }
             signal("state", "stopped");
         } else if shell.finished() {
             if let Some(hash) = shell.pattern_hash {
