@@ -35,6 +35,7 @@ const HELP_MESH: &str = "seashells mesh (--preset ID | --link FRAGMENT) --out FI
 Grows the shell to its end and writes its mesh in the format of FILE's extension: .glb (glTF
 binary, with its pattern as a texture), .ply and .3mf (colour per vertex), .obj, .stl. Prints the
 mesh's vertex and triangle counts and hash (as the page shows them) and the file's bytes.
+  --format EXT       glb, ply, 3mf, obj or stl when FILE has no extension (--out - for stdout)
   --resolution N     the polygonization grid of an implicit shell (the Murex), N³ voxels
   --size MM          the largest side of a .glb or .3mf shell's box in millimetres, 5 to 500
                      (80 unless given): its height, or its length where it lies longer
@@ -49,6 +50,7 @@ const HELP_PATTERN: &str = "seashells pattern (--preset ID | --link FRAGMENT) --
 Computes the shell's pigmentation pattern on its growing edge and writes its planar
 representation: .png (the colours, a row per time step) or .csv (the recorded value, the
 activator's concentration, a line per row and a value per cell).
+  --format EXT                         png or csv when FILE has no extension (--out - for stdout)
   --cells N, --rows N, --iterations N   override the spec's cells, rows and iterations per row";
 
 /// The help on `info`.
