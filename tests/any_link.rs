@@ -13,7 +13,7 @@
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed};
 use seashells_core::generator::Generator;
-use seashells_core::mesh::Mesh;
+use seashells_core::mesh::{Bounds, Mesh};
 use seashells_core::presets::presets;
 use seashells_core::share::link::{self, Decoded};
 use seashells_core::spec::ShellSpec;
@@ -154,17 +154,10 @@ fn fault(mesh: &Mesh, solid: bool) -> Option<String> {
     if mesh.triangle_count() == 0 {
         return Some("the shell grew to nothing, and the link does not say why".into());
     }
-    let (mut low, mut high) = ([f32::MAX; 3], [f32::MIN; 3]);
-    for v in &mesh.vertices {
-        for k in 0..3 {
-            low[k] = low[k].min(v.position[k]);
-            high[k] = high[k].max(v.position[k]);
-        }
-    }
-    let side = (0..3).map(|k| high[k] - low[k]).fold(0.0, f32::max);
-    let far = (0..3)
-        .map(|k| low[k].abs().max(high[k].abs()))
-        .fold(0.0, f32::max);
+    let mut bounds = Bounds::EMPTY;
+    bounds.include_vertices(&mesh.vertices);
+    let side = (bounds.max - bounds.min).max_element() as f32;
+    let far = bounds.min.abs().max(bounds.max.abs()).max_element() as f32;
     if far > OFF_AXIS * side {
         return Some(format!(
             "the shell lies {far} from its axis, {} times its largest side {side}",

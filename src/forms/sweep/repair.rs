@@ -1,5 +1,6 @@
 //! The sweep's cross-field checks: a curve with the control points its closedness needs, a
-//! growth from apex to opening that a file can hold, and a mesh within the vertex cap. Each violation is repaired from the fallback and reported.
+//! growth from apex to opening that a file can hold, and a mesh within the vertex cap. Each
+//! violation is repaired from the fallback and reported.
 
 use crate::mesh::{MAX_GROWTH_DECADES, MAX_VERTICES};
 use crate::spec::fields::{self, Kind};

@@ -26,14 +26,15 @@ pub(crate) fn repair(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<
         problems.push(e.repaired(&most.to_string()));
         c.chambers = most;
     }
-    if let Err(e) = ChamberStack::new(c) {
+    let stack = ChamberStack::new(c).or_else(|e| {
         problems.push(e.repaired("the preset's chamber"));
         c.chamber = f.chamber.clone();
-        if ChamberStack::new(c).is_err() {
+        ChamberStack::new(c).or_else(|_| {
             *c = f.clone();
-        }
-    }
-    if let Some(problem) = ChamberStack::new(c).ok().as_ref().and_then(overlap_problem) {
+            ChamberStack::new(c)
+        })
+    });
+    if let Some(problem) = stack.ok().as_ref().and_then(overlap_problem) {
         problems.push(problem);
     }
     let vertices = mesh_capacity(c).0.vertices as u64;
