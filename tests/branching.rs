@@ -265,6 +265,42 @@ fn every_branch_is_one_closed_outward_tube_at_every_stage() {
     assert!(share > 0.99, "only {share} of normals agree");
 }
 
+/// The tentacles' branches are wider than their knot; leaning 0° or ±90° (the ends and middle
+/// of the panel's range) two of them used to start from the knot's axis back to back or one in
+/// another, a base on a base (`make fuzz` found the STL of −90° with 65 edges on four faces).
+/// Each now starts on its own side of the axis.
+#[test]
+fn branches_wider_than_their_knot_start_each_on_its_own_side() {
+    for angle in [-90.0, 0.0, 90.0] {
+        let (mut spec, seed) = form("kawaguchi-tentacles");
+        spec.branches.angle = angle;
+        let tree = BranchingTree::new(&spec, seed).unwrap();
+        let starts: Vec<_> = tree
+            .segments
+            .iter()
+            .filter(|s| s.parent.is_some())
+            .map(|s| s.base.centre)
+            .collect();
+        assert_eq!(starts.len(), 8);
+        for (i, a) in starts.iter().enumerate() {
+            for b in &starts[i + 1..] {
+                assert!(a.distance(*b) > 0.01, "{angle}°: two branches start at {a}");
+            }
+        }
+        let mut g = Generator::new(
+            &decode(&format!(
+                "v=1&preset=kawaguchi-tentacles&form.branches.angle={angle}"
+            ))
+            .spec,
+        )
+        .unwrap();
+        g.finish();
+        let what = format!("tentacles at {angle}°");
+        common::assert_closed_and_outward(&g.snapshot(), &what);
+        assert_no_face_coincides(&g.snapshot(), &what);
+    }
+}
+
 #[test]
 fn a_caller_that_hands_in_another_edge_mesh_gets_the_open_caps_back() {
     let (spec, seed) = form("kawaguchi-tentacles");

@@ -35,6 +35,7 @@ pub use chunk::{Scratch, mesh_chunk};
 pub use grid::{CHUNK, ChunkIndex, Grid};
 pub use memory::{ChunkCache, Memory, Seams};
 pub use refinement::{MAX_LEVEL, Piece, Refinement};
+pub(crate) use sample::SPECK;
 pub use sample::surface_box;
 
 use crate::blobtree::blob_tree::Node;

@@ -186,7 +186,7 @@ pub(super) fn sample(
 /// it misses, a separate sliver. Either would be a separate piece of the mesh. Twelve
 /// samples is a row eleven voxels long (under a chunk and a half), or a blob under three
 /// voxels across: any part of a model that small is below what the grid can draw.
-const SPECK: usize = 12;
+pub(crate) const SPECK: usize = 12;
 
 /// Voxels beyond its chunk that the classes deciding a chunk's specks reach: a speck's
 /// samples lie within [`SPECK`] of the chunk, and a sample on the face of a coarser piece is

@@ -1,6 +1,7 @@
 //! What the numbers of an implicit shell must satisfy for its BlobTree to be built, and the
 //! caps that keep any shell within memory and time; each refusal names its key.
 
+use super::grid_sight;
 use super::textures::check_textures;
 use crate::blobtree::bend::MAX_BEND_DEGREES;
 use crate::blobtree::falloff::support_of;
@@ -120,7 +121,8 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             ),
         ));
     }
-    check_textures(&spec.textures)
+    check_textures(&spec.textures)?;
+    grid_sight::check(spec)
 }
 
 /// The smallest and largest R₀: beyond them the shell's sizes underflow or overflow the

@@ -9,6 +9,7 @@ pub mod canal_spines;
 pub mod check;
 pub mod fine_parts;
 pub(crate) mod generating_surface;
+mod grid_sight;
 pub mod helix;
 pub mod implicit_mesh;
 pub(crate) mod opening;

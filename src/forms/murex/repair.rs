@@ -1,11 +1,16 @@
 //! The implicit shell's cross-field checks: everything [`check`] asks of the numbers, each
-//! violation repaired from the fallback's part it concerns, and spines placed by a pattern only
+//! violation repaired from the fallback's part it concerns (or, for whorls too many or too
+//! thin, to the most whorls or the least λ allowed), and spines placed by a pattern only
 //! where there is one.
 
 use super::check::{self, check};
+use super::grid_sight;
 use crate::spec::form::implicit::{ImplicitSpec, Placement};
 use crate::spec::pattern::{Model, PatternSpec};
 use crate::spec::problem::Problem;
+
+/// Most times one link's implicit form is repaired before the preset's form is used.
+const REPAIRS: usize = 3;
 
 /// An implicit shell must build: a spiral that grows, positive sizes, bends its cones can
 /// take, parts that its controlled blending names, a resolution within the cap, spines and
@@ -16,12 +21,20 @@ pub(crate) fn repair(
     pattern: &PatternSpec,
     problems: &mut Vec<Problem>,
 ) {
-    if let Err(e) = check(i) {
+    // Repaired a few times over: a λ raised to be seen may allow fewer whorls.
+    for _ in 0..REPAIRS {
+        let Err(e) = check(i) else { break };
         let key = e.key.as_str();
         let most = check::most_whorls(i.spiral.lambda);
         let used = if key == "form.whorls" && i.whorls > most {
             i.whorls = most;
             most.to_string()
+        } else if let Some(least) = (key == "form.spiral.lambda" && i.spiral.lambda > 1.0)
+            .then(|| grid_sight::least_lambda_seen(i))
+            .flatten()
+        {
+            i.spiral.lambda = least;
+            format!("λ = {least}")
         } else if key == "form.resolution" {
             i.resolution = f.resolution;
             format!("the preset's resolution {}", f.resolution)
@@ -44,9 +57,10 @@ pub(crate) fn repair(
             "the preset's form".into()
         };
         problems.push(e.repaired(&used));
-        if check(i).is_err() {
-            *i = f.clone();
-        }
+    }
+    if let Err(e) = check(i) {
+        problems.push(e.repaired("the preset's form"));
+        *i = f.clone();
     }
     let varices = &mut i.varices;
     if varices.placement == Placement::Pattern && matches!(pattern.model, Model::None) {

@@ -229,7 +229,7 @@ impl BranchingTree {
                 .clamp(1.0, MAX_COUNT) as u32;
             let middle = (top.centre + next.centre) / 2.0;
             let along = (top.axis() + next.axis()).normalize();
-            let reach = top.diameter * (1.0 + spec.trunk.taper) / 4.0 - diameter / 2.0;
+            let reach = branch_reach(top.diameter * (1.0 + spec.trunk.taper) / 4.0, diameter);
             for m in 0..count {
                 let out = turned(-side, top.axis(), 360.0 * f64::from(m) / f64::from(count));
                 let lean = b.angle + b.angle_step * series + jitter();
@@ -237,7 +237,7 @@ impl BranchingTree {
                 let up = (along - axis * along.dot(axis)).normalize_or(out);
                 queue.push_back(Tip {
                     base: Base {
-                        centre: middle + out * reach.max(0.0),
+                        centre: middle + out * reach,
                         axes: DMat3::from_cols(up, axis.cross(up), axis),
                         diameter,
                     },
@@ -259,6 +259,15 @@ impl BranchingTree {
     pub fn generations(&self) -> usize {
         self.segments.last().map_or(0, |s| s.generation + 1)
     }
+}
+
+/// How far from its knot's axis a branch of diameter `d` starts, in a knot of mean radius
+/// `r`: inside the knot, its outer edge on the knot's mean rim (r − d/2), but never nearer the
+/// axis than r/16. Branches wider than their knot (the tentacles') thus start near its centre,
+/// each on its own side: started on the axis itself, two branches leaning ±90° (or 0°) would
+/// start back to back, their bases one on another, a face on a face.
+fn branch_reach(r: f64, d: f64) -> f64 {
+    (r - d / 2.0).max(r / 16.0)
 }
 
 /// The checks that need no growth: each names its key.
