@@ -7,12 +7,13 @@ mod common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit};
 use glam::DVec3;
-use seashells_core::forms::murex::check::{MAX_RESOLUTION, check};
+use seashells_core::forms::murex::check::check;
 use seashells_core::forms::murex::helix::Helix;
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::presets::{self, Group};
 use seashells_core::share::repair::repair;
+use seashells_core::spec::fields;
 use seashells_core::spec::form::implicit::{HelixSpec, ImplicitSpec};
 use seashells_core::spec::handedness::Handedness;
 use std::f64::consts::TAU;
@@ -148,7 +149,7 @@ fn bad_numbers_get_messages_that_name_the_key() {
     let cases: Vec<(&str, Spoil)> = vec![
         (
             "form.resolution",
-            Box::new(|i| i.resolution = MAX_RESOLUTION + 1),
+            Box::new(|i| i.resolution = fields::range("implicit", "form.resolution").1 as u32 + 1),
         ),
         (
             "form.generator.points",

@@ -540,6 +540,59 @@ fn the_blobtree_engine_needs_only_the_mesh() {
     }
 }
 
+/// The README's "Adding a form" says what a new form touches. Every file that dispatches on
+/// all kinds of form (it names `Form::Branching`, which a dispatch on every kind must) is
+/// named there, and so is every function of `forms/mod.rs` that dispatches on `Form`: a list
+/// that misses one sends the next form's author past a place that needs it.
+#[test]
+fn the_readmes_list_of_what_adding_a_form_touches_is_true() {
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
+        .expect("the README");
+    let start = readme
+        .find("**Adding a form**")
+        .expect("the README says how to add a form");
+    let paragraph = &readme[start..];
+    let paragraph = &paragraph[..paragraph.find("\n\n").unwrap_or(paragraph.len())];
+    let named: BTreeSet<&str> = paragraph.split('`').skip(1).step_by(2).collect();
+    let sources = crate_sources();
+    let dispatching: Vec<&Source> = sources
+        .iter()
+        .filter(|s| s.code.contains("Form::Branching"))
+        .collect();
+    assert!(
+        dispatching.len() >= 3,
+        "{} files dispatch",
+        dispatching.len()
+    );
+    for source in &dispatching {
+        assert!(
+            named.contains(source.path.as_str()),
+            "src/{} dispatches on every kind of form; the README's \"Adding a form\" does not name it",
+            source.path
+        );
+    }
+    let forms = sources
+        .iter()
+        .find(|s| s.path == "forms/mod.rs")
+        .expect("forms/mod.rs");
+    let functions = forms.code.split("fn ").skip(1);
+    let mut seen = 0;
+    for function in functions {
+        let name: String = function
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        if function.contains("Form::") {
+            seen += 1;
+            assert!(
+                named.contains(name.as_str()),
+                "forms/mod.rs's {name} dispatches on Form; the README's \"Adding a form\" does not name it"
+            );
+        }
+    }
+    assert!(seen >= 4, "only {seen} functions of forms/mod.rs dispatch");
+}
+
 /// Sources given as (path, text), as if they were the crate's.
 fn sources_of(files: &[(&str, &str)]) -> Vec<Source> {
     files

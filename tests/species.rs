@@ -73,3 +73,14 @@ fn figure_2_uses_the_papers_numbers() {
         assert_eq!(s.spiral.delta_theta, 10.0, "{id}");
     }
 }
+
+/// The page and the file writer ask `forms::meshed_in_pieces` whether a shell's growth ends in
+/// pieces meshed apart; `forms::piece_maker` makes those pieces. The two agree on every form.
+#[test]
+fn a_form_meshed_in_pieces_is_one_with_a_piece_maker() {
+    use seashells_core::forms::{meshed_in_pieces, piece_maker};
+    for p in presets() {
+        let maker = piece_maker(&p.spec, 2).unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        assert_eq!(meshed_in_pieces(&p.spec.form), maker.is_some(), "{}", p.id);
+    }
+}

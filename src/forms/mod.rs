@@ -54,6 +54,16 @@ pub fn piece_maker(spec: &ShellSpec, rows: usize) -> Result<Option<PieceMaker>, 
     }
 }
 
+/// Whether the growth of `form` ends in pieces meshed apart ([`piece_maker`] makes them): such
+/// a shell, grown whole, is remeshed whole rather than grown again when a value changes, and is
+/// finished before a file is written of it. Each form says, so that a new one must.
+pub fn meshed_in_pieces(form: &Form) -> bool {
+    match form {
+        Form::Implicit(_) => true,
+        Form::Sweep(_) | Form::Chambers(_) | Form::Branching(_) => false,
+    }
+}
+
 /// Repairs what `form` asks that its model cannot build, or that breaks a cap, from
 /// `fallback` (a form of the same kind), and says what was done in `problems`.
 pub(crate) fn repair(
@@ -84,7 +94,7 @@ pub fn self_overlap(form: &Form) -> Option<Problem> {
             .ok()
             .as_ref()
             .and_then(kawaguchi::chambers::repair::overlap_problem),
-        _ => None,
+        Form::Sweep(_) | Form::Branching(_) | Form::Implicit(_) => None,
     }
 }
 

@@ -438,6 +438,16 @@ pub fn field(kind: &str, key: &str) -> Option<&'static Field> {
     fields(kind).find(|f| f.key == key)
 }
 
+/// The panel's range of the numeric field `key` of a shell whose form is of `kind`: the one
+/// source of that value's limits, which links are held to and the forms' checks read.
+pub fn range(kind: &str, key: &str) -> (f64, f64) {
+    match field(kind, key).map(|f| f.kind) {
+        Some(Kind::Real { min, max, .. }) => (min, max),
+        Some(Kind::Integer { min, max }) => (min as f64, max as f64),
+        _ => panic!("{key} is no numeric field of a {kind} shell"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -43,7 +43,6 @@ use crate::share::link::{self, Decoded};
 use crate::share::presentation::{Layout, Presentation};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{SHELL, Section};
-use crate::spec::form::Form;
 use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
@@ -325,7 +324,7 @@ impl App {
         signal("state", "loading");
         signal("patternHash", "");
         signal("mesh", "");
-        let remesh = matches!(spec.form, Form::Implicit(_))
+        let remesh = crate::forms::meshed_in_pieces(&spec.form)
             && self
                 .current
                 .as_ref()

@@ -14,7 +14,6 @@ use crate::export::shell::Shell;
 use crate::generator::within;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
-use crate::spec::form::Form;
 
 /// Milliseconds of a frame an export may take.
 const EXPORT_BUDGET_MS: f64 = 8.0;
@@ -112,8 +111,8 @@ impl FileWriter {
             return Needs::Nothing;
         };
         let r = source.replica;
-        let implicit = matches!(source.spec.form, Form::Implicit(_));
-        if matches!(what, Download::Mesh(_)) && implicit && r.shell().is_some() && !r.is_done() {
+        let in_pieces = crate::forms::meshed_in_pieces(&source.spec.form);
+        if matches!(what, Download::Mesh(_)) && in_pieces && r.shell().is_some() && !r.is_done() {
             self.asked = Some(Asked::AfterFinish {
                 what,
                 size,

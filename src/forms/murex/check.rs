@@ -7,15 +7,12 @@ use crate::blobtree::bend::MAX_BEND_DEGREES;
 use crate::blobtree::falloff::support_of;
 use crate::mesh::MAX_GROWTH_DECADES;
 use crate::shape::ShapeError;
+use crate::spec::fields;
 use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec, Placement};
 use glam::DVec3;
 
 /// Most generating surfaces (growth steps) in one shell.
 pub const MAX_INSTANCES: u64 = 5_000;
-/// Most voxels along the longest side: 384³ samples at most.
-pub const MAX_RESOLUTION: u32 = 384;
-/// Fewest voxels along the longest side that still show a whorl.
-pub const MIN_RESOLUTION: u32 = 16;
 
 /// The most whorls a spiral whose radii grow by `lambda` a turn may have (at least 1): as
 /// many as keep its growth within 10^[`MAX_GROWTH_DECADES`].
@@ -28,33 +25,20 @@ pub(crate) fn most_whorls(lambda: f64) -> u32 {
 /// Checks what the numbers must satisfy for the tree to be built.
 pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
     let h = &spec.spiral;
-    if h.lambda <= 1.0 || h.lambda.is_nan() {
-        return Err(ShapeError::new(
-            "form.spiral.lambda",
-            format!("λ must exceed 1 (whorls grow), not {}", h.lambda),
-        ));
-    }
-    if !(h.beta > 0.0 && h.beta < 90.0) {
-        return Err(ShapeError::new(
-            "form.spiral.beta",
-            format!("β must lie strictly between 0° and 90°, not {}°", h.beta),
-        ));
-    }
-    if !(MIN_R0..=MAX_R0).contains(&h.r0) {
-        return Err(ShapeError::new(
-            "form.spiral.r0",
-            format!(
-                "R₀ must lie from {MIN_R0:e} to {MAX_R0:e}, not {:e}: the shell would be too small or too large for its field to be computed, and would grow to nothing",
-                h.r0
-            ),
-        ));
-    }
-    if spec.whorls == 0 || spec.sections == 0 || spec.surfaces == 0 {
-        return Err(ShapeError::new(
-            "form.whorls",
-            "whorls, sections and surfaces must each be at least 1",
-        ));
-    }
+    within("form.spiral.lambda", h.lambda, "λ (whorls grow)")?;
+    within("form.spiral.beta", h.beta, "β")?;
+    within("form.spiral.r0", h.r0, "R₀")?;
+    within("form.whorls", f64::from(spec.whorls), "the whorls")?;
+    within(
+        "form.sections",
+        f64::from(spec.sections),
+        "the sections per whorl",
+    )?;
+    within(
+        "form.surfaces",
+        f64::from(spec.surfaces),
+        "the generating surfaces per section",
+    )?;
     let most = most_whorls(h.lambda);
     if spec.whorls > most {
         return Err(ShapeError::new(
@@ -77,58 +61,38 @@ pub fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             ),
         ));
     }
-    if spec.whorl_angle <= 0.0 || spec.whorl_angle.is_nan() {
-        return Err(ShapeError::new(
-            "form.whorl_angle",
-            format!(
-                "the angle of a whorl must be positive, not {}°",
-                spec.whorl_angle
-            ),
-        ));
-    }
-    if !(MIN_RESOLUTION..=MAX_RESOLUTION).contains(&spec.resolution) {
-        return Err(ShapeError::new(
-            "form.resolution",
-            format!(
-                "the resolution must lie from {MIN_RESOLUTION} to the cap of {MAX_RESOLUTION} voxels, not {}",
-                spec.resolution
-            ),
-        ));
-    }
+    within(
+        "form.whorl_angle",
+        spec.whorl_angle,
+        "the rotation per whorl (degrees)",
+    )?;
+    within(
+        "form.resolution",
+        f64::from(spec.resolution),
+        "the resolution (voxels along the longest side)",
+    )?;
     check_generator(&spec.generator, "form.generator")?;
     check_varices(spec)?;
     check_canal_spines(spec)?;
     let o = &spec.opening;
-    if o.ahead > MAX_AHEAD {
-        return Err(ShapeError::new(
-            "form.opening.ahead",
-            format!(
-                "the hollow may reach at most {MAX_AHEAD} generating surfaces ahead, not {}",
-                o.ahead
-            ),
-        ));
-    }
+    within(
+        "form.opening.ahead",
+        f64::from(o.ahead),
+        "the generating surfaces the hollow reaches ahead",
+    )?;
     if parts(&o.inside) > 0 {
         check_generator(&o.inside, "form.opening.inside")?;
     }
     check_cones(&o.extension, "form.opening.extension")?;
-    if o.wall > MAX_WALL {
-        return Err(ShapeError::new(
-            "form.opening.wall",
-            format!(
-                "the inside wall may stand over at most {MAX_WALL} generating surfaces, not {}",
-                o.wall
-            ),
-        ));
-    }
+    within(
+        "form.opening.wall",
+        f64::from(o.wall),
+        "the generating surfaces the inside wall stands over",
+    )?;
     check_textures(&spec.textures)?;
     grid_sight::check(spec)
 }
 
-/// The smallest and largest R₀: beyond them the shell's sizes underflow or overflow the
-/// field's arithmetic (a squared radius of 10⁻⁶⁰⁰ is zero), and the shell would be empty.
-pub const MIN_R0: f64 = 1e-6;
-pub const MAX_R0: f64 = 1e6;
 /// The largest radius or distance from its centre a part of a generating surface may have,
 /// and the smallest radius, in units of the generating surface's size D: beyond them a part
 /// is either lost in the arithmetic or swallows the whole shell, which grows to nothing.
@@ -137,12 +101,19 @@ pub const MIN_PART: f64 = 1e-4;
 
 /// Most spines in the table of a varix's spines, and in the canal spines' table.
 pub const MAX_SPINES: usize = 1024;
-/// Most sets of bumps between two varices.
-pub const MAX_BUMP_SETS: u32 = 16;
-/// Most generating surfaces the inside wall of eq 15 stands over at the aperture.
-pub const MAX_WALL: u32 = 64;
-/// Most generating surfaces the hollow reaches ahead of the growing edge.
-pub const MAX_AHEAD: u32 = 16;
+
+/// A value within the panel's range of its field `key` (the one source of its limits).
+fn within(key: &str, x: f64, what: &str) -> Result<(), ShapeError> {
+    let (least, most) = fields::range("implicit", key);
+    if (least..=most).contains(&x) {
+        Ok(())
+    } else {
+        Err(ShapeError::new(
+            key,
+            format!("{what} must lie from {least} to {most}, not {x}"),
+        ))
+    }
+}
 
 fn parts(g: &GeneratorSpec) -> usize {
     g.points.len() + g.cones.len() + g.tori.len()
@@ -245,33 +216,21 @@ fn check_varices(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             ),
         ));
     }
-    if v.bump_sets > MAX_BUMP_SETS {
-        return Err(ShapeError::new(
-            "form.varices.bump_sets",
-            format!(
-                "at most {MAX_BUMP_SETS} sets of bumps fit between two varices, not {}",
-                v.bump_sets
-            ),
-        ));
-    }
-    if !(0.0..=1.0).contains(&v.bump_spread) {
-        return Err(ShapeError::new(
-            "form.varices.bump_spread",
-            format!(
-                "the bumps' spread must lie from 0 to 1, not {}",
-                v.bump_spread
-            ),
-        ));
-    }
-    if !(0.05..=1.0).contains(&v.spine_level) {
-        return Err(ShapeError::new(
-            "form.varices.spine_level",
-            format!(
-                "the activator level that grows a spine must lie from 0.05 to 1 (of the edge's highest peak), not {}",
-                v.spine_level
-            ),
-        ));
-    }
+    within(
+        "form.varices.bump_sets",
+        f64::from(v.bump_sets),
+        "the sets of bumps between two varices",
+    )?;
+    within(
+        "form.varices.bump_spread",
+        v.bump_spread,
+        "the bumps' spread",
+    )?;
+    within(
+        "form.varices.spine_level",
+        v.spine_level,
+        "the activator level that grows a spine (of the edge's highest peak)",
+    )?;
     if !(0.0..=v.spine_level).contains(&v.bump_level) {
         return Err(ShapeError::new(
             "form.varices.bump_level",
@@ -281,15 +240,11 @@ fn check_varices(spec: &ImplicitSpec) -> Result<(), ShapeError> {
             ),
         ));
     }
-    if !(0.1..=5.0).contains(&v.peak_sigma) {
-        return Err(ShapeError::new(
-            "form.varices.peak_sigma",
-            format!(
-                "the relative size σ of a spine on the highest peak must lie from 0.1 to 5, not {}",
-                v.peak_sigma
-            ),
-        ));
-    }
+    within(
+        "form.varices.peak_sigma",
+        v.peak_sigma,
+        "the relative size σ of a spine on the highest peak",
+    )?;
     Ok(())
 }
 
@@ -398,15 +353,7 @@ fn check_generator(g: &GeneratorSpec, prefix: &str) -> Result<(), ShapeError> {
         part_radius(&key("tori"), t[3], "a torus's major radius")?;
         part_radius(&key("tori"), t[4], "a torus's radius")?;
     }
-    if !(g.exponent >= 1.0 && g.exponent <= 400.0) {
-        return Err(ShapeError::new(
-            key("exponent"),
-            format!(
-                "the blending exponent n must lie from 1 to 400, not {}",
-                g.exponent
-            ),
-        ));
-    }
+    within(&key("exponent"), g.exponent, "the blending exponent n")?;
     if let Some([i, k]) = g
         .pairs
         .iter()

@@ -12,7 +12,7 @@ use crate::blobtree::falloff::ISO;
 use crate::blobtree::polygonize::SPECK;
 use crate::mesh::Bounds;
 use crate::shape::ShapeError;
-use crate::spec::fields::{self, Kind};
+use crate::spec::fields;
 use crate::spec::form::implicit::ImplicitSpec;
 use glam::DVec3;
 
@@ -125,17 +125,17 @@ pub(crate) fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
 
 /// The least λ (to a thousandth, at most the panel's most) at which the grid sees the shell of
 /// `spec`, everything else as it is: what the page uses for a λ too small; none when even the
-/// most λ would not be seen.
+/// most λ would not be seen, or λ is outside the panel's range.
 pub(crate) fn least_lambda_seen(spec: &ImplicitSpec) -> Option<f64> {
     let mut at = spec.clone();
     let mut seen = |lambda: f64| {
         at.spiral.lambda = lambda;
         check(&at).is_ok()
     };
-    let most = match fields::field("implicit", "form.spiral.lambda").map(|f| f.kind) {
-        Some(Kind::Real { max, .. }) => max,
-        _ => unreachable!("the implicit shell's λ is a real field"),
-    };
+    let (least, most) = fields::range("implicit", "form.spiral.lambda");
+    if !(least..most).contains(&spec.spiral.lambda) {
+        return None;
+    }
     let (mut lo, mut hi) = (spec.spiral.lambda, most);
     if !seen(hi) {
         return None;

@@ -29,7 +29,7 @@ pub(crate) fn repair(
         let used = if key == "form.whorls" && i.whorls > most {
             i.whorls = most;
             most.to_string()
-        } else if let Some(least) = (key == "form.spiral.lambda" && i.spiral.lambda > 1.0)
+        } else if let Some(least) = (key == "form.spiral.lambda")
             .then(|| grid_sight::least_lambda_seen(i))
             .flatten()
         {

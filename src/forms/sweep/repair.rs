@@ -3,7 +3,7 @@
 //! violation is repaired from the fallback and reported.
 
 use crate::mesh::{MAX_GROWTH_DECADES, MAX_VERTICES};
-use crate::spec::fields::{self, Kind};
+use crate::spec::fields;
 use crate::spec::form::sweep::{CurveSpec, SweepSpec};
 use crate::spec::problem::Problem;
 
@@ -14,14 +14,6 @@ fn sweep_vertices(s: &SweepSpec) -> u64 {
         + 1;
     let points = u64::from(s.curve.segments) + 1;
     rims * points * if s.wall.thickness > 0.0 { 2 } else { 1 }
-}
-
-/// The fewest whorls the panel offers.
-fn fewest_whorls() -> f64 {
-    match fields::field("sweep", "form.spiral.whorls").map(|f| f.kind) {
-        Some(Kind::Real { min, .. }) => min,
-        _ => unreachable!("the sweep's whorls are a real field"),
-    }
 }
 
 /// How many tenfold the sweep grows from apex to opening, the fastest of its radius, height
@@ -83,7 +75,7 @@ pub(crate) fn repair(s: &mut SweepSpec, f: &SweepSpec, problems: &mut Vec<Proble
             s.curve.lambda_c,
             s.spiral.delta_theta
         );
-        let used = if whorls >= fewest_whorls() {
+        let used = if whorls >= fields::range("sweep", "form.spiral.whorls").0 {
             s.spiral.whorls = whorls;
             whorls.to_string()
         } else {
