@@ -498,7 +498,7 @@ fn merged(problems: Vec<Problem>) -> Vec<Problem> {
             Some(q) => {
                 q.message.push_str(", then ");
                 q.message.push_str(&p.message);
-                q.same_shell &= p.same_shell;
+                q.said = q.said.max(p.said);
             }
             None => out.push(p),
         }

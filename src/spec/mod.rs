@@ -8,6 +8,7 @@ pub mod handedness;
 pub mod material;
 pub mod pattern;
 pub(crate) mod problem;
+pub use problem::{Problem, Said};
 
 use colour::Rgb;
 use form::Form;

@@ -137,14 +137,9 @@ fn show_drawn_in(viewer: &ViewLink) {
 }
 
 fn say(problems: &[Problem]) {
-    if problems.is_empty() {
-        page::hide_message();
-    } else {
-        let list: Vec<String> = problems.iter().map(ToString::to_string).collect();
-        show_message(&format!(
-            "Parts of this link could not be used as given: {}.",
-            list.join("; ")
-        ));
+    match Problem::report(problems) {
+        Some(report) => show_message(&report),
+        None => page::hide_message(),
     }
 }
 

@@ -3,6 +3,7 @@
 use crate::Failure;
 use seashells_core::presets::{self, Preset, presets};
 use seashells_core::share::link;
+use seashells_core::spec::Said;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::{self, Kind};
 use std::collections::BTreeMap;
@@ -73,11 +74,15 @@ impl Options {
                 ));
             }
         };
-        // A whole address is read from its fragment, as the page reads it.
+        // A whole address is read from its fragment, as the page reads it. What was read
+        // another way, or is shown but written to no file (which the writers then refuse), is
+        // said as a note.
         let fragment = fragment.rsplit_once('#').map_or(fragment, |(_, f)| f);
         let decoded = link::decode(fragment);
-        let (notes, problems): (Vec<_>, Vec<_>) =
-            decoded.problems.iter().partition(|p| p.same_shell);
+        let (notes, problems): (Vec<_>, Vec<_>) = decoded
+            .problems
+            .iter()
+            .partition(|p| p.said != Said::Changed);
         if !problems.is_empty() {
             let problems: Vec<String> = problems.iter().map(ToString::to_string).collect();
             return Err(

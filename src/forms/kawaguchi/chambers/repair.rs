@@ -55,7 +55,7 @@ pub(crate) fn repair(c: &mut ChambersSpec, f: &ChambersSpec, problems: &mut Vec<
 /// the page shows it well, but no file is written of it.
 pub(crate) fn overlap_problem(stack: &ChamberStack) -> Option<Problem> {
     whorls_overlap(stack).map(|d| {
-        Problem::new(
+        Problem::shown(
             "form.chamber.ratio",
             format!(
                 "whorls overlap: each chamber passes through the one {d} chambers later, so no file is written of this shell; raise the growth ratio r, or move the position (Tx, Ty) to open the coil"
