@@ -140,6 +140,9 @@ const BAD_LINKS = [
   ['#v=1&preset=kawaguchi-shell&form.chamber.ratio=0', 'outside the range 0.5 to 2'],
   ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true&form.chamber.ratio=1.001', 'cap of 2000000'],
   ['#v=1&preset=kawaguchi-shell&form.chambers=2000', 'at most 267 at this ratio'],
+  ['#v=1&preset=kawaguchi-ammonite&form.chamber.ratio=1', 'Shown as asked, but: form.chamber.ratio: whorls overlap'],
+  ['#v=1&preset=implicit-whorl&form.spiral.lambda=1.01', 'too thin for the grid of 96 voxels'],
+  ['#v=1&preset=kawaguchi-shell&form.chamber.translation.x=0.1&form.chamber.translation.y=0.2&form.chamber.translation.z=0.15', "Read as today's keys: form.chamber.translation"],
 ];
 
 test('bad links each get a specific message and still a working page', async () => {
