@@ -82,6 +82,11 @@ for (const engine of ONLY) {
         assert.equal(state.state, 'gallery');
         assert.equal(await page.evaluate(() => document.querySelectorAll('a.card').length), 45);
         await page.waitFor(() => document.body.dataset.pictures === 'done', null, 600_000, 'every picture drawn');
+        // A picture handed to its <img> is shown once the engine has decoded it (WebKit, loaded,
+        // was once photographed a moment before).
+        await page.waitFor(
+          () => [...document.querySelectorAll('a.card img')].every((img) => img.complete && img.naturalWidth > 0),
+          null, 60_000, 'every card picture decoded');
         for (const id of ['diskoid', 'oliva-porphyria', 'kawaguchi-horn']) {
           const png = await page.shot(`a.card[data-preset="${id}"] img`);
           writeFileSync(`${SHOTS}${engine}-card-${id}.png`, png);
