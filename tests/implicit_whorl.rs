@@ -222,3 +222,19 @@ fn whorls_too_thin_for_the_grid_are_refused_and_the_least_seen_lambda_grows() {
         );
     }
 }
+
+/// A value the repair can only meet with the preset's form is said once, and the preset's
+/// form is used.
+#[test]
+fn a_form_repaired_whole_is_said_once() {
+    let base = presets::preset("implicit-whorl").unwrap().spec.clone();
+    let mut spec = base.clone();
+    implicit(&mut spec).spiral.lambda = 0.5;
+    let problems = repair(&mut spec, &base);
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert!(
+        problems[0].message.ends_with("used the preset's form"),
+        "{problems:?}"
+    );
+    assert_eq!(spec, base);
+}

@@ -1,6 +1,7 @@
 //! Whether the polygonizer's grid can see a shell at all. An implicit shell is drawn by
 //! sampling its field on a grid of `resolution` voxels along the longest side of its box
-//! (`blobtree::polygonize`); a generating surface that holds no sample is not drawn. Eq 3
+//! (`blobtree::polygonize`), which drops pieces of a few samples as specks the grid made
+//! (`polygonize::SPECK`), so a generating surface that holds no more is not drawn. Eq 3
 //! makes the generating surface D = R(λ − 1)/((λ + 1) sin β) wide: as λ nears 1 the whorls
 //! thin to threads, or to beads apart from one another, beside the box they coil in, and the
 //! whole shell, opening included, falls between the samples and grows to nothing.
@@ -24,9 +25,10 @@ const SURELY_SEEN: f64 = 24.0;
 const MOST_SAMPLES: usize = 1 << 18;
 
 /// The voxels of the shell's grid across its opening's generating surface (the largest side
-/// of the box its field reaches over), and the grid's voxel: the grid spans the box of every
-/// instance of the generating surface along the helico-spiral (eq 8), as
-/// [`super::whorl::whorl`] measures it before spines are added (which only widen it).
+/// of the box its field reaches over), and the grid's voxel: the grid spans the box of the
+/// opening's generating surface placed at every instance along the helico-spiral (eq 8), as
+/// [`super::whorl::whorl`] measures the shell before spines are added (which only widen it),
+/// give or take the parts early whorls lack (a wider box, a coarser voxel: the safer side).
 fn voxels_across(spec: &ImplicitSpec, instances: &Instances, last: &Node) -> (f64, f64) {
     let local = last.bounds;
     let mut shell = Bounds::EMPTY;
@@ -124,7 +126,7 @@ pub(crate) fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
 }
 
 /// The least λ (to a thousandth, at most the panel's most) at which the grid sees the shell of
-/// `spec`, everything else as it is: what the page uses for a λ too small; none when even the
+/// `spec` ([`check`] alone; the other checks follow in the repair), everything else as it is: what the page uses for a λ too small; none when even the
 /// most λ would not be seen, or λ is outside the panel's range.
 pub(crate) fn least_lambda_seen(spec: &ImplicitSpec) -> Option<f64> {
     let mut at = spec.clone();

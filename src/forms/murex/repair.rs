@@ -54,6 +54,7 @@ pub(crate) fn repair(
             i.textures = f.textures.clone();
             "the preset's textures".into()
         } else {
+            *i = f.clone();
             "the preset's form".into()
         };
         problems.push(e.repaired(&used));
