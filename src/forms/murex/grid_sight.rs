@@ -8,6 +8,7 @@
 
 use super::generating_surface::generating_surface;
 use super::helix::Instances;
+use super::sections::{Gathered, sections};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
 use crate::blobtree::polygonize::SPECK;
@@ -51,15 +52,16 @@ fn voxels_across(spec: &ImplicitSpec, instances: &Instances, last: &Node) -> (f6
 fn opening_seen(spec: &ImplicitSpec, instances: &Instances, voxel: f64) -> bool {
     let count = instances.count;
     let from = count.saturating_sub(2 * spec.surfaces);
-    let blended = Node::blend(
-        (from..count)
-            .filter_map(|k| {
-                let kf = f64::from(k);
-                generating_surface(&spec.generator, 0.0, instances.whorl(kf))
-                    .map(|s| Node::transform(instances.placement(kf), s))
-            })
-            .collect(),
+    let mut gathered = Gathered { reach: Vec::new() };
+    let last_two = sections(
+        &spec.generator,
+        instances,
+        (from..count).map(|k| (k, 1.0)),
+        spec.surfaces,
+        0,
+        &mut gathered,
     );
+    let blended = Node::blend(last_two.into_iter().map(|(_, s)| s).collect());
     let b = blended.bounds;
     let n = ((b.max - b.min) / voxel).ceil().as_uvec3() + 1;
     let (nx, ny, nz) = (n.x as usize, n.y as usize, n.z as usize);
