@@ -2,8 +2,10 @@
 //! trunk keeps H/D = S, a branch's diameter follows its knot's height, growth stops at the
 //! threshold and nowhere else, the self-adjusting force keeps α within bounds and turns it,
 //! narrower limits give more and shorter branches, every branch is one closed outward tube at
-//! every stage of growth with no face coinciding with another, growth is deterministic, and
-//! bad parameters get messages that name them.
+//! every stage of growth with no face coinciding with another, a steady bend and twist wind a
+//! helix about the upright when the coil stands (the spiral plant's, wide and climbing), growth
+//! is deterministic (the paper's coral without random numbers), and bad parameters get
+//! messages that name them.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -18,7 +20,7 @@ use seashells_core::presets::preset;
 use seashells_core::shape::GrowingShape;
 use seashells_core::share::link::decode;
 use seashells_core::spec::form::Form;
-use seashells_core::spec::form::branching::{BranchingSpec, KnotSpec};
+use seashells_core::spec::form::branching::{BranchingSpec, KnotSpec, Stand};
 use seashells_core::spec::form::chambers::Look;
 
 const PRESETS: [&str; 5] = [
@@ -328,12 +330,18 @@ fn growth_is_deterministic_and_the_seed_moves_only_what_is_random() {
         g.finish();
         g.snapshot()
     };
-    let coral = grown("v=1&preset=kawaguchi-coral");
-    assert_eq!(coral, grown("v=1&preset=kawaguchi-coral"));
+    let jittered = grown("v=1&preset=kawaguchi-coral&form.jitter=25");
+    assert_eq!(jittered, grown("v=1&preset=kawaguchi-coral&form.jitter=25"));
     assert_ne!(
+        jittered,
+        grown("v=1&preset=kawaguchi-coral&form.jitter=25&seed=2"),
+        "jitter follows the seed"
+    );
+    let coral = grown("v=1&preset=kawaguchi-coral");
+    assert_eq!(
         coral,
         grown("v=1&preset=kawaguchi-coral&seed=2"),
-        "jitter follows the seed"
+        "the paper's coral: rules and numbers, no randomness"
     );
     let tendril = grown("v=1&preset=kawaguchi-tendril");
     assert_eq!(
@@ -382,4 +390,118 @@ fn bad_parameters_get_messages_that_name_them() {
     let e = BranchingTree::new(&spec, seed).err().expect("refused");
     assert_eq!(e.key, "form.stop");
     assert!(e.message.contains("the stop size must be above 0"), "{e}");
+}
+
+/// The main stem's coil seen from above: the horizontal turn of each trunk's axis from the one
+/// before (degrees), each trunk axis's angle from the upright (degrees), the heights of the
+/// trunks' bottom centres, and the widest horizontal distance between two of those centres.
+struct Coil {
+    turns: Vec<f64>,
+    leans: Vec<f64>,
+    heights: Vec<f64>,
+    span: f64,
+}
+
+fn coil(tree: &BranchingTree) -> Coil {
+    let up = glam::DVec3::NEG_Z;
+    let stem: Vec<_> = tree.segments.iter().filter(|s| s.depth == 0).collect();
+    let flat = |v: glam::DVec3| glam::DVec2::new(v.x, v.y);
+    let axes: Vec<_> = stem.iter().map(|s| s.base.axis()).collect();
+    let turns = axes
+        .windows(2)
+        .map(|w| flat(w[0]).angle_to(flat(w[1])).to_degrees())
+        .collect();
+    let leans = axes
+        .iter()
+        .map(|a| a.angle_between(up).to_degrees())
+        .collect();
+    let heights = stem.iter().map(|s| s.base.centre.dot(up)).collect();
+    let mut span: f64 = 0.0;
+    for a in &stem {
+        for b in &stem {
+            span = span.max(flat(a.base.centre - b.base.centre).length());
+        }
+    }
+    Coil {
+        turns,
+        leans,
+        heights,
+        span,
+    }
+}
+
+/// Checks that the main stem winds a helix about the upright: every trunk leans from the
+/// upright by the same angle, and turns about it by the same angle from the trunk before, the
+/// same way. Returns the turn per knot (degrees) and the number of turns in all.
+fn assert_upright_helix(c: &Coil, what: &str) -> (f64, f64) {
+    let (lean, turn) = (c.leans[0], c.turns[0]);
+    assert!(
+        lean > 1.0 && turn.abs() > 1.0,
+        "{what}: lean {lean}°, turn {turn}°"
+    );
+    for (k, l) in c.leans.iter().enumerate() {
+        assert!(
+            (l - lean).abs() < 1e-6,
+            "{what}: trunk {k} leans {l}°, the first {lean}°"
+        );
+    }
+    for (k, t) in c.turns.iter().enumerate() {
+        assert!(
+            (t - turn).abs() < 1e-6,
+            "{what}: knot {k} turns {t}°, the first {turn}°"
+        );
+    }
+    (turn, turn.abs() * c.turns.len() as f64 / 360.0)
+}
+
+#[test]
+fn the_spiral_plants_stem_is_a_wide_helix_about_an_upright_axis() {
+    let (spec, tree) = tree("kawaguchi-spiral-plant");
+    let c = coil(&tree);
+    let (_, turns) = assert_upright_helix(&c, "the spiral plant");
+    assert!(turns > 2.0, "the stem winds {turns} turns");
+    assert!(
+        c.heights.windows(2).all(|h| h[1] > h[0]),
+        "the stem climbs: {:?}",
+        c.heights
+    );
+    assert!(
+        c.span > 4.0 * spec.trunk.diameter,
+        "the coil is {} across from above, the first trunk {}: a helix, not a wavy stem",
+        c.span,
+        spec.trunk.diameter
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    /// Any steady bend and twist winds the stem about an upright axis when the coil stands.
+    #[test]
+    fn a_standing_coil_turns_about_the_upright_for_any_bend_and_twist(
+        angle in prop_oneof![-60.0f64..-2.0, 2.0f64..60.0],
+        twist in prop_oneof![-170.0f64..-2.0, 2.0f64..170.0],
+    ) {
+        let d = decode(&format!(
+            "v=1&preset=kawaguchi-spiral-plant&form.knot.angle={angle}&form.knot.twist={twist}&form.depth=0&form.knots=30"
+        ));
+        prop_assert!(d.problems.is_empty(), "{:?}", d.problems);
+        let Form::Branching(b) = &d.spec.form else { unreachable!("a branching preset") };
+        let tree = BranchingTree::new(b, d.spec.seed).expect("a valid form");
+        assert_upright_helix(&coil(&tree), &format!("α {angle}°, twist {twist}°"));
+    }
+}
+
+#[test]
+fn a_standing_trunk_stands_upright_whatever_its_knots() {
+    for id in PRESETS {
+        let (spec, tree) = tree(id);
+        let lean = tree.segments[0]
+            .base
+            .axis()
+            .angle_between(glam::DVec3::NEG_Z);
+        match spec.stand {
+            Stand::Trunk => assert!(lean < 1e-12, "{id}: the first trunk leans {lean}"),
+            Stand::Coil => assert!(lean > 0.1, "{id}: the first trunk leans {lean}"),
+        }
+    }
 }

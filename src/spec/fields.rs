@@ -271,6 +271,7 @@ pub const BRANCHING: &[Field] = &[
     f("form.stop", Shape, "", "stop size: fraction of the first trunk's height (rule 8)", log(0.001, 1.0)),
     f("form.jitter", Shape, "", "random turn of rolls and branch angles (degrees)", real(0.0, 90.0)),
     f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
+    f("form.stand", Shape, "", "upright: the first trunk or the coil's axis", Kind::Choice(&["trunk", "coil"])),
     f("form.trunk.diameter", Trunk, "D₀", "diameter of the first trunk", log(0.01, 100.0)),
     f("form.trunk.slenderness", Trunk, "S", "H/D of every trunk (rule 1)", log(0.05, 20.0)),
     f("form.trunk.taper", Trunk, "", "diameter ratio from trunk to trunk", log(0.5, 1.0)),

@@ -37,10 +37,10 @@ PRINTED = ONE_BODY + ["kawaguchi-painted", "kawaguchi-tendril"]
 # The bodies of each branching preset: its stem and its branches, each one closed tube, as its
 # tree grows them (tests/branching.rs checks that the mesh has one body per branch of the tree).
 BRANCHES = {
-    "kawaguchi-spiral-plant": 61,
+    "kawaguchi-spiral-plant": 64,
     "kawaguchi-tendril": 17,
     "kawaguchi-leaves": 171,
-    "kawaguchi-coral": 467,
+    "kawaguchi-coral": 1651,
     "kawaguchi-tentacles": 9,
 }
 

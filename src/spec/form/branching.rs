@@ -26,6 +26,26 @@ pub struct BranchingSpec {
     /// Flat facets, a crease at every knot, as Kawaguchi drew his polyhedral trunks; or round
     /// tubes bending smoothly through their knots.
     pub look: Look,
+    /// What stands upright: the first trunk, or the axis of the coil its knots wind.
+    #[serde(default)]
+    pub stand: Stand,
+}
+
+/// What of a branching form stands upright (along the display's up).
+///
+/// Knots that bend by α and turn their bending side by the twist, the same at every knot, are
+/// a screw motion scaled by the taper: they wind a branch into a conical helix about a fixed
+/// axis, which leans from the first trunk by about atan(α/twist). Kawaguchi's views show his
+/// spiral forms on that axis; a first trunk set upright lays a wide coil on its side.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stand {
+    /// The first trunk upright: a bush, a coral, a tuft of tentacles.
+    #[default]
+    Trunk,
+    /// The coil's axis upright, the first trunk leaning along the helix as a climbing stem
+    /// leans along its support: a spiral plant.
+    Coil,
 }
 
 /// Rule 1: trunks of diameter D and height H with H/D = S.

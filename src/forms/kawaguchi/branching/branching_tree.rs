@@ -22,7 +22,7 @@
 use super::tendril::Tendril;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
-use crate::spec::form::branching::BranchingSpec;
+use crate::spec::form::branching::{BranchingSpec, KnotSpec, Stand};
 use glam::{DMat3, DQuat, DVec3};
 use std::collections::VecDeque;
 use std::f64::consts::TAU;
@@ -129,7 +129,7 @@ impl BranchingTree {
         let threshold = spec.stop * s * spec.trunk.diameter;
         let root = Base {
             centre: DVec3::ZERO,
-            axes: DMat3::from_cols(DVec3::X, DVec3::NEG_Y, DVec3::NEG_Z),
+            axes: first_axes(spec),
             diameter: spec.trunk.diameter,
         };
         let mut queue = VecDeque::from([Tip {
@@ -259,6 +259,39 @@ impl BranchingTree {
     pub fn generations(&self) -> usize {
         self.segments.last().map_or(0, |s| s.generation + 1)
     }
+}
+
+/// The first trunk's base axes: e₃ upright (−z), or leaning so that the axis of the main stem's
+/// coil stands upright ([`Stand`]).
+fn first_axes(spec: &BranchingSpec) -> DMat3 {
+    let upright = DMat3::from_cols(DVec3::X, DVec3::NEG_Y, DVec3::NEG_Z);
+    match spec.stand {
+        Stand::Trunk => upright,
+        Stand::Coil => {
+            let lean = DQuat::from_rotation_arc(upright * coil_axis(&spec.knot), DVec3::NEG_Z);
+            DMat3::from_quat(lean) * upright
+        }
+    }
+}
+
+/// The axis of the coil that knots of angle α and twist τ wind, in the first trunk's base axes.
+///
+/// In the frame of a knot whose x axis points to its bending side (its roll), the knot turns the
+/// trunk by α about y, and the next knot's bending side lies τ further about the new axis: the
+/// frame of the next knot is this one's turned by C = R_y(α)·R_z(τ). The same C at every knot
+/// makes each knot's turn, seen from the shell, a rotation about one fixed direction: the axis
+/// of C, taken from the first knot's frame (the first roll is τ) back to the base's axes. It
+/// is the side of the axis the trunks climb along; with neither bend nor twist, the trunk's
+/// own axis.
+fn coil_axis(knot: &KnotSpec) -> DVec3 {
+    let step = DQuat::from_rotation_y(knot.angle.to_radians())
+        * DQuat::from_rotation_z(knot.twist.to_radians());
+    let (axis, angle) = step.to_axis_angle();
+    if angle.abs() < 1e-9 || !axis.is_finite() {
+        return DVec3::Z;
+    }
+    let axis = DQuat::from_rotation_z(knot.twist.to_radians()) * axis;
+    if axis.z < 0.0 { -axis } else { axis }
 }
 
 /// How far from its knot's axis a branch of diameter `d` starts, in a knot of mean radius
