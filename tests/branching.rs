@@ -12,7 +12,9 @@ mod common;
 
 use proptest::prelude::*;
 use seashells_core::forms::kawaguchi::branching::branching_mesh::BranchingMesh;
-use seashells_core::forms::kawaguchi::branching::branching_tree::{BranchingTree, MAX_SEGMENTS};
+use seashells_core::forms::kawaguchi::branching::branching_tree::{
+    BranchingTree, MAX_SEGMENTS, Segment,
+};
 use seashells_core::forms::kawaguchi::branching::tendril::Tendril;
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
@@ -23,12 +25,16 @@ use seashells_core::spec::form::Form;
 use seashells_core::spec::form::branching::{BranchingSpec, KnotSpec, Stand};
 use seashells_core::spec::form::chambers::Look;
 
-const PRESETS: [&str; 5] = [
+const PRESETS: [&str; 9] = [
     "kawaguchi-spiral-plant",
     "kawaguchi-tendril",
     "kawaguchi-leaves",
     "kawaguchi-coral",
     "kawaguchi-tentacles",
+    "kawaguchi-knot-shell",
+    "kawaguchi-knot-horn",
+    "kawaguchi-knot-fang",
+    "kawaguchi-knot-nail",
 ];
 
 fn form(id: &str) -> (BranchingSpec, u64) {
@@ -49,7 +55,7 @@ fn tree(id: &str) -> (BranchingSpec, BranchingTree) {
 fn every_trunk_keeps_h_over_d_equal_to_s() {
     for id in PRESETS {
         let (spec, tree) = tree(id);
-        assert!(tree.segments.len() > 20, "{id}: {}", tree.segments.len());
+        assert!(tree.segments.len() > 10, "{id}: {}", tree.segments.len());
         for s in &tree.segments {
             let ratio = s.height / s.base.diameter;
             assert!(
@@ -87,7 +93,12 @@ fn a_branchs_diameter_follows_the_height_of_its_knot() {
                 s.base.diameter
             );
         }
-        assert!(branches > 0, "{id} has branches");
+        assert_eq!(
+            branches > 0,
+            spec.depth > 0,
+            "{id} has {branches} branches at depth {}",
+            spec.depth
+        );
     }
 }
 
@@ -470,6 +481,44 @@ fn the_spiral_plants_stem_is_a_wide_helix_about_an_upright_axis() {
         "the coil is {} across from above, the first trunk {}: a helix, not a wavy stem",
         c.span,
         spec.trunk.diameter
+    );
+}
+
+/// The nearest two trunks of a branch come, each trunk's axis sampled at five points, among
+/// trunks at least `apart` knots apart, as a fraction of their mean diameter: below 1 their
+/// tubes cross.
+fn nearest_apart(tree: &BranchingTree, apart: usize) -> f64 {
+    let axis = |s: &Segment| -> Vec<glam::DVec3> {
+        (0..5)
+            .map(|k| s.base.centre + s.base.axis() * s.height * k as f64 / 4.0)
+            .collect()
+    };
+    let s = &tree.segments;
+    let mut nearest = f64::INFINITY;
+    for i in 0..s.len() {
+        for j in i + apart..s.len() {
+            let mean = (s[i].base.diameter + s[j].base.diameter) / 2.0;
+            for p in axis(&s[i]) {
+                for q in axis(&s[j]) {
+                    nearest = nearest.min((p - q).length() / mean);
+                }
+            }
+        }
+    }
+    nearest
+}
+
+#[test]
+fn the_knotted_shell_is_a_helix_whose_whorls_rest_clear_of_each_other() {
+    let (_, tree) = tree("kawaguchi-knot-shell");
+    let c = coil(&tree);
+    let (turn, turns) = assert_upright_helix(&c, "the knotted shell");
+    assert!(turns > 6.0, "the shell winds {turns} whorls");
+    let half_a_whorl = (180.0 / turn.abs()).ceil() as usize;
+    let nearest = nearest_apart(&tree, half_a_whorl);
+    assert!(
+        (1.0..1.5).contains(&nearest),
+        "whorls come within {nearest} mean diameters of each other: they should nearly touch, not cross"
     );
 }
 

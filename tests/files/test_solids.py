@@ -42,6 +42,10 @@ BRANCHES = {
     "kawaguchi-leaves": 171,
     "kawaguchi-coral": 1651,
     "kawaguchi-tentacles": 9,
+    "kawaguchi-knot-shell": 1,
+    "kawaguchi-knot-horn": 1,
+    "kawaguchi-knot-fang": 1,
+    "kawaguchi-knot-nail": 1,
 }
 
 

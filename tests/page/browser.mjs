@@ -1,6 +1,7 @@
 // Headless Chromium (Debian's, driven by playwright-core) with the flags that give each
 // graphics backend on these machines (see ../shared/TOOLCHAIN.md), and helpers that read the
 // page's own signals and its pixels.
+import { readdirSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
@@ -11,6 +12,9 @@ const COMMON = [
 ];
 
 /** Flags per backend: WebGL2 through SwiftShader's GL, WebGPU through SwiftShader's Vulkan. */
+/** How many shells the gallery lists: one for each preset in species/. */
+export const PRESETS = readdirSync(new URL('../../species/', import.meta.url)).filter((f) => f.endsWith('.json')).length;
+
 export const BACKENDS = {
   WebGL2: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
   WebGPU: [

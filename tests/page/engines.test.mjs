@@ -14,6 +14,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { ENGINES, launchEngine, measure } from './engines.mjs';
+import { PRESETS } from './browser.mjs';
 import { nativePattern } from './native.mjs';
 import { serve } from './serve.mjs';
 
@@ -80,7 +81,7 @@ for (const engine of ONLY) {
       try {
         const state = await page.waitForState(['gallery', 'error']);
         assert.equal(state.state, 'gallery');
-        assert.equal(await page.evaluate(() => document.querySelectorAll('a.card').length), 45);
+        assert.equal(await page.evaluate(() => document.querySelectorAll('a.card').length), PRESETS);
         await page.waitFor(() => document.body.dataset.pictures === 'done', null, 600_000, 'every picture drawn');
         // A picture handed to its <img> is shown once the engine has decoded it (WebKit, loaded,
         // was once photographed a moment before).
