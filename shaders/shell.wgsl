@@ -8,8 +8,8 @@
 //
 // Or the shell is drawn in lines on paper, as Kawaguchi drew GROWTH's shells on a vector
 // display: lines on the iso-lines of the pattern coordinates that the form puts on its facets'
-// edges (or on a sparse set of rims and lines of growth), and its outline; the depth test
-// removes the hidden ones.
+// edges (or on a sparse set of rims and lines of growth), every one of them about a pixel wide,
+// and its outline; the depth test removes the hidden ones.
 //
 // A pane is drawn in perspective (eye.w = 1: the eye is a point) or orthographically (eye.w =
 // 0: eye.xyz is the direction towards the viewer, the same for every point).
@@ -155,13 +155,17 @@ fn environment(r: vec3<f32>) -> vec3<f32> {
 }
 
 // How much of a pixel the line drawing's lines cover: `cells` is the position in units of the
-// spacing between lines (lines on whole numbers), `width` its change across one pixel. Lines are
-// about a pixel and a half wide, and fade where they crowd closer than a few pixels.
+// spacing between lines (lines on whole numbers), `width` its change across one pixel. Every
+// line is drawn, about a pixel wide at any zoom, as a vector display's beam draws every edge:
+// where lines crowd closer than a couple of pixels they are no longer told apart, and the pixel
+// takes the share of it their ink covers (a pixel's width of line per spacing), so crowded
+// lines merge into dark ink instead of fading away or flickering in moiré.
 fn ink(cells: vec2<f32>, width: vec2<f32>) -> f32 {
     let w = max(width, vec2<f32>(1e-6));
     let pixels = abs(fract(cells + 0.5) - 0.5) / w;
-    let line = (vec2<f32>(1.0) - smoothstep(vec2<f32>(0.4), vec2<f32>(1.2), pixels))
-        * (vec2<f32>(1.0) - smoothstep(vec2<f32>(0.2), vec2<f32>(0.45), w));
+    let sharp = vec2<f32>(1.0) - smoothstep(vec2<f32>(0.3), vec2<f32>(0.9), pixels);
+    let crowded = min(w * 1.2, vec2<f32>(1.0));
+    let line = mix(sharp, crowded, smoothstep(vec2<f32>(0.3), vec2<f32>(0.6), w));
     return max(line.x, line.y);
 }
 

@@ -121,8 +121,29 @@ async function statistics(bytes) {
       }
     }
   }
+  // A column of the front pane near the middle of the silhouette's middle row, top to bottom
+  // where the shell is, the one of 21 that is palest (off the lines drawn along the growth):
+  // each pixel's darkness, 0 for the page's background (the paper is as light), 1 for ink.
+  const drawn = quarters[0].flatMap((row, y) => (row === null ? [] : [[y, row]]));
+  const paper = (bg[0] + bg[1] + bg[2]) / 3;
+  let column = [];
+  if (drawn.length > 0) {
+    const [, [first, last]] = drawn[Math.floor(drawn.length / 2)];
+    const middle = Math.round((first + last) / 2);
+    const ys = drawn.map(([y]) => y);
+    let palest = -1;
+    for (let x = middle - 10; x <= middle + 10; x++) {
+      const light = ys.map((y) => (data[at(x, y)] + data[at(x, y) + 1] + data[at(x, y) + 2]) / 3);
+      const median = [...light].sort((a, b) => a - b)[Math.floor(light.length / 2)];
+      if (median > palest) {
+        palest = median;
+        column = light.map((l) => Math.min(Math.max((paper - l) / (paper - 8), 0), 1));
+      }
+    }
+  }
   return {
     quarters,
+    column,
     box,
     shell: shell / (width * height),
     colours: [...shades.values()].filter((n) => n > 0.01 * shell).length,
@@ -205,6 +226,33 @@ for (const backend of ['WebGL2', 'WebGPU']) {
     }
   });
 }
+
+test('a line drawing draws every chamber base, spaced apart or crowded together', async () => {
+  const { browser, base, close } = await session('WebGL2');
+  try {
+    // An upright cylinder of chambers three units tall, seen from the front in orthographic
+    // projection: its chamber bases are level lines across it. Spaced a dozen pixels apart,
+    // each is a line of its own; crowded two pixels apart, they are no longer told apart, and
+    // the cylinder takes the share of ink they cover, as on a vector display (they once faded
+    // away, and a crowded tusk was drawn as its outline alone).
+    const cylinder = (n) => TUSK.replace('form.chambers=10', `form.chambers=${n}`)
+      .replace('form.chamber.width=0.3', `form.chamber.width=${3 / n}`)
+      .replace('growth.rows=11', `growth.rows=${n + 1}`) + '&view=four&material.drawing=lines';
+    // A line whose middle falls between two rows of pixels greys both, each less than half.
+    const runs = (column) => column.filter((d, i) => d > 0.15 && !(column[i - 1] > 0.15)).length;
+    const spaced = await grow(browser, base, cylinder(24), `${SHOTS}bases-spaced.png`);
+    await spaced.page.close();
+    const inner = (column) => column.slice(Math.floor(column.length * 0.1), Math.ceil(column.length * 0.9));
+    assert.ok(runs(spaced.column) >= 24, `${runs(spaced.column)} lines across 24 chambers: ${spaced.column.map((d, i) => (d > 0.05 ? `${i}:${d.toFixed(2)}` : "")).filter(Boolean)}`);
+    const crowded = await grow(browser, base, cylinder(160), `${SHOTS}bases-crowded.png`);
+    await crowded.page.close();
+    const mid = inner(crowded.column);
+    const mean = mid.reduce((a, b) => a + b, 0) / mid.length;
+    assert.ok(mean > 0.3, `160 chambers ${crowded.column.length} px tall: mean darkness ${mean.toFixed(2)} inside`);
+  } finally {
+    await close();
+  }
+});
 
 test('a link asking for an unknown view says so and shows one view', async () => {
   const { browser, base, close } = await session('WebGL2');
