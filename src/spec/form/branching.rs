@@ -35,8 +35,8 @@ pub struct BranchingSpec {
 ///
 /// Knots that bend by α and turn their bending side by the twist, the same at every knot, are
 /// a screw motion scaled by the taper: they wind a branch into a conical helix about a fixed
-/// axis, which leans from the first trunk by about atan(α/twist). Kawaguchi's views show his
-/// spiral forms on that axis; a first trunk set upright lays a wide coil on its side.
+/// axis, which leans from the first trunk by about atan(α/twist). A spiral is seen standing on
+/// that axis, as a shell is; a first trunk set upright lays a wide coil on its side.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Stand {
@@ -44,7 +44,7 @@ pub enum Stand {
     #[default]
     Trunk,
     /// The coil's axis upright, the first trunk leaning along the helix as a climbing stem
-    /// leans along its support: a spiral plant.
+    /// leans along its support: a spiral plant. Without twist the coil is flat, and lies flat.
     Coil,
 }
 

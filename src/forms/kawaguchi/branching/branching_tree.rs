@@ -280,9 +280,10 @@ fn first_axes(spec: &BranchingSpec) -> DMat3 {
 /// trunk by α about y, and the next knot's bending side lies τ further about the new axis: the
 /// frame of the next knot is this one's turned by C = R_y(α)·R_z(τ). The same C at every knot
 /// makes each knot's turn, seen from the shell, a rotation about one fixed direction: the axis
-/// of C, taken from the first knot's frame (the first roll is τ) back to the base's axes. It
-/// is the side of the axis the trunks climb along; with neither bend nor twist, the trunk's
-/// own axis.
+/// of C, taken from the first knot's frame (the first roll is τ) back to the base's axes, and
+/// pointed the way the trunks climb (along the first trunk, not against it). With neither bend
+/// nor twist, the trunk's own axis. Where α changes from knot to knot (θ ≠ 0), the coil of the
+/// first knot's α.
 fn coil_axis(knot: &KnotSpec) -> DVec3 {
     let step = DQuat::from_rotation_y(knot.angle.to_radians())
         * DQuat::from_rotation_z(knot.twist.to_radians());
