@@ -12,9 +12,7 @@ mod common;
 
 use proptest::prelude::*;
 use seashells_core::forms::kawaguchi::branching::branching_mesh::BranchingMesh;
-use seashells_core::forms::kawaguchi::branching::branching_tree::{
-    BranchingTree, MAX_SEGMENTS, Segment,
-};
+use seashells_core::forms::kawaguchi::branching::branching_tree::{BranchingTree, MAX_SEGMENTS};
 use seashells_core::forms::kawaguchi::branching::tendril::Tendril;
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
@@ -443,8 +441,10 @@ fn coil(tree: &BranchingTree) -> Coil {
 
 /// Checks that the main stem winds a helix about the upright: every trunk leans from the
 /// upright by the same angle, and turns about it by the same angle from the trunk before, the
-/// same way. Returns the turn per knot (degrees) and the number of turns in all.
-fn assert_upright_helix(c: &Coil, what: &str) -> (f64, f64) {
+/// same way. Returns the stem's coil, the turn per knot (degrees) and the number of turns in
+/// all.
+fn assert_upright_helix(tree: &BranchingTree, what: &str) -> (Coil, f64, f64) {
+    let c = coil(tree);
     let (lean, turn) = (c.leans[0], c.turns[0]);
     assert!(
         lean > 1.0 && turn.abs() > 1.0,
@@ -462,14 +462,14 @@ fn assert_upright_helix(c: &Coil, what: &str) -> (f64, f64) {
             "{what}: knot {k} turns {t}°, the first {turn}°"
         );
     }
-    (turn, turn.abs() * c.turns.len() as f64 / 360.0)
+    let turns = turn.abs() * c.turns.len() as f64 / 360.0;
+    (c, turn, turns)
 }
 
 #[test]
 fn the_spiral_plants_stem_is_a_wide_helix_about_an_upright_axis() {
     let (spec, tree) = tree("kawaguchi-spiral-plant");
-    let c = coil(&tree);
-    let (_, turns) = assert_upright_helix(&c, "the spiral plant");
+    let (c, _, turns) = assert_upright_helix(&tree, "the spiral plant");
     assert!(turns > 2.0, "the stem winds {turns} turns");
     assert!(
         c.heights.windows(2).all(|h| h[1] > h[0]),
@@ -488,18 +488,21 @@ fn the_spiral_plants_stem_is_a_wide_helix_about_an_upright_axis() {
 /// trunks at least `apart` knots apart, as a fraction of their mean diameter: below 1 their
 /// tubes cross.
 fn nearest_apart(tree: &BranchingTree, apart: usize) -> f64 {
-    let axis = |s: &Segment| -> Vec<glam::DVec3> {
-        (0..5)
-            .map(|k| s.base.centre + s.base.axis() * s.height * k as f64 / 4.0)
-            .collect()
-    };
     let s = &tree.segments;
+    let axes: Vec<Vec<glam::DVec3>> = s
+        .iter()
+        .map(|s| {
+            (0..5)
+                .map(|k| s.base.centre + s.base.axis() * s.height * k as f64 / 4.0)
+                .collect()
+        })
+        .collect();
     let mut nearest = f64::INFINITY;
     for i in 0..s.len() {
         for j in i + apart..s.len() {
             let mean = (s[i].base.diameter + s[j].base.diameter) / 2.0;
-            for p in axis(&s[i]) {
-                for q in axis(&s[j]) {
+            for p in &axes[i] {
+                for q in &axes[j] {
                     nearest = nearest.min((p - q).length() / mean);
                 }
             }
@@ -511,8 +514,7 @@ fn nearest_apart(tree: &BranchingTree, apart: usize) -> f64 {
 #[test]
 fn the_knotted_shell_is_a_helix_whose_whorls_rest_clear_of_each_other() {
     let (_, tree) = tree("kawaguchi-knot-shell");
-    let c = coil(&tree);
-    let (turn, turns) = assert_upright_helix(&c, "the knotted shell");
+    let (_, turn, turns) = assert_upright_helix(&tree, "the knotted shell");
     assert!(turns > 6.0, "the shell winds {turns} whorls");
     let half_a_whorl = (180.0 / turn.abs()).ceil() as usize;
     let nearest = nearest_apart(&tree, half_a_whorl);
@@ -536,7 +538,7 @@ proptest! {
         prop_assert!(d.problems.is_empty(), "{:?}", d.problems);
         let Form::Branching(b) = &d.spec.form else { unreachable!("a branching preset") };
         let tree = BranchingTree::new(b, d.spec.seed).expect("a valid form");
-        assert_upright_helix(&coil(&tree), &format!("α {angle}°, twist {twist}°"));
+        assert_upright_helix(&tree, &format!("α {angle}°, twist {twist}°"));
     }
 }
 

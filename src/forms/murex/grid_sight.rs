@@ -128,8 +128,9 @@ pub(crate) fn check(spec: &ImplicitSpec) -> Result<(), ShapeError> {
 }
 
 /// The least λ (to a thousandth, at most the panel's most) at which the grid sees the shell of
-/// `spec` ([`check`] alone; the other checks follow in the repair), everything else as it is: what the page uses for a λ too small; none when even the
-/// most λ would not be seen, or λ is outside the panel's range.
+/// `spec` ([`check`] alone; the other checks follow in the repair), everything else as it is:
+/// what the page uses for a λ too small; none when even the most λ would not be seen, or λ is
+/// outside the panel's range.
 pub(crate) fn least_lambda_seen(spec: &ImplicitSpec) -> Option<f64> {
     let mut at = spec.clone();
     let mut seen = |lambda: f64| {
