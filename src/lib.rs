@@ -10,6 +10,7 @@ pub mod forms;
 pub mod generator;
 pub mod mesh;
 pub mod pattern;
+mod pod_bytes;
 pub mod presets;
 pub mod shape;
 pub mod share;

@@ -4,6 +4,7 @@
 use crate::fnv::Fnv;
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
+use serde::{Deserialize, Serialize};
 
 /// Which part of the shell a vertex belongs to; the shader colours each differently.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -61,9 +62,11 @@ impl Vertex {
 }
 
 /// An indexed triangle list.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Mesh {
+    #[serde(with = "crate::pod_bytes")]
     pub vertices: Vec<Vertex>,
+    #[serde(with = "crate::pod_bytes")]
     pub indices: Vec<u32>,
 }
 
@@ -166,14 +169,14 @@ pub const MAX_GROWTH_DECADES: f64 = 4.0;
 pub const MAX_VERTICES: u64 = 2_000_000;
 
 /// Sizes a mesh reaches when fully grown, so buffers can be allocated once.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Capacity {
     pub vertices: usize,
     pub indices: usize,
 }
 
 /// An axis-aligned bounding box.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Bounds {
     pub min: DVec3,
     pub max: DVec3,

@@ -6,6 +6,7 @@
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::spec::problem::Problem;
 use glam::DVec3;
+use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::ops::Range;
 
@@ -43,7 +44,7 @@ impl std::error::Error for ShapeError {}
 /// edge in [0, 1], y the growth time in rows): lines along the growth direction at x = k /
 /// `across`, and rims every `rows` rows. A faceted form puts them on its facets' edges; a smooth
 /// one on a sparse set of its rims and of its lines of growth.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LineGrid {
     pub across: f64,
     pub rows: f64,
@@ -73,7 +74,7 @@ impl LineGrid {
 /// threads, by [`crate::forms::PieceMaker`], from the same spec) and joined in a fixed order:
 /// each piece's mesh is appended to the permanent mesh in the order of the pieces' numbers, so
 /// how the pieces were shared out cannot change a bit of the result.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Pieces {
     /// The growth step the pieces are made at.
     pub step: u32,

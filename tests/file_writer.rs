@@ -126,10 +126,10 @@ fn a_mesh_written_in_steps_is_the_exporters_file_of_the_same_shell() {
     };
     assert!(!writer.busy());
     assert_eq!(file.name, "stripes.glb");
-    let Body::Bytes { mime, bytes } = file.body else {
+    assert_eq!(file.what.mime(), MeshFormat::Glb.mime());
+    let Body::Bytes(bytes) = file.body else {
         panic!("a mesh is bytes");
     };
-    assert_eq!(mime, MeshFormat::Glb.mime());
     let shell = Shell::of(replica.for_export().unwrap(), spec, preset, size).unwrap();
     let mut export = Export::new(MeshFormat::Glb, shell).unwrap();
     let expected = export.work(|| true).unwrap().expect("written at once");
@@ -173,7 +173,7 @@ fn an_implicit_shell_still_growing_is_finished_before_its_mesh_is_written() {
     let FileStage::Written(file) = finish_file(&mut writer, || source(preset, spec, whole)) else {
         panic!("not written");
     };
-    let Body::Bytes { bytes, .. } = file.body else {
+    let Body::Bytes(bytes) = file.body else {
         panic!("a mesh is bytes");
     };
     let triangles = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;

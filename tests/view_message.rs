@@ -1,7 +1,7 @@
 //! The messages between the page and a viewer drawing in a worker (`work::view_message`): every
 //! command and every kind of news reads back as it was written, a spec bit for bit; bytes that
 //! are cut short, have a stray byte after them, name an unknown preset or carry a size out of
-//! range are refused with the field that failed, never read as something else.
+//! range are refused, never read as something else.
 #![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::export::estimate::Counts;
@@ -145,10 +145,7 @@ fn news() -> Vec<ViewerNews> {
         ViewerNews::Frame {
             device: Device::Ready,
             report: Some(Box::new(FrameReport {
-                file: Some(written(Body::Bytes {
-                    mime: MeshFormat::Glb.mime(),
-                    bytes: (0..=255).collect(),
-                })),
+                file: Some(written(Body::Bytes((0..=255).collect()))),
                 drawn: true,
                 status: status.clone(),
                 notice: Some("these values give no pattern".into()),
@@ -261,7 +258,7 @@ fn cut_or_padded_bytes_are_refused_never_misread() {
         let mut padded = bytes.clone();
         padded.push(0);
         let error = decode_command(&padded).expect_err("a stray byte is refused");
-        assert_eq!(error.at, bytes.len());
+        assert_eq!(error.why, "1 bytes after its end");
     }
     for news in news() {
         let bytes = encode_news(&news);
@@ -274,39 +271,47 @@ fn cut_or_padded_bytes_are_refused_never_misread() {
     }
 }
 
+/// `bytes` with the first run of `old` replaced by `new`.
+fn replaced(bytes: &[u8], old: &[u8], new: &[u8]) -> Vec<u8> {
+    let at = bytes
+        .windows(old.len())
+        .position(|w| w == old)
+        .expect("the bytes hold it");
+    [&bytes[..at], new, &bytes[at + old.len()..]].concat()
+}
+
 #[test]
-fn unknown_names_and_sizes_out_of_range_are_refused_by_field() {
+fn unknown_presets_sides_commands_and_sizes_out_of_range_are_refused() {
     let preset = presets::preset("turbinate").expect("a preset");
     let load = encode_command(&ViewCommand::Load {
         preset,
         spec: Box::new(preset.spec.clone()),
         finish: false,
     });
-    // The preset's id follows the tag and its length: change a letter of it.
-    let mut unknown = load.clone();
-    unknown[5] = b'X';
-    assert_eq!(decode_command(&unknown).expect_err("unknown").key, "preset");
+    let refused = |bytes: &[u8]| decode_command(bytes).expect_err("refused").key;
+    assert_eq!(
+        refused(&replaced(&load, b"turbinate", b"turbinaTe")),
+        "command"
+    );
     let file = encode_command(&ViewCommand::WriteFile {
         what: Download::Mesh(MeshFormat::Stl),
         size: PrintSize::default(),
     });
-    // The size's millimetres, then the side it is of.
-    let mut huge = file[..file.len() - 9].to_vec();
-    huge.extend_from_slice(&1e6f64.to_le_bytes());
-    huge.push(0);
-    assert_eq!(decode_command(&huge).expect_err("too large").key, "size");
-    let mut sideways = file.clone();
-    *sideways.last_mut().unwrap() = 4;
+    let mm = PrintSize::DEFAULT_MM.to_le_bytes();
     assert_eq!(
-        decode_command(&sideways).expect_err("no such side").key,
-        "side"
-    );
-    let mut unknown_tag = file.clone();
-    unknown_tag[0] = 200;
-    assert_eq!(
-        decode_command(&unknown_tag)
-            .expect_err("no such command")
-            .key,
+        refused(&replaced(&file, &mm, &1e6f64.to_le_bytes())),
         "command"
     );
+    assert_eq!(
+        refused(&replaced(&file, &mm, &f64::NAN.to_le_bytes())),
+        "command"
+    );
+    // The side is the last byte, the number of a variant of four.
+    let mut sideways = file.clone();
+    *sideways.last_mut().unwrap() = 4;
+    assert_eq!(refused(&sideways), "command");
+    // The command is the first byte, the number of a variant.
+    let mut unknown = file.clone();
+    unknown[0] = 100;
+    assert_eq!(refused(&unknown), "command");
 }

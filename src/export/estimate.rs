@@ -5,9 +5,10 @@
 //! Once a file is made, the page shows its exact size.
 
 use super::{Download, MeshFormat};
+use serde::{Deserialize, Serialize};
 
 /// What the estimates are made from.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Counts {
     /// Vertices and triangles of the shell as it stands, edge included.
     pub vertices: usize,

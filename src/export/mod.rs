@@ -3,6 +3,8 @@
 //! CSV, chosen by the file's extension; recorded growth as WebM. Every mesh and pattern file is
 //! written in resumable steps ([`job::Export`]), so the page spreads a large export over frames.
 
+use serde::{Deserialize, Serialize};
+
 mod bodies;
 pub mod csv;
 pub mod error;
@@ -24,7 +26,7 @@ pub(crate) mod weld;
 mod zip;
 
 /// A mesh file format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum MeshFormat {
     Glb,
     Ply,
@@ -81,7 +83,7 @@ impl MeshFormat {
 }
 
 /// A file the page offers to download for the shell shown.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Download {
     /// The mesh grown so far.
     Mesh(MeshFormat),
@@ -109,6 +111,14 @@ impl Download {
             Download::Picture => "picture",
             Download::Pattern => "pattern",
             Download::Mesh(format) => format.extension(),
+        }
+    }
+
+    /// The media type of its file.
+    pub fn mime(self) -> &'static str {
+        match self {
+            Download::Mesh(format) => format.mime(),
+            Download::Picture | Download::Pattern => "image/png",
         }
     }
 

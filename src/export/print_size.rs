@@ -4,11 +4,12 @@
 //! files in metres (a viewer in augmented reality shows the shell at that size).
 
 use super::error::ExportError;
+use serde::{Deserialize, Serialize};
 
 /// Which side of the exported shell's bounding box a [`PrintSize`] sets. The sides are those
 /// of a printer's build plate, the shell standing apex up and facing the way the page first
 /// shows it: x across, y from front to back, z up.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Along {
     /// The largest side, whichever it is.
     Largest,
@@ -44,8 +45,10 @@ impl Along {
     }
 }
 
-/// The size of an exported shell.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The size of an exported shell. Read back from its parts (between threads) only within the
+/// sizes [`PrintSize::new`] allows.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(into = "(f64, Along)", try_from = "(f64, Along)")]
 pub struct PrintSize {
     mm: f64,
     along: Along,
@@ -90,6 +93,20 @@ impl PrintSize {
     /// The side the length is of.
     pub fn side(self) -> Along {
         self.along
+    }
+}
+
+impl From<PrintSize> for (f64, Along) {
+    fn from(size: PrintSize) -> Self {
+        (size.mm, size.along)
+    }
+}
+
+impl TryFrom<(f64, Along)> for PrintSize {
+    type Error = ExportError;
+
+    fn try_from((mm, along): (f64, Along)) -> Result<Self, ExportError> {
+        Ok(Self::new(mm, "size")?.along(along))
     }
 }
 

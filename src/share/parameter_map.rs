@@ -10,6 +10,7 @@ use crate::presets::Preset;
 use crate::share::link::{self, flatten};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, SHELL, Section, display};
+use serde::{Deserialize, Serialize};
 
 /// Tiles along each side of the page's map (its style sheet lays out eight columns).
 pub const SIDE: usize = 8;
@@ -110,10 +111,11 @@ pub fn first_axes(parameters: &[(&'static Field, f64)]) -> (usize, usize) {
 }
 
 /// A tile's picture: RGBA pixels, each the mean of a block of cells and rows.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Picture {
     pub width: usize,
     pub height: usize,
+    #[serde(with = "crate::pod_bytes")]
     pub rgba: Vec<u8>,
 }
 

@@ -5,12 +5,13 @@
 //! embeds).
 
 use crate::spec::problem::Problem;
+use serde::{Deserialize, Serialize};
 
 /// The link key of the layout.
 pub const VIEW_KEY: &str = "view";
 
 /// How the viewer lays out its canvas.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Layout {
     /// One perspective view the pointer orbits.
     #[default]

@@ -5,9 +5,10 @@
 
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
+use serde::{Deserialize, Serialize};
 
 /// Where a preview stands.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum PreviewState {
     Filling,
     Whole,

@@ -10,6 +10,7 @@
 //! growth frames, so the last one shows it whole; the turntable then turns the camera once
 //! around the grown shell and ends where it began.
 
+use serde::{Deserialize, Serialize};
 use std::f32::consts::TAU;
 
 /// The display rate the link's speed is counted in (rows per frame at 60 Hz).
@@ -64,7 +65,7 @@ pub struct RecordingOptions {
 /// One video frame a recording asks of the viewer: the shell grown to `row`, the camera eased
 /// by `dt` seconds of video (not of the clock) and turned by `turn` radians about the vertical,
 /// drawn, and read as the frame shown at `timestamp_us` for `duration_us`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FrameAsk {
     pub row: usize,
     pub dt: f32,

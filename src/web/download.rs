@@ -77,9 +77,9 @@ impl Downloads {
                 return;
             }
             FileStage::Written(file) => match file.body {
-                Body::Bytes { mime, bytes } => {
+                Body::Bytes(bytes) => {
                     show_size(file.what, &format!("{} MB", megabytes(bytes.len() as f64)));
-                    offer(&file.name, mime, &bytes)
+                    offer(&file.name, file.what.mime(), &bytes)
                 }
                 Body::Url(url) => {
                     let offered = offer_url(&file.name, &url);

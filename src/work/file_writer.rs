@@ -14,12 +14,13 @@ use crate::export::shell::Shell;
 use crate::generator::within;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
+use serde::{Deserialize, Serialize};
 
 /// Milliseconds of a frame an export may take.
 const EXPORT_BUDGET_MS: f64 = 8.0;
 
 /// Where a file asked for stands.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum FileStage {
     /// The implicit shell is being finished before its mesh is written.
     Finishing,
@@ -32,18 +33,18 @@ pub enum FileStage {
 }
 
 /// A file written whole.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct File {
     pub what: Download,
     pub name: String,
     pub body: Body,
 }
 
-/// What a file holds: bytes of a type, or (the picture, as the browser reads it from the
+/// What a file holds: its bytes (of the type [`Download::mime`] names), or (the picture, as the browser reads it from the
 /// canvas) the address of its data.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Body {
-    Bytes { mime: &'static str, bytes: Vec<u8> },
+    Bytes(#[serde(with = "crate::pod_bytes")] Vec<u8>),
     Url(String),
 }
 
@@ -51,7 +52,6 @@ pub enum Body {
 struct Job {
     export: Export,
     name: String,
-    mime: &'static str,
     what: Download,
     /// The longest step lately (see [`within`]).
     longest: f64,
@@ -205,10 +205,7 @@ impl FileWriter {
                     Ok(Some(bytes)) => FileStage::Written(File {
                         what: job.what,
                         name: job.name,
-                        body: Body::Bytes {
-                            mime: job.mime,
-                            bytes,
-                        },
+                        body: Body::Bytes(bytes),
                     }),
                     Err(e) => FileStage::Refused(e.to_string()),
                 }
@@ -221,17 +218,14 @@ impl FileWriter {
 /// The job that writes `what` (the pattern or a mesh) of `source` as `name`.
 fn begin(what: Download, name: String, size: PrintSize, source: &Source) -> Result<Job, String> {
     let r = source.replica;
-    let (export, mime) = match what {
+    let export = match what {
         Download::Picture => return Err("the picture is not written in steps".into()),
         Download::Pattern => {
             if r.cells() == 0 {
                 return Err("this shell has no pattern".into());
             }
             let rows = r.rgba().len() / (r.cells() * 4);
-            (
-                Export::pattern(r.cells(), rows, r.rgba().to_vec()),
-                "image/png",
-            )
+            Export::pattern(r.cells(), rows, r.rgba().to_vec())
         }
         Download::Mesh(format) => {
             let size = if format.sized() {
@@ -242,14 +236,12 @@ fn begin(what: Download, name: String, size: PrintSize, source: &Source) -> Resu
             let grown = r.for_export().ok_or("the shell is not built yet")?;
             let shell =
                 Shell::of(grown, source.spec, source.preset, size).map_err(|e| e.to_string())?;
-            let export = Export::new(format, shell).map_err(|e| e.to_string())?;
-            (export, format.mime())
+            Export::new(format, shell).map_err(|e| e.to_string())?
         }
     };
     Ok(Job {
         export,
         name,
-        mime,
         what,
         longest: 0.0,
     })

@@ -3,13 +3,19 @@
 //! which of its rows are new, and the page draws them. The page's thread draws the planar view
 //! wherever the viewer runs.
 
+use serde::{Deserialize, Serialize};
+
 /// One change to the planar view.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum PlanarUpdate {
     /// From now on, a blank pattern of `cells × rows` (`None`: no pattern, the view hidden).
     Open(Option<(u32, u32)>),
     /// Rows `first..` of the pattern, RGBA, `cells × 4` bytes a row.
-    Rows { first: u32, rgba: Vec<u8> },
+    Rows {
+        first: u32,
+        #[serde(with = "crate::pod_bytes")]
+        rgba: Vec<u8>,
+    },
     /// Keep row `row` in sight (the newest grown).
     Follow(u32),
 }

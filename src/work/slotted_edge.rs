@@ -8,11 +8,12 @@
 
 use crate::generator::EdgeRuns;
 use crate::mesh::{Capacity, Mesh, Vertex};
+use serde::{Deserialize, Serialize};
 use std::ops::Range;
 
 /// Where one part lies in the slotted mesh: its number, its vertices, its indices (which name
 /// vertices of the slotted mesh).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Slot {
     pub id: u32,
     pub vertices: Range<u32>,
@@ -20,16 +21,18 @@ pub struct Slot {
 }
 
 /// Vertices and indices written at their places in the slotted mesh.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct EdgeRun {
     pub first_vertex: u32,
+    #[serde(with = "crate::pod_bytes")]
     pub vertices: Vec<Vertex>,
     pub first_index: u32,
+    #[serde(with = "crate::pod_bytes")]
     pub indices: Vec<u32>,
 }
 
 /// What turns the slotted edge the page holds into the next one.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct EdgeWrites {
     /// The page drops what it holds first (a host's first edge, or slots laid out anew): the
     /// runs then cover all of the new edge.

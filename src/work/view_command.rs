@@ -11,24 +11,27 @@ use crate::presets::Preset;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::recording::FrameAsk;
+use serde::{Deserialize, Serialize};
 
 /// One thing the page asks of its viewer.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub enum ViewCommand {
     /// Grow `spec` of `preset` from its apex, dropping the shell grown before; with `finish`,
     /// to its end at once (an implicit shell remeshed whole, an embed for a reader who asked
     /// for less motion).
     Load {
+        #[serde(with = "preset_by_id")]
         preset: &'static Preset,
+        #[serde(with = "spec_as_json")]
         spec: Box<ShellSpec>,
         finish: bool,
     },
     /// Draw the shell grown so far in the material of `spec`, which grows it as the loaded spec
     /// does ([`ShellSpec::grows_like`]): nothing grows again.
-    Restyle(Box<ShellSpec>),
+    Restyle(#[serde(with = "spec_as_json")] Box<ShellSpec>),
     /// Show the whole pattern of `spec` in the planar view while growth waits (a slider of
     /// the pattern being dragged).
-    Preview(Box<ShellSpec>),
+    Preview(#[serde(with = "spec_as_json")] Box<ShellSpec>),
     /// Back from a preview to the growing shell's own pattern.
     EndPreview,
     /// Grow this many rows (a step, paused).
@@ -69,9 +72,46 @@ pub enum ViewCommand {
 }
 
 /// A pointer over the canvas, at CSS pixels from the page's top left.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum PointerChange {
     Down { id: i32, x: f32, y: f32 },
     Move { id: i32, x: f32, y: f32 },
     Up { id: i32 },
+}
+
+/// A preset crosses as its id, and is read back only when it names one of [`presets::presets`].
+mod preset_by_id {
+    use crate::presets::{self, Preset};
+    use serde::de::Error;
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub(super) fn serialize<S: Serializer>(
+        preset: &&'static Preset,
+        s: S,
+    ) -> Result<S::Ok, S::Error> {
+        s.serialize_str(preset.id)
+    }
+
+    pub(super) fn deserialize<'de, D: Deserializer<'de>>(
+        d: D,
+    ) -> Result<&'static Preset, D::Error> {
+        let id = String::deserialize(d)?;
+        presets::preset(&id).ok_or_else(|| D::Error::custom(format!("there is no preset '{id}'")))
+    }
+}
+
+/// A spec crosses as the JSON of its species files: its forms and patterns are told apart by a
+/// `kind` field inside them, which only a self-describing format can read back.
+mod spec_as_json {
+    use crate::spec::ShellSpec;
+    use serde::de::Error;
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub(super) fn serialize<S: Serializer>(spec: &ShellSpec, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&serde_json::to_string(spec).expect("a spec is always written as JSON"))
+    }
+
+    pub(super) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Box<ShellSpec>, D::Error> {
+        serde_json::from_str(&String::deserialize(d)?).map_err(D::Error::custom)
+    }
 }

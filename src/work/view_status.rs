@@ -8,9 +8,10 @@ use super::file_writer::FileStage;
 use super::planar_update::PlanarUpdate;
 use crate::export::estimate::Counts;
 use crate::view::preview::PreviewState;
+use serde::{Deserialize, Serialize};
 
 /// Where the shell being grown stands, once its worker has built it.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ShellStatus {
     /// The session it grows in: each load starts another.
     pub session: u32,
@@ -42,7 +43,7 @@ impl ShellStatus {
 }
 
 /// A viewer as the page sees it.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ViewStatus {
     /// The shell being grown, once built (`None` before its worker has answered, or without a
     /// shell).
@@ -102,7 +103,7 @@ mod tests {
 
 /// What a frame of the viewer gives the page: where a file asked for stands, whether the shell
 /// was drawn, the status, words to show, and what the planar view is to show.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct FrameReport {
     /// Where the file asked for stands (`None`: none is asked for).
     pub file: Option<FileStage>,
@@ -114,7 +115,7 @@ pub struct FrameReport {
 }
 
 /// The state of a viewer's graphics device.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Device {
     /// Drawing.
     Ready,
