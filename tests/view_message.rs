@@ -1,7 +1,8 @@
 //! The messages between the page and a viewer drawing in a worker (`work::view_message`): every
-//! command and every kind of news reads back as it was written, a spec bit for bit; bytes that
-//! are cut short, have a stray byte after them, name an unknown preset or carry a size out of
-//! range are refused, never read as something else.
+//! command and every kind of news reads back as it was written, a spec (sent as its link) bit
+//! for bit; bytes that are cut short, have a stray byte after them, name an unknown preset,
+//! carry a link with a problem or a size out of range are refused, never read as something
+//! else.
 #![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::export::estimate::Counts;
@@ -14,11 +15,12 @@ use seashells_core::view::preview::PreviewState;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::file_writer::{Body, File, FileStage};
 use seashells_core::work::planar_update::PlanarUpdate;
-use seashells_core::work::view_command::{PointerChange, ViewCommand};
+use seashells_core::work::view_command::{PointerChange, PresetSpec, ViewCommand};
 use seashells_core::work::view_message::{
     PoolNews, ViewerNews, decode_command, decode_news, encode_command, encode_news,
 };
 use seashells_core::work::view_status::{Device, FrameReport, ShellStatus, ViewStatus};
+use seashells_core::work::wire;
 
 /// Every kind of command, with values that are not their defaults.
 fn commands() -> Vec<ViewCommand> {
@@ -26,19 +28,18 @@ fn commands() -> Vec<ViewCommand> {
     let edited = link::decode("#v=1&preset=oliva-porphyria&pattern.model.d_a=0.0123&seed=7");
     vec![
         ViewCommand::Load {
-            preset,
-            spec: Box::new(preset.spec.clone()),
+            shell: PresetSpec::new(preset, preset.spec.clone()),
             finish: true,
         },
         ViewCommand::Load {
-            preset: edited.preset,
-            spec: Box::new(edited.spec.clone()),
+            shell: PresetSpec::new(edited.preset, edited.spec.clone()),
             finish: false,
         },
-        ViewCommand::Restyle(Box::new(
+        ViewCommand::Restyle(PresetSpec::new(
+            preset,
             link::decode("#v=1&preset=murex-cabritii&material.gloss=0.9").spec,
         )),
-        ViewCommand::Preview(Box::new(edited.spec)),
+        ViewCommand::Preview(PresetSpec::new(edited.preset, edited.spec)),
         ViewCommand::EndPreview,
         ViewCommand::Grow(17),
         ViewCommand::Finish,
@@ -94,19 +95,11 @@ fn every_command_reads_back_as_written() {
         let back = decode_command(&bytes).expect("reads back");
         // Preset has no equality of its own: compare the debug forms (the spec's every field).
         assert_eq!(format!("{back:?}"), format!("{command:?}"));
-        if let (
-            ViewCommand::Load { preset, spec, .. },
-            ViewCommand::Load {
-                preset: p, spec: s, ..
-            },
-        ) = (&command, &back)
+        if let (ViewCommand::Load { shell, .. }, ViewCommand::Load { shell: back, .. }) =
+            (&command, &back)
         {
-            assert_eq!(p.id, preset.id);
-            assert_eq!(
-                link::encode(p, s),
-                link::encode(preset, spec),
-                "the same link"
-            );
+            assert_eq!(back.preset.id, shell.preset.id);
+            assert_eq!(back.spec, shell.spec, "the same spec");
         }
     }
 }
@@ -284,8 +277,7 @@ fn replaced(bytes: &[u8], old: &[u8], new: &[u8]) -> Vec<u8> {
 fn unknown_presets_sides_commands_and_sizes_out_of_range_are_refused() {
     let preset = presets::preset("turbinate").expect("a preset");
     let load = encode_command(&ViewCommand::Load {
-        preset,
-        spec: Box::new(preset.spec.clone()),
+        shell: PresetSpec::new(preset, preset.spec.clone()),
         finish: false,
     });
     let refused = |bytes: &[u8]| decode_command(bytes).expect_err("refused").key;
@@ -293,6 +285,10 @@ fn unknown_presets_sides_commands_and_sizes_out_of_range_are_refused() {
         refused(&replaced(&load, b"turbinate", b"turbinaTe")),
         "command"
     );
+    // A load is the first command: its number, its shell's link, whether to finish it.
+    assert_eq!(load, wire::write(&(0u32, "v=1&preset=turbinate", false)));
+    let bad = wire::write(&(0u32, "v=1&preset=turbinate&growth.rows=-5", false));
+    assert_eq!(refused(&bad), "command");
     let file = encode_command(&ViewCommand::WriteFile {
         what: Download::Mesh(MeshFormat::Stl),
         size: PrintSize::default(),
@@ -314,4 +310,40 @@ fn unknown_presets_sides_commands_and_sizes_out_of_range_are_refused() {
     let mut unknown = file.clone();
     unknown[0] = 100;
     assert_eq!(refused(&unknown), "command");
+}
+
+/// Links the page repairs, warns of or converts (the page tests' bad links): the shell the page
+/// then shows crosses to the viewer as it is, whorls that overlap included.
+#[test]
+fn every_shell_the_page_shows_of_a_bad_link_crosses_as_it_is() {
+    for fragment in [
+        "#v=1&preset=turbinate&form.spiral.whorls=1e9",
+        "#v=1&preset=oliva-porphyria&pattern.model.d_a=0.9",
+        "#v=1&preset=oliva-porphyria&pattern.cells=2048&growth.rows=20000",
+        "#v=1&preset=turbinate&form.spiral.whorls=30&form.spiral.subdivisions=16&form.curve.segments=512",
+        "#v=1&preset=kawaguchi-shell&form.mouth.protuberances=0,-1.5",
+        "#v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true&form.chamber.ratio=1.001",
+        "#v=1&preset=kawaguchi-shell&form.chambers=2000",
+        "#v=1&preset=kawaguchi-ammonite&form.chamber.ratio=1",
+        "#v=1&preset=implicit-whorl&form.spiral.lambda=1.01",
+        "#v=1&preset=kawaguchi-shell&form.chamber.translation.x=0.1&form.chamber.translation.y=0.2&form.chamber.translation.z=0.15",
+    ] {
+        let shown = link::decode(fragment);
+        assert!(
+            !shown.problems.is_empty(),
+            "{fragment} has something to say"
+        );
+        let command = ViewCommand::Load {
+            shell: PresetSpec::new(shown.preset, shown.spec.clone()),
+            finish: false,
+        };
+        let Ok(ViewCommand::Load { shell, .. }) = decode_command(&encode_command(&command)) else {
+            panic!("{fragment} does not cross");
+        };
+        assert_eq!(
+            (shell.preset.id, *shell.spec),
+            (shown.preset.id, shown.spec),
+            "{fragment}"
+        );
+    }
 }

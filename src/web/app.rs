@@ -47,7 +47,7 @@ use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
-use crate::work::view_command::ViewCommand;
+use crate::work::view_command::{PresetSpec, ViewCommand};
 use crate::work::view_message::PoolNews;
 use crate::work::view_status::{Device, ViewStatus};
 use std::cell::RefCell;
@@ -279,7 +279,7 @@ impl App {
     /// its recording and its status go on.
     fn restyle(&mut self, preset: &'static Preset, spec: ShellSpec) {
         self.viewer
-            .command(ViewCommand::Restyle(Box::new(spec.clone())));
+            .command(ViewCommand::Restyle(PresetSpec::new(preset, spec.clone())));
         if let Some(panel) = &self.panel {
             panel.refresh(&spec);
         }
@@ -326,8 +326,7 @@ impl App {
                 .is_some_and(|(p, _)| p.id == preset.id)
             && self.status.shell.as_ref().is_some_and(|s| s.done);
         self.viewer.command(ViewCommand::Load {
-            preset,
-            spec: Box::new(spec.clone()),
+            shell: PresetSpec::new(preset, spec.clone()),
             finish: finish || remesh,
         });
         self.status = ViewStatus::default();
@@ -369,10 +368,12 @@ impl App {
         if change == Change::Moving {
             if previews(key) {
                 say(&problems);
-                self.viewer.command(ViewCommand::Preview(Box::new(next)));
+                self.viewer
+                    .command(ViewCommand::Preview(PresetSpec::new(preset, next)));
             } else if self.restyles(preset, &next) {
                 // A material slider dragged: the grown shell follows it.
-                self.viewer.command(ViewCommand::Restyle(Box::new(next)));
+                self.viewer
+                    .command(ViewCommand::Restyle(PresetSpec::new(preset, next)));
             }
             return;
         }

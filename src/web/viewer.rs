@@ -345,18 +345,14 @@ impl Viewer {
     /// Does what the page asks (see [`ViewCommand`]).
     pub fn command(&mut self, command: ViewCommand) {
         match command {
-            ViewCommand::Load {
-                preset,
-                spec,
-                finish,
-            } => {
-                self.load(preset, &spec);
+            ViewCommand::Load { shell, finish } => {
+                self.load(shell.preset, &shell.spec);
                 if finish {
                     self.finish();
                 }
             }
-            ViewCommand::Restyle(spec) => self.restyle(&spec),
-            ViewCommand::Preview(spec) => self.preview(&spec),
+            ViewCommand::Restyle(shell) => self.restyle(&shell.spec),
+            ViewCommand::Preview(shell) => self.preview(&shell.spec),
             ViewCommand::EndPreview => self.end_preview(),
             ViewCommand::Grow(rows) => self.grow(rows, GROWTH_BUDGET_MS),
             ViewCommand::Finish => self.finish(),

@@ -210,7 +210,7 @@ pub fn encode_reply(ticket: u32, reply: &Reply) -> Vec<u8> {
 }
 
 /// The ticket and reply of an envelope's bytes, whose meshes and edge writes the page can
-/// apply (see [`Reply::check`]).
+/// apply (`Reply::check`).
 pub fn decode_reply(bytes: &[u8]) -> Result<(u32, Reply), WireError> {
     let (ticket, reply): (u32, Reply) = wire::read(bytes, "reply")?;
     reply.check()?;

@@ -8,30 +8,26 @@
 use crate::export::Download;
 use crate::export::print_size::PrintSize;
 use crate::presets::Preset;
+use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
+use crate::spec::problem::Said;
 use crate::view::recording::FrameAsk;
 use serde::{Deserialize, Serialize};
 
 /// One thing the page asks of its viewer.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub enum ViewCommand {
-    /// Grow `spec` of `preset` from its apex, dropping the shell grown before; with `finish`,
+    /// Grow the shell from its apex, dropping the shell grown before; with `finish`,
     /// to its end at once (an implicit shell remeshed whole, an embed for a reader who asked
     /// for less motion).
-    Load {
-        #[serde(with = "preset_by_id")]
-        preset: &'static Preset,
-        #[serde(with = "spec_as_json")]
-        spec: Box<ShellSpec>,
-        finish: bool,
-    },
-    /// Draw the shell grown so far in the material of `spec`, which grows it as the loaded spec
+    Load { shell: PresetSpec, finish: bool },
+    /// Draw the shell grown so far in the material of this one, which grows as the loaded one
     /// does ([`ShellSpec::grows_like`]): nothing grows again.
-    Restyle(#[serde(with = "spec_as_json")] Box<ShellSpec>),
-    /// Show the whole pattern of `spec` in the planar view while growth waits (a slider of
+    Restyle(PresetSpec),
+    /// Show the whole pattern of this shell in the planar view while growth waits (a slider of
     /// the pattern being dragged).
-    Preview(#[serde(with = "spec_as_json")] Box<ShellSpec>),
+    Preview(PresetSpec),
     /// Back from a preview to the growing shell's own pattern.
     EndPreview,
     /// Grow this many rows (a step, paused).
@@ -79,39 +75,41 @@ pub enum PointerChange {
     Up { id: i32 },
 }
 
-/// A preset crosses as its id, and is read back only when it names one of [`presets::presets`].
-mod preset_by_id {
-    use crate::presets::{self, Preset};
-    use serde::de::Error;
-    use serde::{Deserialize, Deserializer, Serializer};
+/// A spec and the preset it was made from: a shell as the page names it. It crosses between
+/// threads as its link, the one text every thread reads the same spec from, bit for bit (the
+/// workers are sent the same). One that would not read back as it was written (a value of it
+/// not used as given) is refused; one shown as asked but not to be written to a file (whorls
+/// that overlap) is read.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(into = "String", try_from = "String")]
+pub struct PresetSpec {
+    pub preset: &'static Preset,
+    pub spec: Box<ShellSpec>,
+}
 
-    pub(super) fn serialize<S: Serializer>(
-        preset: &&'static Preset,
-        s: S,
-    ) -> Result<S::Ok, S::Error> {
-        s.serialize_str(preset.id)
-    }
-
-    pub(super) fn deserialize<'de, D: Deserializer<'de>>(
-        d: D,
-    ) -> Result<&'static Preset, D::Error> {
-        let id = String::deserialize(d)?;
-        presets::preset(&id).ok_or_else(|| D::Error::custom(format!("there is no preset '{id}'")))
+impl PresetSpec {
+    pub fn new(preset: &'static Preset, spec: ShellSpec) -> Self {
+        Self {
+            preset,
+            spec: Box::new(spec),
+        }
     }
 }
 
-/// A spec crosses as the JSON of its species files: its forms and patterns are told apart by a
-/// `kind` field inside them, which only a self-describing format can read back.
-mod spec_as_json {
-    use crate::spec::ShellSpec;
-    use serde::de::Error;
-    use serde::{Deserialize, Deserializer, Serializer};
-
-    pub(super) fn serialize<S: Serializer>(spec: &ShellSpec, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&serde_json::to_string(spec).expect("a spec is always written as JSON"))
+impl From<PresetSpec> for String {
+    fn from(shell: PresetSpec) -> Self {
+        link::encode(shell.preset, &shell.spec)
     }
+}
 
-    pub(super) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Box<ShellSpec>, D::Error> {
-        serde_json::from_str(&String::deserialize(d)?).map_err(D::Error::custom)
+impl TryFrom<String> for PresetSpec {
+    type Error = String;
+
+    fn try_from(text: String) -> Result<Self, String> {
+        let decoded = link::decode(&text);
+        match decoded.problems.iter().find(|p| p.said == Said::Changed) {
+            Some(problem) => Err(format!("{text}: {problem}")),
+            None => Ok(Self::new(decoded.preset, decoded.spec)),
+        }
     }
 }
