@@ -39,7 +39,7 @@ fn commands() -> Vec<ViewCommand> {
             preset,
             link::decode("#v=1&preset=murex-cabritii&material.gloss=0.9").spec,
         )),
-        ViewCommand::Preview(PresetSpec::new(edited.preset, edited.spec)),
+        ViewCommand::Preview(link::encode(edited.preset, &edited.spec)),
         ViewCommand::EndPreview,
         ViewCommand::Grow(17),
         ViewCommand::Finish,

@@ -369,7 +369,7 @@ impl App {
             if previews(key) {
                 say(&problems);
                 self.viewer
-                    .command(ViewCommand::Preview(PresetSpec::new(preset, next)));
+                    .command(ViewCommand::Preview(link::encode(preset, &next)));
             } else if self.restyles(preset, &next) {
                 // A material slider dragged: the grown shell follows it.
                 self.viewer

@@ -352,7 +352,7 @@ impl Viewer {
                 }
             }
             ViewCommand::Restyle(shell) => self.restyle(&shell.spec),
-            ViewCommand::Preview(shell) => self.preview(&shell.spec),
+            ViewCommand::Preview(link) => self.preview(link),
             ViewCommand::EndPreview => self.end_preview(),
             ViewCommand::Grow(rows) => self.grow(rows, GROWTH_BUDGET_MS),
             ViewCommand::Finish => self.finish(),
@@ -636,14 +636,13 @@ impl Viewer {
         }
     }
 
-    /// Shows the whole pattern of `spec` in the planar view, computed by a worker over the
-    /// next frames, while the shell's growth waits (until [`Self::end_preview`] or another
-    /// spec is loaded). Values that give no pattern at all are refused with the reason, in a
-    /// message, when the worker answers.
-    fn preview(&mut self, spec: &ShellSpec) {
+    /// Shows the whole pattern of the shell of `link` in the planar view, computed by a worker
+    /// over the next frames, while the shell's growth waits (until [`Self::end_preview`] or
+    /// another spec is loaded). Values that give no pattern at all are refused with the reason,
+    /// in a message, when the worker answers.
+    fn preview(&mut self, link: String) {
         let Some(g) = &mut self.growing else { return };
         self.session = self.session.wrapping_add(1);
-        let link = link::encode(g.preset, spec);
         self.workers.borrow_mut().submit(Request::Preview {
             session: self.session,
             link: link.clone(),

@@ -25,9 +25,10 @@ pub enum ViewCommand {
     /// Draw the shell grown so far in the material of this one, which grows as the loaded one
     /// does ([`ShellSpec::grows_like`]): nothing grows again.
     Restyle(PresetSpec),
-    /// Show the whole pattern of this shell in the planar view while growth waits (a slider of
-    /// the pattern being dragged).
-    Preview(PresetSpec),
+    /// Show the whole pattern of the shell of this link in the planar view while growth waits
+    /// (a slider of the pattern being dragged). The viewer only hands the link to a worker, so
+    /// it crosses as the text, not as a spec read and written again on every move.
+    Preview(String),
     /// Back from a preview to the growing shell's own pattern.
     EndPreview,
     /// Grow this many rows (a step, paused).
