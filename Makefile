@@ -119,7 +119,7 @@ test:
 FUZZ_CASES ?= 1000
 fuzz: deps-build
 	SEASHELLS_FUZZ_CASES=$(FUZZ_CASES) $(if $(FUZZ_SEED),SEASHELLS_FUZZ_SEED=$(FUZZ_SEED)) \
-	  cargo test --test any_link -- --nocapture
+	  cargo test --test native any_link:: -- --nocapture
 
 bench: build deps-browser
 	cargo build --release --bin seashells

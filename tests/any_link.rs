@@ -8,7 +8,6 @@
 //! `make test` runs [`QUICK_CASES`] cases, with the fields that only cost time (rows, the
 //! implicit grid) drawn below [`QUICK_CAPS`]; `make fuzz` sets `SEASHELLS_FUZZ_CASES` and
 //! draws every field over its whole range (docs/fuzzing.md says what it found).
-#![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed};

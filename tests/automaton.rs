@@ -1,7 +1,6 @@
 //! The vector cellular automaton: waves that annihilate (1/6-8/4) or cross (1/6-6/5), the ring
 //! closing on itself, an oscillator (1/6-8/5), determinism from the seed, and clear messages
 //! for bad rules.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::pattern::automaton::Automaton;
 use seashells_core::pattern::{EdgeModel, build};

@@ -6,9 +6,8 @@
 //! helix about the upright when the coil stands (the spiral plant's, wide and climbing), growth
 //! is deterministic (the paper's coral without random numbers), and bad parameters get
 //! messages that name them.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use proptest::prelude::*;
 use seashells_core::forms::kawaguchi::branching::branching_mesh::BranchingMesh;

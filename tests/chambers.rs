@@ -5,9 +5,8 @@
 //! vertical opens the whorls into a horn, the mesh is a closed outward-facing solid at every
 //! stage of growth, handedness mirrors, growth is deterministic, links of the old reading of T
 //! still open, and bad parameters get messages that name them.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use glam::{DQuat, DVec3};
 use proptest::prelude::*;

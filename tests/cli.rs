@@ -1,8 +1,7 @@
 //! The `seashells` command line: files are written for good input; every kind of bad input
 //! gets exactly one line on stderr and a non-zero exit.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::process::{Command, Output};
 

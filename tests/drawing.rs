@@ -1,7 +1,6 @@
 //! Kawaguchi's ways of looking at a shell, in the core: the line grid each form gives its line
 //! drawing falls on the form's own edges (the chambers' and trunks' facets, the sweep's rims),
 //! and the link carries the four-view layout without touching the shell.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Surface;

@@ -4,7 +4,6 @@
 //! empty, collapsed, failed or open shell, and a size out of bounds, get messages naming what
 //! to change instead of a file. What the files hold is read back by third-party tools in
 //! tests/files/.
-#![cfg(not(target_arch = "wasm32"))]
 
 use glam::DVec3;
 use seashells_core::export::error::ExportError;

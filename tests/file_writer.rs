@@ -2,7 +2,6 @@
 //! asks for them: the bytes are those the exporter writes of the same shell, a mesh of an
 //! implicit shell still growing waits for it to be grown whole, and every file that cannot be
 //! made is refused with its reason, never written half or from another shell.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::export::job::Export;
 use seashells_core::export::print_size::PrintSize;

@@ -1,6 +1,5 @@
 //! The generator grows mesh and pattern in step, and a pattern that cannot go on stops growth
 //! with a message instead of garbage.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::generator::Generator;
 use seashells_core::presets::{preset, presets};

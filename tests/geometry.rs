@@ -1,11 +1,10 @@
 //! Properties of the swept shell (Fowler et al. 1992, §2) that must hold for any parameters:
 //! self-similarity, the Frenet frame, reparametrization, sculpture growing with the shell,
 //! mirror symmetry of dextral and sinistral shells, and watertight solids.
-#![cfg(not(target_arch = "wasm32"))]
 
+use crate::common;
 use glam::DQuat;
 use proptest::prelude::*;
-mod common;
 
 use seashells_core::export::{obj, stl};
 use seashells_core::forms::sweep::frame::Frame;

@@ -1,9 +1,8 @@
 //! The BlobTree modeller and its polygonizer (Galbraith, Prusinkiewicz & Wyvill §2.2): field
 //! signs, the CSG laws, superelliptic and controlled blending, and meshes that are closed,
 //! outward and accurate, across chunk seams.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{assert_closed_and_outward, share_of_normals_agreeing, signed_volume};
 use glam::DVec3;

@@ -1,9 +1,8 @@
 //! Implicit shells (Galbraith, Prusinkiewicz & Wyvill §2.1, §3.1): the helico-spiral of eqs 1–3
 //! and its placement (eq 8), whorls that are closed at every stage of their growth, growth that
 //! ends in the same mesh step by step as all at once, and clear messages for bad numbers.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit};
 use glam::DVec3;

@@ -6,7 +6,6 @@
 //! - the BlobTree engine needs nothing of the crate but the mesh.
 //!
 //! A failure names the circle and, for each step of it, a line that makes it.
-#![cfg(not(target_arch = "wasm32"))]
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;

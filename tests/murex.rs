@@ -17,9 +17,8 @@
 //! the body down the canal): five full rows, and a sixth with two values, read left-aligned:
 //! varices 1 and 2 (the earlier ones) have six spines, varix 3 (at the opening) five, which
 //! matches the paper's "axial rows of 5–6 spines" (fig 9).
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{assert_closed_and_outward, assert_refused_and_repaired, implicit, signed_volume};
 use glam::DVec3;

@@ -2,9 +2,8 @@
 //! the previous whorl subtracted from the inside generating surface, so that the wall between
 //! two whorls is single; the aperture, seen head-on, an open and roughly round hole bounded by
 //! the previous whorl.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::implicit;
 use glam::{DAffine3, DVec3};

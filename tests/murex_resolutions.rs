@@ -4,7 +4,7 @@
 //! the grid where they stand instead of the model dropping them; and every Murex preset is
 //! one closed, consistently wound piece at its own resolution, 256³ and 384³.
 
-mod common;
+use crate::common;
 
 use common::{assert_closed_and_outward, implicit, pieces};
 use glam::DVec3;

@@ -1,7 +1,6 @@
 //! The map of a pattern model's parameter space: tiles spaced as the axes say, each the pattern
 //! of the spec its link reopens, computed deterministically, with tiles that cannot be
 //! integrated refused with their reason while the others fill.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};

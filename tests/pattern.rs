@@ -2,7 +2,6 @@
 //! describes: determinism from the seed, the analytic steady state of eq 8, stable stripes whose
 //! spacing the parameters set, oscillations, travelling waves that annihilate and are kept in
 //! number by the hormone, triangles, and refusal of what explicit Euler cannot integrate.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::generator::Generator;
 use seashells_core::pattern::build;

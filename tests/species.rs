@@ -1,6 +1,5 @@
 //! Every preset file parses, needs no repair, and grows into a finite mesh; the presets the
 //! issues name exist.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::generator::Generator;
 use seashells_core::presets::{preset, presets};

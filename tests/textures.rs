@@ -3,9 +3,8 @@
 //! colours weighted by their fields; the spines darken from base to tip; the spec's textures
 //! travel in links, bad values are named; the same spec gives the same bits, and the exports
 //! carry the blended colours.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{assert_refused_and_repaired, implicit};
 use glam::DVec3;

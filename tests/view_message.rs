@@ -3,7 +3,6 @@
 //! for bit; bytes that are cut short, have a stray byte after them, name an unknown preset,
 //! carry a link with a problem or a size out of range are refused, never read as something
 //! else.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::export::estimate::Counts;
 use seashells_core::export::print_size::{Along, PrintSize};

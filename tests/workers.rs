@@ -4,7 +4,6 @@
 //! Whatever the number of workers, whoever dies on the way, and however growth was cut into
 //! requests and budgets, the shell, its pattern, the gallery's shells and the map's tiles are
 //! the same, bit for bit, as one thread growing them alone.
-#![cfg(not(target_arch = "wasm32"))]
 
 use seashells_core::export::MeshFormat;
 use seashells_core::export::job::Export;

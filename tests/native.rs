@@ -1,0 +1,30 @@
+//! Every native integration test, in one binary: one link of the crate and its dependencies
+//! instead of one per file, so `make test` builds and stores it once. Each file beside this
+//! one is a module; `cargo test --test native murex::` runs one of them.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+mod any_link;
+mod automaton;
+mod branching;
+mod chambers;
+mod cli;
+mod drawing;
+mod exports;
+mod file_writer;
+mod generator;
+mod geometry;
+mod implicit;
+mod implicit_whorl;
+mod layers;
+mod link;
+mod murex;
+mod murex_opening;
+mod murex_resolutions;
+mod parameter_map;
+mod pattern;
+mod species;
+mod textures;
+mod view_message;
+mod workers;
