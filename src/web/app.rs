@@ -29,11 +29,11 @@ use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{Change, OnChange, Panel};
 use super::planar::PlanarView;
 use super::record::{self, Recording, Step, Support};
-use super::share;
+use super::share_panel;
 use super::shown_size::ShownSize;
 use super::view_canvas::replace;
-use super::view_link::{Taken, ViewLink};
 use super::viewer::Viewer;
+use super::viewer_handle::{Taken, ViewerHandle};
 use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::export::Download;
@@ -63,7 +63,7 @@ const URL_DELAY_MS: f64 = 300.0;
 const PROGRESS_EVERY_MS: f64 = 100.0;
 
 pub struct App {
-    viewer: ViewLink,
+    viewer: ViewerHandle,
     /// Whether the viewer was last told to hold its growth.
     held: bool,
     /// Workers replaced so far in the page's pool and in the drawing worker's.
@@ -127,7 +127,7 @@ fn show_backend(backend: Option<String>) {
 
 /// Signals where the main view is drawn (`data-drawn-in`): in the drawing worker, on the
 /// page's thread, or nowhere.
-fn show_drawn_in(viewer: &ViewLink) {
+fn show_drawn_in(viewer: &ViewerHandle) {
     let place = match (viewer.in_worker(), viewer.backend()) {
         (true, _) => "worker",
         (false, Some(_)) => "page",
@@ -166,7 +166,7 @@ fn location_hash() -> String {
 }
 
 impl App {
-    pub fn new(viewer: ViewLink, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
+    pub fn new(viewer: ViewerHandle, pictures: Pictures, workers: Rc<RefCell<Workers>>) -> Self {
         show_backend(viewer.backend());
         show_drawn_in(&viewer);
         let shown = element("shell").and_then(|e| ShownSize::observe(&e).ok());
@@ -217,7 +217,7 @@ impl App {
         self.on_change = Some(on_change);
     }
 
-    pub fn viewer(&mut self) -> &mut ViewLink {
+    pub fn viewer(&mut self) -> &mut ViewerHandle {
         &mut self.viewer
     }
 
@@ -260,7 +260,7 @@ impl App {
             return;
         }
         // An embed for a reader who asked for less motion: the grown shell, still.
-        let still = presentation.ui.embedded() && share::reduced_motion();
+        let still = presentation.ui.embedded() && share_panel::reduced_motion();
         self.load(preset, spec, still);
         if still {
             self.set_playing(false);
@@ -285,7 +285,7 @@ impl App {
         }
         self.current = Some((preset, spec));
         if let Some(link) = self.link() {
-            share::show_qr(&link);
+            share_panel::show_qr(&link);
         }
     }
 
@@ -345,7 +345,7 @@ impl App {
         }
         self.current = Some((preset, spec));
         if let Some(link) = self.link() {
-            share::show_qr(&link);
+            share_panel::show_qr(&link);
         }
         self.set_playing(true);
     }
@@ -406,14 +406,14 @@ impl App {
     fn link(&self) -> Option<String> {
         self.current
             .as_ref()
-            .map(|(p, s)| format!("{}#{}", share::page_url(), link::encode(p, s)))
+            .map(|(p, s)| format!("{}#{}", share_panel::page_url(), link::encode(p, s)))
     }
 
     /// Shows the shell as `presentation` asks: one view, or Kawaguchi's four with each pane
     /// named over the canvas.
     fn present(&mut self, presentation: Presentation) {
         self.presentation = presentation;
-        share::apply_ui(presentation.ui);
+        share_panel::apply_ui(presentation.ui);
         let layout = presentation.layout;
         self.viewer.command(ViewCommand::Layout(layout));
         signal("layout", layout.name());
@@ -550,18 +550,19 @@ impl App {
             return;
         };
         let url = window.location().href().unwrap_or_default();
-        share::copy(url.clone(), "Link copied", format!("Copy this link: {url}"));
+        share_panel::copy(url.clone(), "Link copied", format!("Copy this link: {url}"));
     }
 
     /// Copies the `<iframe>` that embeds what is shown, in the interface chosen beside it.
     pub fn copy_embed(&mut self) {
         if let Some((preset, spec)) = &self.current {
             let presentation = Presentation {
-                ui: share::chosen_ui(),
+                ui: share_panel::chosen_ui(),
                 ..self.presentation
             };
-            let snippet = share::snippet(&link::encode(preset, spec), presentation, &preset.name);
-            share::copy_embed(snippet);
+            let snippet =
+                share_panel::snippet(&link::encode(preset, spec), presentation, &preset.name);
+            share_panel::copy_embed(snippet);
         }
     }
 
@@ -820,7 +821,7 @@ impl App {
     fn without_3d(&mut self, why: &str) {
         page::show_no_3d(why);
         let viewer = Viewer::without_drawing(true, page::background(), Rc::clone(&self.workers));
-        self.install(ViewLink::Here(Box::new(viewer)), None);
+        self.install(ViewerHandle::Here(Box::new(viewer)), None);
     }
 
     /// Takes the viewer opened on the page's thread once the browser has answered (or, when it
@@ -834,7 +835,7 @@ impl App {
             return;
         };
         match opened {
-            Ok(viewer) => self.install(ViewLink::Here(Box::new(viewer)), Some(element)),
+            Ok(viewer) => self.install(ViewerHandle::Here(Box::new(viewer)), Some(element)),
             Err(why) => {
                 self.without_3d(&why);
             }
@@ -844,7 +845,7 @@ impl App {
     /// Puts `viewer` in the old one's place (drawing on `element`, a fresh canvas of the page,
     /// if it draws) and tells it what the page told the old one: the layout, the background,
     /// the shell shown, grown again from its apex. A recording or a file under way is dropped.
-    fn install(&mut self, viewer: ViewLink, element: Option<HtmlCanvasElement>) {
+    fn install(&mut self, viewer: ViewerHandle, element: Option<HtmlCanvasElement>) {
         self.stop_recording("the view moved to another thread");
         self.downloads
             .abandon("the view moved to another thread; ask for the file again");

@@ -15,12 +15,12 @@ mod planar;
 mod record;
 mod recovery;
 mod scope;
-mod share;
+mod share_panel;
 mod shown_size;
 mod view_canvas;
-mod view_link;
 mod view_worker;
 mod viewer;
+mod viewer_handle;
 mod webcodecs;
 mod worker_host;
 mod workers;
@@ -32,8 +32,8 @@ use app::App;
 use record::Support;
 use std::cell::RefCell;
 use std::rc::Rc;
-use view_link::{ViewLink, ViewWorker};
 use viewer::Viewer;
+use viewer_handle::{ViewWorker, ViewerHandle};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{
@@ -108,7 +108,7 @@ pub async fn start() -> Result<(), JsValue> {
         Ok(main) => main,
         Err(why) => {
             page::show_no_3d(&why);
-            ViewLink::Here(Box::new(Viewer::without_drawing(
+            ViewerHandle::Here(Box::new(Viewer::without_drawing(
                 true,
                 background,
                 shared(),
@@ -158,7 +158,7 @@ pub async fn start() -> Result<(), JsValue> {
 }
 
 /// The main viewer, on the canvas `element`: in a worker where one draws (see
-/// `view_link.rs`), else, or when the worker cannot start or open a renderer on the canvas
+/// `viewer_handle.rs`), else, or when the worker cannot start or open a renderer on the canvas
 /// handed to it (WebKit's offscreen canvases give no WebGL2), on the page's thread, on the
 /// element itself (a fresh copy of it, if it was handed to the worker). The page says where,
 /// in words; the worker's reason goes to the console.
@@ -166,14 +166,14 @@ async fn main_viewer(
     element: HtmlCanvasElement,
     background: [u8; 3],
     workers: Rc<RefCell<workers::Workers>>,
-) -> Result<ViewLink, String> {
-    let (element, note) = if view_link::in_worker() {
+) -> Result<ViewerHandle, String> {
+    let (element, note) = if viewer_handle::in_worker() {
         let started = match view_canvas::hand_over(&element) {
             Ok(offscreen) => ViewWorker::start(offscreen, true, background).await,
             Err(e) => Err(e),
         };
         match started {
-            Ok(worker) => return Ok(ViewLink::Worker(worker)),
+            Ok(worker) => return Ok(ViewerHandle::Worker(worker)),
             Err(e) => {
                 web_sys::console::info_1(
                     &format!("The view is drawn on the page's thread: {e}").into(),
@@ -192,7 +192,7 @@ async fn main_viewer(
     if let Some(note) = note {
         page::set_text("workers-status", &note);
     }
-    Ok(ViewLink::Here(Box::new(viewer)))
+    Ok(ViewerHandle::Here(Box::new(viewer)))
 }
 
 /// Record: records the growth; the first time, asks the browser what it can record video

@@ -1,7 +1,7 @@
 //! A viewer: one canvas (a canvas element of the page, or an `OffscreenCanvas` one handed its
 //! drawing to) and its renderer, a shell growing on it, what its planar pattern shows, and the
 //! camera the pointer turns. It touches nothing of the page, so that it runs in the worker that
-//! draws the main view (`view_worker.rs`) as well as on the page's thread (`view_link.rs`).
+//! draws the main view (`view_worker.rs`) as well as on the page's thread (`viewer_handle.rs`).
 //! Loading another spec restarts growth without reloading the page. The page's main view is one
 //! viewer, whose camera follows the growing shell; the gallery's pictures are drawn by another,
 //! framed on the whole shell. While a pattern slider is dragged, the planar view previews the

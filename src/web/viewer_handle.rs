@@ -66,7 +66,7 @@ pub struct ViewWorker {
 }
 
 /// The page's main viewer.
-pub enum ViewLink {
+pub enum ViewerHandle {
     /// On the page's own thread.
     Here(Box<Viewer>),
     /// In a worker.
@@ -242,25 +242,25 @@ pub struct Taken {
     pub pool: Option<PoolNews>,
 }
 
-impl ViewLink {
+impl ViewerHandle {
     /// "WebGPU" or "WebGL2", or `None` where the viewer draws nothing.
     pub fn backend(&self) -> Option<String> {
         match self {
-            ViewLink::Here(viewer) => viewer.backend().map(str::to_string),
-            ViewLink::Worker(w) => Some(w.backend.clone()),
+            ViewerHandle::Here(viewer) => viewer.backend().map(str::to_string),
+            ViewerHandle::Worker(w) => Some(w.backend.clone()),
         }
     }
 
     /// Whether it runs in the drawing worker.
     pub fn in_worker(&self) -> bool {
-        matches!(self, ViewLink::Worker(_))
+        matches!(self, ViewerHandle::Worker(_))
     }
 
     /// Asks the viewer `command`.
     pub fn command(&mut self, command: ViewCommand) {
         match self {
-            ViewLink::Here(viewer) => viewer.command(command),
-            ViewLink::Worker(w) => w.command(&command),
+            ViewerHandle::Here(viewer) => viewer.command(command),
+            ViewerHandle::Worker(w) => w.command(&command),
         }
     }
 
@@ -268,8 +268,8 @@ impl ViewLink {
     /// shown as the page's own).
     pub fn survive(&mut self) -> Device {
         match self {
-            ViewLink::Here(viewer) => viewer.survive(),
-            ViewLink::Worker(w) => {
+            ViewerHandle::Here(viewer) => viewer.survive(),
+            ViewerHandle::Worker(w) => {
                 let mut inbox = w.inbox.borrow_mut();
                 if let Some(e) = inbox.error.take() {
                     inbox.devices.push_back(Device::Gone(e));
@@ -304,7 +304,7 @@ impl ViewLink {
     /// Whether the viewer panicked in its worker: the page then shows the panic's message, as
     /// its own panic would, and does nothing more (the page's thread cannot panic with it).
     pub fn crashed(&mut self) -> bool {
-        let ViewLink::Worker(w) = self else {
+        let ViewerHandle::Worker(w) = self else {
             return false;
         };
         if w.crashed {
@@ -327,7 +327,7 @@ impl ViewLink {
     /// Ends the page's frame: a viewer in a worker runs its own on it, after the commands the
     /// page's frame sent.
     pub fn tick(&mut self) {
-        if let ViewLink::Worker(w) = self {
+        if let ViewerHandle::Worker(w) = self {
             if !w.ticked {
                 w.ticked = true;
                 w.inbox.borrow_mut().heard = now();
@@ -342,8 +342,8 @@ impl ViewLink {
     /// it is on the page's thread, handed over to a drawing worker.
     pub fn give_canvas(&mut self, element: HtmlCanvasElement) -> Result<(), String> {
         match self {
-            ViewLink::Here(viewer) => viewer.give_canvas(Canvas::Element(element)),
-            ViewLink::Worker(w) => {
+            ViewerHandle::Here(viewer) => viewer.give_canvas(Canvas::Element(element)),
+            ViewerHandle::Worker(w) => {
                 let canvas = hand_over(&element)?;
                 let message = js_sys::Object::new();
                 let _ = Reflect::set(&message, &"canvas".into(), &canvas);
@@ -358,11 +358,11 @@ impl ViewLink {
     /// show when its renderer failed.
     pub fn frames(&mut self) -> Result<Taken, String> {
         match self {
-            ViewLink::Here(viewer) => Ok(Taken {
+            ViewerHandle::Here(viewer) => Ok(Taken {
                 frames: vec![viewer.run_frame()?],
                 ..Taken::default()
             }),
-            ViewLink::Worker(w) => {
+            ViewerHandle::Worker(w) => {
                 let mut taken = Taken::default();
                 let mut inbox = w.inbox.borrow_mut();
                 if !inbox.news.is_empty() {
@@ -405,15 +405,17 @@ impl ViewLink {
     /// viewer in a worker has a pool of its own). Fails with the words to show.
     pub fn take(&mut self, request: &Request, reply: Reply) -> Result<(), String> {
         match self {
-            ViewLink::Here(viewer) => viewer.take(request, reply).inspect_err(|_| viewer.unload()),
-            ViewLink::Worker(_) => Ok(()),
+            ViewerHandle::Here(viewer) => {
+                viewer.take(request, reply).inspect_err(|_| viewer.unload())
+            }
+            ViewerHandle::Worker(_) => Ok(()),
         }
     }
 
     /// The page's pool replaced the worker holding the viewer's sessions (on the page's
     /// thread).
     pub fn resume(&mut self, lost: Vec<Request>) {
-        if let ViewLink::Here(viewer) = self {
+        if let ViewerHandle::Here(viewer) = self {
             viewer.resume(lost);
         }
     }
@@ -421,8 +423,8 @@ impl ViewLink {
     /// Test-only (see `debug.rs`): takes the viewer's graphics device away.
     pub fn take_device(&self, loss: Loss) -> Result<(), String> {
         match self {
-            ViewLink::Here(viewer) => viewer.take_device(loss),
-            ViewLink::Worker(w) => {
+            ViewerHandle::Here(viewer) => viewer.take_device(loss),
+            ViewerHandle::Worker(w) => {
                 match loss {
                     Loss::Destroy => w.debug("destroy", None),
                     Loss::Context { restore_after_ms } => w.debug("lose", restore_after_ms),
@@ -436,7 +438,7 @@ impl ViewLink {
     /// while growing, a worker that throws on a preview's rows) to a drawing worker; on the
     /// page's thread the hook has acted already.
     pub fn forward_debug(&self, ask: &str) {
-        if let ViewLink::Worker(w) = self {
+        if let ViewerHandle::Worker(w) = self {
             w.debug(ask, None);
         }
     }
