@@ -104,7 +104,7 @@ fn growth_stops_at_the_threshold_and_nowhere_else() {
     for id in PRESETS {
         let (spec, tree) = tree(id);
         let s = spec.trunk.slenderness;
-        let threshold = spec.stop * s * spec.trunk.diameter;
+        let threshold = spec.pixel();
         for seg in &tree.segments {
             assert!(
                 seg.height >= threshold,
@@ -177,8 +177,8 @@ fn branch_statistics(tree: &BranchingTree) -> (usize, f64) {
 #[test]
 fn narrower_limits_give_more_and_shorter_branches() {
     let (mut spec, seed) = form("kawaguchi-tendril");
-    // A fine stop size, so that the thin branches of narrow knots are not cut by rule 8.
-    spec.stop = 0.01;
+    // A fine picture, so that the thin branches of narrow knots are not cut by rule 8.
+    spec.pixels = 4096;
     let wide = BranchingTree::new(&spec, seed).unwrap();
     (spec.knot.k0, spec.knot.k1) = (-5.0, 5.0);
     spec.knot.beta = 3.0;
@@ -376,11 +376,11 @@ fn bad_parameters_get_messages_that_name_them() {
                 .to_string(),
         ),
         (
-            "form.stop=0",
-            "form.stop: 0 is outside the range 0.001 to 1".to_string(),
+            "form.pixels=0",
+            "form.pixels: 0 is outside the range 64 to 4096".to_string(),
         ),
         (
-            "form.knots=400&form.depth=12&form.branches.every=1&form.branches.count=24&form.stop=0.001",
+            "form.knots=400&form.depth=12&form.branches.every=1&form.branches.count=24&form.pixels=4096",
             format!("cap of {MAX_SEGMENTS} trunks"),
         ),
     ];
@@ -394,10 +394,10 @@ fn bad_parameters_get_messages_that_name_them() {
         Generator::new(&decoded.spec).unwrap_or_else(|e| panic!("{change}: {e}"));
     }
     let (mut spec, seed) = form("kawaguchi-coral");
-    spec.stop = 0.0;
+    spec.pixels = 0;
     let e = BranchingTree::new(&spec, seed).err().expect("refused");
-    assert_eq!(e.key, "form.stop");
-    assert!(e.message.contains("the stop size must be above 0"), "{e}");
+    assert_eq!(e.key, "form.pixels");
+    assert!(e.message.contains("at least one pixel"), "{e}");
 }
 
 /// The main stem's coil seen from above: the horizontal turn of each trunk's axis from the one
@@ -552,6 +552,68 @@ fn a_standing_trunk_stands_upright_whatever_its_knots() {
         match spec.stand {
             Stand::Trunk => assert!(lean < 1e-12, "{id}: the first trunk leans {lean}"),
             Stand::Coil => assert!(lean > 0.1, "{id}: the first trunk leans {lean}"),
+        }
+    }
+}
+
+/// Rule 8 counts pixels: the stop height is the first branch's reach over the picture's
+/// pixels, so a picture twice as large halves it, and a link of the old stop fraction opens at
+/// the picture whose pixel is that height, saying so.
+#[test]
+fn rule_8_stops_at_one_pixel_and_an_old_stop_size_reads_as_its_picture() {
+    let (mut spec, seed) = form("kawaguchi-tendril");
+    let reach: f64 = (0..spec.knots)
+        .map(|i| spec.trunk.taper.powi(i as i32))
+        .sum::<f64>()
+        * spec.trunk.slenderness
+        * spec.trunk.diameter;
+    assert!((spec.pixel() * f64::from(spec.pixels) - reach).abs() < 1e-9 * reach);
+    let small = BranchingTree::new(&spec, seed).unwrap().segments.len();
+    spec.pixels *= 4;
+    let large = BranchingTree::new(&spec, seed).unwrap().segments.len();
+    assert!(
+        large > small,
+        "{small} trunks, then {large} at 4× the pixels"
+    );
+
+    let h0 = spec.trunk.slenderness * spec.trunk.diameter;
+    let decoded = decode("v=1&preset=kawaguchi-tendril&form.stop=0.08");
+    let said: Vec<String> = decoded.problems.iter().map(ToString::to_string).collect();
+    assert_eq!(said.len(), 1, "{said:?}");
+    assert!(
+        said[0].starts_with("form.stop: links made before rule 8 counted pixels"),
+        "{said:?}"
+    );
+    let Form::Branching(read) = &decoded.spec.form else {
+        panic!("a branching form")
+    };
+    assert!(
+        (read.pixel() / h0 - 0.08).abs() < 0.08 / f64::from(read.pixels),
+        "{}",
+        read.pixels
+    );
+    // Beyond the range, the nearest picture; beside form.pixels, ignored; elsewhere, not a key.
+    for (link, expected, pixels) in [
+        (
+            "v=1&preset=kawaguchi-tendril&form.stop=0.9",
+            "the nearest",
+            Some(64),
+        ),
+        (
+            "v=1&preset=kawaguchi-tendril&form.stop=0.9&form.pixels=700",
+            "ignored",
+            Some(700),
+        ),
+        ("v=1&preset=turbinate&form.stop=0.1", "is not a key", None),
+    ] {
+        let decoded = decode(link);
+        let said = decoded.problems[0].to_string();
+        assert!(
+            said.starts_with("form.stop") && said.contains(expected),
+            "{link}: {said}"
+        );
+        if let Form::Branching(read) = &decoded.spec.form {
+            assert_eq!(Some(read.pixels), pixels, "{link}");
         }
     }
 }

@@ -94,6 +94,32 @@ fn an_implicit_whorl_exports_as_a_watertight_stl_at_the_resolution_asked() {
     assert!(n96 > 3 * n48 && n48 > 10_000, "{n48} then {n96}");
 }
 
+/// Rule 8 stops a branch under one pixel of the picture: a branching form exported for a
+/// picture of more pixels grows finer tips, so more trunks.
+#[test]
+fn a_branching_form_exported_at_more_pixels_grows_further() {
+    let triangles = |pixels: &str| {
+        let out = temp(&format!("tendril-{pixels}.stl"));
+        let result = run(&[
+            "mesh",
+            "--preset",
+            "kawaguchi-tendril",
+            "--resolution",
+            pixels,
+            "--out",
+            &out,
+        ]);
+        assert!(
+            result.status.success(),
+            "{}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+        common::watertight_stl_triangles(&std::fs::read(&out).unwrap())
+    };
+    let (small, large) = (triangles("128"), triangles("2048"));
+    assert!(large > small + small / 4, "{small} then {large}");
+}
+
 #[test]
 fn mesh_takes_a_link_in_place_of_a_preset() {
     let out = temp("linked.stl");

@@ -268,7 +268,7 @@ pub const CHAMBERS: &[Field] = &[
 pub const BRANCHING: &[Field] = &[
     f("form.knots", Shape, "", "most trunks per branch", int(1, 400)),
     f("form.depth", Shape, "", "most generations of branches on branches", int(0, 12)),
-    f("form.stop", Shape, "", "stop size: fraction of the first trunk's height (rule 8)", log(0.001, 1.0)),
+    f("form.pixels", Shape, "px", "picture size in pixels: a branch stops under one (rule 8)", int(64, 4096)),
     f("form.jitter", Shape, "", "random turn of rolls and branch angles (degrees)", real(0.0, 90.0)),
     f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
     f("form.stand", Shape, "", "upright: the first trunk or the coil's axis", Kind::Choice(&["trunk", "coil"])),

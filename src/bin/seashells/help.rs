@@ -36,7 +36,9 @@ Grows the shell to its end and writes its mesh in the format of FILE's extension
 binary, with its pattern as a texture), .ply and .3mf (colour per vertex), .obj, .stl. Prints the
 mesh's vertex and triangle counts and hash (as the page shows them) and the file's bytes.
   --format EXT       glb, ply, 3mf, obj or stl when FILE has no extension (--out - for stdout)
-  --resolution N     the polygonization grid of an implicit shell (the Murex), N³ voxels
+  --resolution N     the polygonization grid of an implicit shell (the Murex), N³ voxels; or
+                     the picture a branching form is grown for, N pixels across (64 to 4096):
+                     rule 8 stops a branch under one pixel, so more pixels grow finer tips
   --size MM          the largest side of a .glb or .3mf shell's box in millimetres, 5 to 500
                      (80 unless given): its height, or its length where it lies longer
   --size-axis x|y|z  make --size the box's side along x (across), y (front to back) or z (up,

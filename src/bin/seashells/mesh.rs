@@ -61,11 +61,20 @@ pub fn mesh(args: &[String]) -> Result<(), Failure> {
     let out = Out::new(options.required("out")?);
     let format = format(&options, &out)?;
     let (preset, mut spec) = options.preset_and_spec()?;
-    if let Some(n) = options.count("resolution", &spec, "form.resolution")? {
-        let Form::Implicit(implicit) = &mut spec.form else {
-            return Err("--resolution applies to implicit shells only".into());
-        };
-        implicit.resolution = n;
+    let key = match spec.form {
+        Form::Branching(_) => "form.pixels",
+        _ => "form.resolution",
+    };
+    if let Some(n) = options.count("resolution", &spec, key)? {
+        match &mut spec.form {
+            Form::Implicit(implicit) => implicit.resolution = n,
+            Form::Branching(branching) => branching.pixels = n,
+            _ => {
+                return Err(
+                    "--resolution applies to implicit shells and branching forms only".into(),
+                );
+            }
+        }
     }
     let size = size(&options, format)?;
     let generator = grown(&spec)?;

@@ -17,9 +17,11 @@ pub struct BranchingSpec {
     pub knots: u32,
     /// Most generations of branches on branches.
     pub depth: u32,
-    /// Rule 8: a branch stops when its next trunk's height would fall below this fraction of
-    /// the first trunk's height (Kawaguchi's "smaller than one pixel").
-    pub stop: f64,
+    /// Rule 8, "when the height of a branch or knot becomes smaller than one pixel, the branch
+    /// stops growing": the size of the picture the form is grown for, in pixels across. A
+    /// branch stops when its next trunk would be lower than [`BranchingSpec::pixel`]. A
+    /// picture of more pixels (an export, `seashells mesh --resolution`) grows finer tips.
+    pub pixels: u32,
     /// Random turn of every knot's roll and every branch's angle, up to ± this many degrees,
     /// drawn from the spec's seed (0: none).
     pub jitter: f64,
@@ -29,6 +31,27 @@ pub struct BranchingSpec {
     /// What stands upright: the first trunk, or the axis of the coil its knots wind.
     #[serde(default)]
     pub stand: Stand,
+}
+
+impl BranchingSpec {
+    /// One pixel of a picture [`pixels`](Self::pixels) across that frames the whole form: the
+    /// first branch's reach (its trunks' heights summed, as if it grew every knot; no branch
+    /// reaches further, and bent it reaches less) over the pixels. So rule 8 never stops a
+    /// tip that such a picture would show a pixel high, and a form keeps its look at any size.
+    pub fn pixel(&self) -> f64 {
+        let first = self.trunk.slenderness * self.trunk.diameter;
+        first * reach_in_first_heights(self.knots, self.trunk.taper) / f64::from(self.pixels)
+    }
+}
+
+/// The reach of a branch of `knots` trunks, each `taper` times the one before, in heights of
+/// its first trunk: 1 + t + t² + … + t^(knots−1) (libm's power, the same bits in wasm).
+pub fn reach_in_first_heights(knots: u32, taper: f64) -> f64 {
+    if taper == 1.0 {
+        f64::from(knots)
+    } else {
+        (1.0 - libm::pow(taper, f64::from(knots))) / (1.0 - taper)
+    }
 }
 
 /// What of a branching form stands upright (along the display's up).

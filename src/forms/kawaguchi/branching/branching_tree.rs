@@ -126,7 +126,7 @@ impl BranchingTree {
         let mut noise = Noise::new(seed, JITTER_STREAM);
         let mut jitter = move || spec.jitter * noise.signed();
         let s = spec.trunk.slenderness;
-        let threshold = spec.stop * s * spec.trunk.diameter;
+        let threshold = spec.pixel();
         let root = Base {
             centre: DVec3::ZERO,
             axes: first_axes(spec),
@@ -152,7 +152,7 @@ impl BranchingTree {
                 return Err(ShapeError::new(
                     "form.knots",
                     format!(
-                        "the form would have more than the cap of {MAX_SEGMENTS} trunks; lower the knots per branch, the depth or the branch count, or raise the stop size"
+                        "the form would have more than the cap of {MAX_SEGMENTS} trunks; lower the knots per branch, the depth, the branch count or the picture's pixels"
                     ),
                 ));
             }
@@ -311,7 +311,6 @@ fn check(spec: &BranchingSpec) -> Result<(), ShapeError> {
         ("form.trunk.diameter", "the diameter D₀", t.diameter),
         ("form.trunk.slenderness", "S = H/D", t.slenderness),
         ("form.trunk.taper", "the taper", t.taper),
-        ("form.stop", "the stop size", spec.stop),
     ];
     for (key, what, x) in positive {
         if !(x > 0.0 && x.is_finite()) {
@@ -320,6 +319,12 @@ fn check(spec: &BranchingSpec) -> Result<(), ShapeError> {
                 format!("{what} must be above 0, not {x}"),
             ));
         }
+    }
+    if spec.pixels == 0 {
+        return Err(ShapeError::new(
+            "form.pixels",
+            "rule 8 needs a picture of at least one pixel",
+        ));
     }
     if t.sides < 3 {
         return Err(ShapeError::new(
