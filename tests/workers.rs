@@ -15,6 +15,7 @@ use seashells_core::presets::preset;
 use seashells_core::share::link;
 use seashells_core::share::parameter_map::{Axis, ParameterMap, SIDE};
 use seashells_core::spec::ShellSpec;
+use seashells_core::work::growth_session::{GrowthSession, Took};
 use seashells_core::work::host::{Budget, Host};
 use seashells_core::work::message::{
     Delta, Progress, Reply, Request, decode_reply, decode_request, encode_reply, encode_request,
@@ -120,8 +121,9 @@ fn link_of(id: &str, extra: &str) -> (String, ShellSpec) {
 }
 
 /// The page's copy of a shell grown in `grows` requests of `rows` rows each (with a budget
-/// of a few milliseconds), then finished apart by the pool; the worker holding the session
-/// dies after `kill_after` requests, and a job's worker once while pieces are made, if asked.
+/// of a few milliseconds), then finished apart by the pool, by the viewer's own
+/// [`GrowthSession`]; the worker holding the session dies after `kill_after` requests, and a
+/// job's worker once while pieces are made, if asked.
 fn grow_and_finish(
     page: &mut Page,
     link: &str,
@@ -129,36 +131,22 @@ fn grow_and_finish(
     rows: u32,
     kill_after: Option<usize>,
     kill_a_job: bool,
-) -> Replica {
-    let session = 1;
-    page.pool.submit(Request::Load {
-        session,
-        link: link.into(),
-    });
-    let mut replica = Replica::new(session);
+) -> GrowthSession {
+    let mut growth = GrowthSession::load(1, link.into(), &mut |r| page.pool.submit(r));
     let mut grown = 0;
     let mut finish_sent = false;
     let mut killed_job = false;
     loop {
-        if grown < grows && page.pool.in_flight() == 0 && replica.shell().is_some() {
+        if grown < grows && page.pool.in_flight() == 0 && growth.replica().shell().is_some() {
             if kill_after == Some(grown) {
                 let lost = page.kill(0);
                 assert!(lost.is_empty(), "nothing was in flight");
-                page.pool.submit(Request::Resume {
-                    session,
-                    link: link.into(),
-                    rows: replica.rows_done() as u32,
-                    steps: replica.steps_done() as u32,
-                });
+                growth.resume(&lost, &mut |r| page.pool.submit(r));
             }
-            page.pool.submit(Request::Grow {
-                session,
-                rows,
-                budget_ms: 4.0,
-            });
+            assert!(growth.grow(rows, 4.0, &mut |r| page.pool.submit(r)));
             grown += 1;
         } else if grown == grows && !finish_sent && page.pool.in_flight() == 0 {
-            page.pool.submit(Request::Finish { session });
+            assert!(growth.finish(&mut |r| page.pool.submit(r)));
             finish_sent = true;
         }
         if kill_a_job && !killed_job && page.pool.busy_with_jobs() && page.pool.size() > 1 {
@@ -169,53 +157,23 @@ fn grow_and_finish(
         let Some((request, reply)) = page.next_reply() else {
             break;
         };
-        match reply {
-            Reply::Loaded { shell, delta, .. } => {
-                let room = shell.capacity;
-                replica.loaded(shell, delta).expect("in step");
+        let took = growth.take(&request, reply, &mut |r| page.pool.submit(r));
+        match took.expect("in step") {
+            Took::Loaded(shell, _) => {
                 // The page's copy takes the room the shape expects at once: no frame of
                 // growth copies the whole mesh into a larger one.
+                let (room, replica) = (shell.capacity, growth.replica());
                 assert!(replica.mesh().vertices.capacity() >= room.0.vertices);
                 assert!(replica.mesh().indices.capacity() >= room.0.indices);
                 assert!(replica.edge().mesh().vertices.capacity() >= room.1.vertices);
             }
-            Reply::Grew { delta, .. } => {
-                replica.apply(delta).expect("in step");
-            }
-            Reply::Resumed {
-                vertices, indices, ..
-            } => {
-                assert_eq!(vertices as usize, replica.mesh().vertices.len());
-                assert_eq!(indices as usize, replica.mesh().indices.len());
-            }
-            Reply::Apart {
-                delta,
-                pieces,
-                hash,
-                ..
-            } => {
-                for (group, ids) in pieces.groups.iter().enumerate() {
-                    page.pool.submit(Request::Pieces {
-                        job: group as u32,
-                        link: link.into(),
-                        step: pieces.step,
-                        ids: ids.clone(),
-                    });
-                }
-                replica.apart(delta, pieces, hash).expect("in step");
-            }
-            Reply::Made { job, meshes, hash } => {
-                let Request::Pieces { job: asked, .. } = request else {
-                    panic!("pieces answer a request for pieces");
-                };
-                assert_eq!(job, asked);
-                replica.made(job as usize, meshes, hash);
-            }
-            other => panic!("unexpected {other:?}"),
+            Took::Previewed(reply) => panic!("unexpected {reply:?}"),
+            Took::Advanced(_) | Took::Nothing => {}
         }
     }
-    assert!(replica.is_done(), "the shell is grown");
-    replica
+    assert!(growth.settled(), "every request of the session is answered");
+    assert!(growth.replica().is_done(), "the shell is grown");
+    growth
 }
 
 /// The shell of `spec` grown alone: `grows` calls of `rows` rows, then finished.
@@ -235,7 +193,8 @@ fn a_murex_finished_by_one_two_or_four_workers_is_the_same_bit_for_bit() {
     for size in [1, 2, 4] {
         for (grows, budget) in [(0, None), (5, Some(3.0))] {
             let mut page = Page::new(size, budget, size * 7 + grows);
-            let replica = grow_and_finish(&mut page, &link, grows, 40, None, false);
+            let growth = grow_and_finish(&mut page, &link, grows, 40, None, false);
+            let replica = growth.replica();
             let what = format!("{size} workers, {grows} requests before Finish, budget {budget:?}");
             assert_eq!(replica.mesh(), reference.mesh(), "{what}");
             assert!(replica.edge().is_empty(), "{what}");
@@ -278,7 +237,8 @@ fn the_murexs_files_from_one_two_or_four_workers_are_the_command_lines_bit_for_b
     let expected = files(|| Shell::new(&reference, &spec, preset, size()).unwrap());
     for workers in [1, 2, 4] {
         let mut page = Page::new(workers, Some(2.0), workers);
-        let replica = grow_and_finish(&mut page, &link, 0, 0, None, false);
+        let growth = grow_and_finish(&mut page, &link, 0, 0, None, false);
+        let replica = growth.replica();
         let made =
             files(|| Shell::of(replica.for_export().unwrap(), &spec, preset, size()).unwrap());
         assert!(made == expected, "the files made with {workers} workers");
@@ -294,7 +254,8 @@ fn grown_in_requests_the_shell_is_the_one_grown_alone() {
     ] {
         let (link, spec) = link_of(id, extra);
         let mut page = Page::new(2, Some(2.0), 3);
-        let replica = grow_and_finish(&mut page, &link, 30, 7, None, false);
+        let growth = grow_and_finish(&mut page, &link, 30, 7, None, false);
+        let replica = growth.replica();
         let reference = alone(&spec, 30, 7);
         assert_eq!(
             replica.snapshot().content_hash(),
@@ -317,7 +278,8 @@ fn a_worker_that_dies_is_replaced_and_its_work_done_again_to_the_same_bits() {
     // The session's worker dies after a third of the growth; a job's worker while pieces are
     // made.
     let mut page = Page::new(3, Some(3.0), 5);
-    let replica = grow_and_finish(&mut page, &link, 12, 20, Some(4), true);
+    let growth = grow_and_finish(&mut page, &link, 12, 20, Some(4), true);
+    let replica = growth.replica();
     assert_eq!(page.pool.deaths(), 2);
     assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()));
     assert_eq!(

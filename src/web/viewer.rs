@@ -37,6 +37,7 @@ use crate::view::playback::{Playback, growth_budget};
 use crate::view::preview::PreviewState;
 use crate::view::recording::FrameAsk;
 use crate::work::file_writer::{FileStage, FileWriter, Needs, Source};
+use crate::work::growth_session::{GrowthSession, Took};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::planar_update::PlanarUpdate;
 use crate::work::replica::Replica;
@@ -50,10 +51,8 @@ use std::rc::Rc;
 struct Growing {
     preset: &'static Preset,
     spec: ShellSpec,
-    /// The link its worker grows it from (in the material it was loaded with: a restyle does
-    /// not change what the worker grows).
-    link: String,
-    replica: Replica,
+    /// The worker's session growing it, and the page's copy of it.
+    growth: GrowthSession,
     camera: OrbitCamera,
     /// Whether the planar view shows a pattern (this shell's, or the one previewed).
     planar_open: bool,
@@ -62,10 +61,6 @@ struct Growing {
     /// The pattern of values being dragged, computed by a worker and shown in the planar
     /// view while growth waits.
     preview: Option<Previewing>,
-    /// Requests of this shell's session sent and not yet answered.
-    pending: usize,
-    /// Whether growth to the end was asked for.
-    finishing: bool,
 }
 
 impl Growing {
@@ -74,7 +69,7 @@ impl Growing {
         activity::set(format!(
             "growing {}, row {}",
             self.preset.id,
-            self.replica.rows_done() + 1
+            self.growth.replica().rows_done() + 1
         ));
         debug::panic_if_asked();
     }
@@ -102,12 +97,12 @@ impl Growing {
 
     /// Whether the view rests on what has grown (or where the user left it).
     fn view_at_rest(&self) -> bool {
-        self.camera.settled(self.replica.grown())
+        self.camera.settled(self.growth.replica().grown())
     }
 
     /// The panes of `layout` on a canvas of aspect `aspect`.
     fn panes(&self, layout: Layout, aspect: f32) -> Vec<Pane> {
-        panes(layout, &self.camera, self.replica.grown(), aspect)
+        panes(layout, &self.camera, self.growth.replica().grown(), aspect)
     }
 
     /// What a file of it is written from.
@@ -115,13 +110,8 @@ impl Growing {
         Source {
             preset: self.preset,
             spec: &self.spec,
-            replica: &self.replica,
+            replica: self.growth.replica(),
         }
-    }
-
-    /// Whether the shell stands where its worker left it, nothing asked of it unanswered.
-    fn settled(&self) -> bool {
-        self.pending == 0 && self.replica.shell().is_some()
     }
 }
 
@@ -399,10 +389,7 @@ impl Viewer {
         let link = link::encode(preset, spec);
         let mut workers = self.workers.borrow_mut();
         workers.cancel(|r| matches!(r, Request::Pieces { .. }));
-        workers.submit(Request::Load {
-            session: self.session,
-            link: link.clone(),
-        });
+        let growth = GrowthSession::load(self.session, link, &mut |r| workers.submit(r));
         self.playback.restart(spec.growth.speed);
         self.owed = 0;
         // Framed on a unit box until the worker says what the shell is.
@@ -413,14 +400,11 @@ impl Viewer {
         self.growing = Some(Growing {
             preset,
             spec: spec.clone(),
-            link,
-            replica: Replica::new(self.session),
+            growth,
             camera: OrbitCamera::framing(&placeholder, DVec3::Z, 0.0, 0.0),
             planar_open: false,
             planar_size: None,
             preview: None,
-            pending: 1,
-            finishing: false,
         });
         self.dirty = true;
     }
@@ -430,7 +414,7 @@ impl Viewer {
     fn restyle(&mut self, spec: &ShellSpec) {
         let Some(g) = &mut self.growing else { return };
         g.spec.material = spec.material.clone();
-        if let (Some(d), Some(shell)) = (&mut self.drawing, g.replica.shell()) {
+        if let (Some(d), Some(shell)) = (&mut self.drawing, g.growth.replica().shell()) {
             d.renderer.set_look(g.look(shell));
         }
         self.dirty = true;
@@ -445,14 +429,11 @@ impl Viewer {
         self.growing = Some(Growing {
             preset,
             spec: spec.clone(),
-            link: String::new(),
-            replica,
+            growth: GrowthSession::whole(replica),
             camera: OrbitCamera::framing(&shell.bounds, shell.front, 0.0, 0.0),
             planar_open: false,
             planar_size: None,
             preview: None,
-            pending: 0,
-            finishing: false,
         });
         self.loaded(shell, everything);
     }
@@ -466,7 +447,7 @@ impl Viewer {
         if let Some(d) = &mut self.drawing {
             g.load_into(&mut d.renderer, &shell);
         }
-        let grown = *g.replica.grown();
+        let grown = *g.growth.replica().grown();
         let mut camera = OrbitCamera::framing(
             &shell.bounds,
             shell.front,
@@ -490,83 +471,18 @@ impl Viewer {
         let Some(g) = &mut self.growing else {
             return Ok(());
         };
-        let session = g.replica.session();
-        let ours = |s: u32| s == session;
-        let advance = match reply {
-            Reply::Loaded {
-                session,
-                shell,
-                delta,
-            } if ours(session) => {
-                g.pending -= 1;
-                let advance = g
-                    .replica
-                    .loaded(shell.clone(), delta)
-                    .map_err(|e| e.to_string())?;
-                self.loaded(shell, advance);
-                self.dirty = true;
-                return Ok(());
-            }
-            Reply::Refused { session, message } if ours(session) => return Err(message),
-            Reply::Grew { session, delta } if ours(session) => {
-                g.pending -= 1;
-                g.replica.apply(delta).map_err(|e| e.to_string())?
-            }
-            Reply::Apart {
-                session,
-                delta,
-                pieces,
-                hash,
-            } if ours(session) => {
-                g.pending -= 1;
-                let mut workers = self.workers.borrow_mut();
-                for (group, ids) in pieces.groups.iter().enumerate() {
-                    workers.submit(Request::Pieces {
-                        job: group as u32,
-                        link: g.link.clone(),
-                        step: pieces.step,
-                        ids: ids.clone(),
-                    });
-                }
-                g.replica
-                    .apart(delta, pieces, hash)
-                    .map_err(|e| e.to_string())?
-            }
-            Reply::Resumed {
-                session,
-                vertices,
-                indices,
-            } if ours(session) => {
-                g.pending -= 1;
-                let mesh = g.replica.mesh();
-                if (vertices as usize, indices as usize)
-                    != (mesh.vertices.len(), mesh.indices.len())
-                {
-                    return Err("a worker grew the shell again to another mesh".into());
-                }
-                return Ok(());
-            }
-            reply @ Reply::Previewed { .. } => {
+        let mut workers = self.workers.borrow_mut();
+        let took = g.growth.take(request, reply, &mut |r| workers.submit(r))?;
+        drop(workers);
+        match took {
+            Took::Nothing => return Ok(()),
+            Took::Loaded(shell, advance) => self.loaded(shell, advance),
+            Took::Advanced(advance) => self.upload(&advance),
+            Took::Previewed(reply) => {
                 let rows = g.spec.growth.rows;
                 self.previewed(reply, rows);
-                self.dirty = true;
-                return Ok(());
             }
-            Reply::Made { job, meshes, hash } => {
-                let Request::Pieces { link, .. } = request else {
-                    return Ok(());
-                };
-                if *link != g.link {
-                    return Ok(());
-                }
-                match g.replica.made(job as usize, meshes, hash) {
-                    Some(advance) => advance,
-                    None => return Ok(()),
-                }
-            }
-            _ => return Ok(()),
-        };
-        self.upload(&advance);
+        }
         self.dirty = true;
         Ok(())
     }
@@ -576,7 +492,6 @@ impl Viewer {
     /// previewed again from its first row, and what was lost asked again.
     pub fn resume(&mut self, lost: Vec<Request>) {
         let Some(g) = &mut self.growing else { return };
-        let session = g.replica.session();
         let mut workers = self.workers.borrow_mut();
         if let Some(p) = &mut g.preview
             && p.state == PreviewState::Filling
@@ -587,33 +502,12 @@ impl Viewer {
             });
             p.pending = true;
         }
-        g.pending = 0;
-        if g.replica.shell().is_none() {
-            workers.submit(Request::Load {
-                session,
-                link: g.link.clone(),
-            });
-            g.pending = 1;
-        } else if g.replica.pieces().is_none() && !g.replica.is_done() {
-            workers.submit(Request::Resume {
-                session,
-                link: g.link.clone(),
-                rows: g.replica.rows_done() as u32,
-                steps: g.replica.steps_done() as u32,
-            });
-            g.pending = 1;
-        } else {
-            return;
-        }
-        if lost.iter().any(|r| matches!(r, Request::Finish { .. })) || g.finishing {
-            workers.submit(Request::Finish { session });
-            g.pending += 1;
-        }
+        g.growth.resume(&lost, &mut |r| workers.submit(r));
     }
 
     fn upload(&mut self, advance: &Advance) {
         let Some(g) = &mut self.growing else { return };
-        let replica = &g.replica;
+        let replica = g.growth.replica();
         let row = replica.cells() * 4;
         let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
         if let Some(d) = &mut self.drawing {
@@ -703,7 +597,7 @@ impl Viewer {
         g.planar_open = g.planar_size.is_some();
         self.planar_updates.push(PlanarUpdate::Open(g.planar_size));
         if g.planar_open {
-            let replica = &g.replica;
+            let replica = g.growth.replica();
             self.planar_updates.extend([
                 PlanarUpdate::Rows {
                     first: 0,
@@ -719,7 +613,7 @@ impl Viewer {
         let Some(g) = &self.growing else {
             return ViewStatus::default();
         };
-        let r = &g.replica;
+        let r = g.growth.replica();
         let (mesh, edge) = (r.mesh(), r.edge());
         ViewStatus {
             shell: r.shell().map(|_| ShellStatus {
@@ -727,7 +621,7 @@ impl Viewer {
                 rows_done: r.rows_done(),
                 rows: r.rows(),
                 done: r.is_done(),
-                settled: g.settled(),
+                settled: g.growth.settled(),
                 at_rest: g.view_at_rest(),
                 failure: r.failure().map(str::to_string),
                 pattern_hash: r.pattern_hash(),
@@ -811,9 +705,9 @@ impl Viewer {
         renderer.set_background(self.background);
         let drawing = self.drawing.insert(Drawing::new(renderer, canvas));
         let everything = self.growing.as_ref().and_then(|g| {
-            let shell = g.replica.shell()?;
+            let shell = g.growth.replica().shell()?;
             g.load_into(&mut drawing.renderer, shell);
-            Some(g.replica.everything())
+            Some(g.growth.replica().everything())
         });
         if let Some(everything) = everything {
             self.upload(&everything);
@@ -847,16 +741,13 @@ impl Viewer {
     fn grow(&mut self, rows: usize, budget_ms: f64) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
-        if g.finishing || g.replica.is_done() {
+        if !g.growth.grows_on() {
             return;
         }
         g.note_activity();
-        self.workers.borrow_mut().submit(Request::Grow {
-            session: g.replica.session(),
-            rows: u32::try_from(rows).unwrap_or(u32::MAX),
-            budget_ms,
-        });
-        g.pending += 1;
+        let rows = u32::try_from(rows).unwrap_or(u32::MAX);
+        let mut workers = self.workers.borrow_mut();
+        g.growth.grow(rows, budget_ms, &mut |r| workers.submit(r));
     }
 
     /// Asks the shell's worker to grow the rest of the shell at once (what splits is shared
@@ -864,15 +755,12 @@ impl Viewer {
     fn finish(&mut self) {
         self.end_preview();
         let Some(g) = &mut self.growing else { return };
-        if g.finishing || g.replica.is_done() {
+        if !g.growth.grows_on() {
             return;
         }
         g.note_activity();
-        self.workers.borrow_mut().submit(Request::Finish {
-            session: g.replica.session(),
-        });
-        g.pending += 1;
-        g.finishing = true;
+        let mut workers = self.workers.borrow_mut();
+        g.growth.finish(&mut |r| workers.submit(r));
     }
 
     /// Keeps the drawing buffer at the canvas's size in device pixels (its size as the page
@@ -944,13 +832,15 @@ impl Viewer {
             preview.pending = true;
         }
         let growing = self.growing.as_ref().is_some_and(|g| {
-            g.replica.shell().is_some() && !g.replica.is_done() && g.preview.is_none()
+            g.growth.replica().shell().is_some()
+                && !g.growth.replica().is_done()
+                && g.preview.is_none()
         });
         if growing && self.playback.playing {
             // The rows of frames that pass while the worker is busy add up, and are asked for
             // together once it has answered: growth keeps the speed it has on the page's thread.
             self.owed += self.playback.rows_this_frame();
-            let settled = self.growing.as_ref().is_some_and(Growing::settled);
+            let settled = self.growing.as_ref().is_some_and(|g| g.growth.settled());
             if settled && self.owed > 0 {
                 let rows = std::mem::take(&mut self.owed);
                 let frame = growth_budget(budget_ms, now() - self.last_frame);
@@ -964,7 +854,7 @@ impl Viewer {
         let dt = ((time - self.last_frame) / 1000.0) as f32;
         self.last_frame = time;
         if let Some(g) = &mut self.growing
-            && g.camera.follow(g.replica.grown(), dt)
+            && g.camera.follow(g.growth.replica().grown(), dt)
         {
             self.dirty = true;
         }
@@ -975,7 +865,7 @@ impl Viewer {
         let Some(g) = self
             .growing
             .as_ref()
-            .filter(|g| g.replica.shell().is_some())
+            .filter(|g| g.growth.replica().shell().is_some())
         else {
             return Ok(false);
         };
@@ -1098,10 +988,10 @@ impl Viewer {
             self.recorded = Some(Err("no shell is loaded".into()));
             return;
         };
-        if !g.settled() {
+        if !g.growth.settled() {
             return;
         }
-        let r = &g.replica;
+        let r = g.growth.replica();
         let there = r.is_done() || (r.rows_done() >= ask.row && r.caught_up());
         if !there {
             let behind = ask.row.saturating_sub(r.rows_done());
@@ -1118,7 +1008,7 @@ impl Viewer {
         let Some(g) = &mut self.growing else {
             return Err("no shell is loaded".into());
         };
-        g.camera.follow(g.replica.grown(), ask.dt);
+        g.camera.follow(g.growth.replica().grown(), ask.dt);
         g.camera.yaw += ask.turn;
         let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
         d.draw(g, self.layout)?;

@@ -12,6 +12,7 @@
 
 pub(crate) mod edge_slots;
 pub mod file_writer;
+pub mod growth_session;
 pub mod host;
 pub mod message;
 pub mod planar_update;
