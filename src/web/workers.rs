@@ -388,6 +388,7 @@ impl Workers {
                     }
                 }
                 if let Some(slot) = pool.overdue(now()) {
+                    pool.hung();
                     dead.push((slot, "it did not answer in time".into()));
                 }
                 dead.dedup_by_key(|(slot, _)| *slot);

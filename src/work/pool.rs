@@ -170,6 +170,13 @@ impl Pool {
         self.slots.iter().any(|s| s.jobs() > 0) || self.waiting.iter().any(|(_, r)| !r.is_session())
     }
 
+    /// A worker was held to hang: every request is given twice the time from now on. It may
+    /// be this machine that is slow, not the worker that is stuck; without that, a job that
+    /// takes longer than its allowance here would be cut off and sent again for ever.
+    pub fn hung(&mut self) {
+        self.patience *= 2.0;
+    }
+
     /// Worker `slot` died or hung and is replaced by a fresh one: its jobs wait again, first
     /// in line, and the session requests it held are returned (its sessions are lost with it).
     pub fn failed(&mut self, slot: usize) -> Vec<Request> {
@@ -332,6 +339,19 @@ mod tests {
         pool.answered(0, sent[0].ticket, 10_000.0);
         assert_eq!(pool.overdue(20_000.0), None, "the second started at 10 s");
         assert_eq!(pool.overdue(25_001.0), Some(0));
+    }
+
+    #[test]
+    fn each_hang_doubles_the_time_every_request_is_given() {
+        let mut pool = Pool::new(1);
+        pool.submit(tile(0));
+        pool.dispatch(0.0);
+        assert_eq!(pool.overdue(15_001.0), Some(0));
+        pool.hung();
+        assert!(pool.failed(0).is_empty());
+        pool.dispatch(15_001.0);
+        assert_eq!(pool.overdue(45_000.0), None, "30 s from when it was sent again");
+        assert_eq!(pool.overdue(45_002.0), Some(0));
     }
 
     #[test]
