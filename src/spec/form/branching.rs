@@ -34,10 +34,11 @@ pub struct BranchingSpec {
 }
 
 impl BranchingSpec {
-    /// One pixel of a picture [`pixels`](Self::pixels) across that frames the whole form: the
-    /// first branch's reach (its trunks' heights summed, as if it grew every knot; no branch
-    /// reaches further, and bent it reaches less) over the pixels. So rule 8 never stops a
-    /// tip that such a picture would show a pixel high, and a form keeps its look at any size.
+    /// One pixel of a picture [`pixels`](Self::pixels) across that frames the whole form. The
+    /// form's size is not known before it grows; its first branch's reach stands for it (its
+    /// trunks' heights summed, as if it grew every knot: bent, the stem spans less, and
+    /// branches on branches may stand out a little further). In heights of the first trunk the
+    /// pixel depends on the parameters only, so a form keeps its look at any size.
     pub fn pixel(&self) -> f64 {
         let first = self.trunk.slenderness * self.trunk.diameter;
         first * reach_in_first_heights(self.knots, self.trunk.taper) / f64::from(self.pixels)
