@@ -350,7 +350,11 @@ mod tests {
         pool.hung();
         assert!(pool.failed(0).is_empty());
         pool.dispatch(15_001.0);
-        assert_eq!(pool.overdue(45_000.0), None, "30 s from when it was sent again");
+        assert_eq!(
+            pool.overdue(45_000.0),
+            None,
+            "30 s from when it was sent again"
+        );
         assert_eq!(pool.overdue(45_002.0), Some(0));
     }
 
