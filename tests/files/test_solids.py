@@ -39,7 +39,7 @@ PRINTED = ONE_BODY + ["kawaguchi-painted", "kawaguchi-tendril"]
 BRANCHES = {
     "kawaguchi-spiral-plant": 64,
     "kawaguchi-tendril": 17,
-    "kawaguchi-leaves": 171,
+    "kawaguchi-leaves": 209,
     "kawaguchi-coral": 1651,
     "kawaguchi-tentacles": 9,
     "kawaguchi-knot-shell": 1,
