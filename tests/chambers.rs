@@ -11,9 +11,10 @@ use crate::common;
 use glam::{DQuat, DVec3};
 use proptest::prelude::*;
 use seashells_core::forms::kawaguchi::chambers::chamber_stack::{
-    ChamberStack, RingKind, turn_per_chamber,
+    ChamberStack, RingKind, SIPHUNCLE, turn_per_chamber,
 };
 use seashells_core::generator::{BuildError, Generator};
+use seashells_core::mesh::Surface;
 use seashells_core::presets::preset;
 use seashells_core::share::link::{Decoded, decode};
 use seashells_core::spec::ShellSpec;
@@ -91,20 +92,32 @@ proptest! {
         t in prop::array::uniform2(-0.5f64..0.5),
         shifted in any::<bool>(),
         sinistral in any::<bool>(),
+        wall in 0.01f64..0.4,
     ) {
         let mut c = arbitrary(ratio, q, if shifted { t } else { [0.0; 2] }, 9);
         if sinistral {
             c.handedness = Handedness::Sinistral;
         }
+        c.wall = wall;
         let s = stack(&c);
         let similarity = s.similarity();
-        let shown = |frame, kind| -> Vec<DVec3> {
-            s.ring(&frame, kind).into_iter().map(|p| s.handedness().mirror(p)).collect()
+        let mirrored = |ring: Vec<DVec3>| -> Vec<DVec3> {
+            ring.into_iter().map(|p| s.handedness().mirror(p)).collect()
         };
+        let septum = s.septum();
+        // The outside's bases, and the cavity's floor, ceiling and siphuncle: a hollow
+        // chamber's cavity is the similarity's image of the one before, as its chamber is.
+        let rings: [&dyn Fn(usize) -> Vec<DVec3>; 5] = [
+            &|k| mirrored(s.ring(&s.frame(k), RingKind::Bottom)),
+            &|k| mirrored(s.ring(&s.frame(k), RingKind::Top)),
+            &|k| mirrored(s.cavity_ring(&s.frame(k), septum, 1.0)),
+            &|k| mirrored(s.cavity_ring(&s.frame(k), 1.0 - septum, 1.0)),
+            &|k| mirrored(s.cavity_ring(&s.frame(k), septum, SIPHUNCLE)),
+        ];
         for k in 0..c.chambers as usize - 1 {
-            for kind in [RingKind::Bottom, RingKind::Top] {
-                let now = shown(s.frame(k), kind);
-                let next = shown(s.frame(k + 1), kind);
+            for ring in rings {
+                let now = ring(k);
+                let next = ring(k + 1);
                 let scale = now.iter().map(|p| p.length()).fold(1.0, f64::max);
                 for (p, q) in now.iter().zip(&next) {
                     prop_assert!(close(similarity.transform_point3(*p), *q, scale * 2.0));
@@ -215,17 +228,18 @@ fn a_position_off_the_vertical_opens_the_whorls_into_a_horn() {
     );
 }
 
-/// Every combination of look, handedness, shift, septa and protuberances.
+/// Every combination of look, handedness, shift, septa, wall and protuberances.
 fn variants() -> Vec<(String, ShellSpec)> {
     let mut out = Vec::new();
     for look in [Look::Faceted, Look::Smooth] {
         for sinistral in [false, true] {
             for shifted in [false, true] {
-                for septa in [false, true] {
+                for (septa, wall) in [(false, 0.0), (true, 0.0), (false, 0.1), (true, 0.15)] {
                     let mut spec = spec_of("kawaguchi-shell");
                     let c = chambers_of(&mut spec);
                     c.look = look;
                     c.septa = septa;
+                    c.wall = wall;
                     c.chambers = 30;
                     c.mouth.protuberances = vec![0.2, -0.1, 0.0, 0.3, -0.2];
                     if sinistral {
@@ -236,7 +250,7 @@ fn variants() -> Vec<(String, ShellSpec)> {
                     }
                     spec.growth.rows = 31;
                     let what = format!(
-                        "{look:?}, sinistral {sinistral}, shifted {shifted}, septa {septa}"
+                        "{look:?}, sinistral {sinistral}, shifted {shifted}, septa {septa}, wall {wall}"
                     );
                     out.push((what, spec));
                 }
@@ -283,6 +297,52 @@ fn every_chamber_preset_exports_a_closed_solid() {
         let mut g = Generator::new(&spec_of(id)).unwrap();
         g.finish();
         common::assert_closed_and_outward(&g.snapshot(), id);
+    }
+}
+
+/// A walled stack is hollow: the thicker its wall, the more of the solid stack it keeps, and
+/// however thick, its cavities, septa and siphuncles make one body with the outside (no
+/// void closed inside it), open at the mouth.
+#[test]
+fn walled_chambers_are_hollow_and_one_body_open_at_the_mouth() {
+    for id in ["kawaguchi-shell", "kawaguchi-ammonite", "kawaguchi-horn"] {
+        let volume = |wall: f64| {
+            let mut spec = spec_of(id);
+            chambers_of(&mut spec).wall = wall;
+            let mut g = Generator::new(&spec).unwrap();
+            g.finish();
+            let mesh = g.snapshot();
+            common::assert_closed_and_outward(&mesh, &format!("{id}, wall {wall}"));
+            assert_eq!(
+                common::pieces(&mesh).len(),
+                1,
+                "{id}, wall {wall}: one body"
+            );
+            let mouth = g.edge();
+            if wall > 0.0 {
+                let inner = mouth
+                    .vertices
+                    .iter()
+                    .filter(|v| v.surface == Surface::Inner as u8 as f32)
+                    .count();
+                assert!(inner > 0, "{id}: the mouth opens into the last cavity");
+            }
+            common::signed_volume(&mesh)
+        };
+        let solid = volume(0.0);
+        let walls = [0.4, 0.2, 0.1, 0.05].map(volume);
+        for pair in walls.windows(2) {
+            assert!(
+                pair[1] < pair[0],
+                "{id}: a thinner wall keeps less: {walls:?}"
+            );
+        }
+        assert!(walls[0] < solid, "{id}: the thickest wall is still hollow");
+        let kept = walls[2] / solid;
+        assert!(
+            (0.15..0.6).contains(&kept),
+            "{id}: a wall a tenth of the radius keeps {kept} of the solid"
+        );
     }
 }
 

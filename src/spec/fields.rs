@@ -250,6 +250,7 @@ pub const CHAMBERS: &[Field] = &[
     f("form.handedness", Shape, "", "twist", Kind::Choice(&["dextral", "sinistral"])),
     f("form.look", Shape, "", "look", Kind::Choice(&["faceted", "smooth"])),
     f("form.septa", Shape, "", "mark the septa (suture lines)", Kind::Flag),
+    f("form.wall", Shape, "", "wall and septa thickness (relative to each chamber's radius; 0: solid)", real(0.0, 0.4)),
     f("form.mouth.apexes", Mouth, "N", "apexes of the polygon", int(3, 256)),
     f("form.mouth.radius_a", Mouth, "D₀/2", "long radius", log(0.01, 100.0)),
     f("form.mouth.radius_b", Mouth, "", "short radius", log(0.01, 100.0)),

@@ -21,6 +21,11 @@ pub struct ChambersSpec {
     pub look: Look,
     /// Mark each septum where it meets the wall (the suture line), in the interior colour.
     pub septa: bool,
+    /// The wall's thickness as a fraction of each chamber's radius: above 0 every chamber is
+    /// hollow, closed from the next by a septum as thick as the wall and pierced by a
+    /// siphuncle, and the last chamber opens at the mouth. 0: solid chambers.
+    #[serde(default)]
+    pub wall: f64,
 }
 
 /// How the chamber polyhedra are shaded.

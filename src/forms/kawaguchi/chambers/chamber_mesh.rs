@@ -3,12 +3,19 @@
 //! band, and moves the cap that closes the mouth (the transient edge mesh). The result is one closed
 //! solid, outward-facing, whatever the look, handedness or position of the top base.
 //!
+//! A walled stack is hollow, as a cephalopod's shell is: each chamber holds a cavity, its side
+//! the chamber's drawn in by the wall, and a septum as thick as the wall parts it from the
+//! next. A siphuncle pierces every septum, so the cavities join one another and the last,
+//! which opens at the mouth: the solid stays one closed surface (one body, no voids a printer
+//! would have to guess at), and the mouth shows the last septum inside. The edge mesh is then
+//! the top of the last cavity and the lip around it.
+//!
 //! The pigmentation paints it as it paints a sweep: a chamber stack is a sweep of N-gon rims,
 //! so apex j sits at position j/N along the growing edge and chamber c spans the rows from
 //! c·ρ to (c + 1)·ρ, ρ = (rows − 1)/chambers. A pattern with as many cells as apexes and one
 //! row more than chambers gives each facet a cell of its own.
 
-use super::chamber_stack::{ChamberStack, RingKind};
+use super::chamber_stack::{ChamberStack, RingKind, SIPHUNCLE};
 use crate::forms::kawaguchi::facet::Facet;
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
 use crate::shape::{GrowingShape, LineGrid, ShapeError};
@@ -20,7 +27,6 @@ use glam::{DAffine3, DVec3};
 struct Ring {
     points: Vec<DVec3>,
     growth: DVec3,
-    kind: RingKind,
     row: f64,
 }
 
@@ -34,6 +40,8 @@ pub struct ChamberMesh {
     inward: bool,
     /// The frame of the next chamber to grow.
     frame: DAffine3,
+    /// The frame of the last chamber grown, whose cavity a hollow stack's next septum closes.
+    grown: Option<DAffine3>,
     /// The last ring grown and the one before it (smooth normals look across them).
     last: Option<Ring>,
     before_last: Option<Ring>,
@@ -55,11 +63,32 @@ pub fn mesh_capacity(spec: &ChambersSpec) -> (Capacity, Capacity) {
         vertices: n + 1,
         indices: 3 * n,
     };
-    let sides = Capacity {
-        vertices: bands * band_vertices + cap.vertices,
-        indices: bands * n * 6 + cap.indices,
+    let band = Capacity {
+        vertices: band_vertices,
+        indices: 6 * n,
     };
-    (sides, cap)
+    let annulus = Capacity {
+        vertices: 4 * n,
+        indices: 6 * n,
+    };
+    let sum = |parts: &[(usize, Capacity)]| Capacity {
+        vertices: parts.iter().map(|(k, c)| k * c.vertices).sum(),
+        indices: parts.iter().map(|(k, c)| k * c.indices).sum(),
+    };
+    if spec.wall > 0.0 {
+        // Besides the outside: each chamber's cavity side, the first cavity's floor, and
+        // every later septum's two faces with the siphuncle between them. The mouth: the
+        // last cavity's top and the lip.
+        let septa = chambers.saturating_sub(1);
+        let sides = sum(&[
+            (bands + chambers + septa, band),
+            (2, cap),
+            (2 * septa, annulus),
+        ]);
+        (sides, sum(&[(1, band), (1, annulus)]))
+    } else {
+        (sum(&[(bands, band), (1, cap)]), cap)
+    }
 }
 
 impl ChamberMesh {
@@ -85,6 +114,7 @@ impl ChamberMesh {
             capacity: mesh_capacity(spec),
             inward: outward < 0.0,
             frame: first,
+            grown: None,
             stack,
             last: None,
             before_last: None,
@@ -105,34 +135,56 @@ impl ChamberMesh {
         Ring {
             points: self.stack.ring(frame, kind),
             growth: self.stack.growth_direction(frame, kind),
-            kind,
             row: (chamber as f64 + ChamberStack::level(kind)) * self.rows_per_chamber,
         }
     }
 
+    /// A ring of chamber `chamber`'s cavity at `level` of its width, drawn in further by
+    /// `scale` (see [`ChamberStack::cavity_ring`]).
+    fn cavity_ring(&self, frame: &DAffine3, chamber: usize, level: f64, scale: f64) -> Ring {
+        Ring {
+            points: self.stack.cavity_ring(frame, level, scale),
+            growth: self.stack.growth_direction(frame, RingKind::Bottom),
+            row: (chamber as f64 + level) * self.rows_per_chamber,
+        }
+    }
+
     /// Normal of the surface at apex j of `ring`, from the rings on either side (itself at the
-    /// ends of the stack): around the ring × along the growth, turned outwards.
-    fn smooth_normal(&self, below: &Ring, ring: &Ring, above: &Ring, j: usize) -> DVec3 {
+    /// ends of the stack): around the ring × along the growth, turned away from the material
+    /// (outwards, or into the cavity when `cavity`).
+    fn smooth_normal(&self, [below, ring, above]: [&Ring; 3], j: usize, cavity: bool) -> DVec3 {
         let n = ring.points.len();
         let around = ring.points[(j + 1) % n] - ring.points[(j + n - 1) % n];
         let along = above.points[j] - below.points[j];
         let normal = around.cross(along).normalize_or_zero();
-        if self.inward { -normal } else { normal }
+        if self.inward != cavity {
+            -normal
+        } else {
+            normal
+        }
     }
 
     /// The band of quads from ring `a` up to ring `b`, given the ring before `a` and the one
-    /// after `b` (each the ring itself at an end of the stack).
-    fn band(&self, mesh: &mut Mesh, [below_a, a, b, above_b]: [&Ring; 4], surface: Surface) {
+    /// after `b` (each the ring itself at an end of the stack), facing outwards, or into the
+    /// stack's axis when it is the side of a `cavity` (or of the siphuncle).
+    fn band(
+        &self,
+        mesh: &mut Mesh,
+        [below_a, a, b, above_b]: [&Ring; 4],
+        surface: Surface,
+        cavity: bool,
+    ) {
         let n = a.points.len();
+        let inward = self.inward != cavity;
         // Mirroring reverses the winding once more.
-        let flip = self.inward != self.stack.handedness().is_sinistral();
+        let flip = inward != self.stack.handedness().is_sinistral();
         let x = |j: usize| j as f64 / n as f64;
         match self.look {
             Look::Faceted => {
                 for j in 0..n {
                     let facet = Facet::new([&a.points, &b.points], [a.row, b.row], j);
                     let face = facet.face;
-                    let normal = if self.inward { -face } else { face }.normalize_or_zero();
+                    let normal = if inward { -face } else { face }.normalize_or_zero();
                     let base = mesh.next_index();
                     for (p, [u, row]) in facet.corners.into_iter().zip(facet.pattern) {
                         mesh.vertices.push(self.vertex(p, normal, u, row, surface));
@@ -147,7 +199,7 @@ impl ChamberMesh {
                 {
                     *start = mesh.next_index();
                     for j in 0..=n {
-                        let normal = self.smooth_normal(below, ring, above, j % n);
+                        let normal = self.smooth_normal([below, ring, above], j % n, cavity);
                         let p = ring.points[j % n];
                         mesh.vertices
                             .push(self.vertex(p, normal, x(j), ring.row, surface));
@@ -161,17 +213,18 @@ impl ChamberMesh {
         }
     }
 
-    /// A flat cap over `ring` facing along `facing`: the apex (backwards) or the mouth.
-    fn cap(&self, mesh: &mut Mesh, ring: &Ring, facing: DVec3) {
+    /// A flat cap over `ring` facing along `facing`: the apex (backwards), the mouth, or the
+    /// first cavity's floor.
+    fn cap(&self, mesh: &mut Mesh, ring: &Ring, facing: DVec3, surface: Surface) {
         let n = ring.points.len();
         let centre = ring.points.iter().sum::<DVec3>() / n as f64;
         let c = mesh.next_index();
         mesh.vertices
-            .push(self.vertex(centre, facing, 0.5, ring.row, Surface::Edge));
+            .push(self.vertex(centre, facing, 0.5, ring.row, surface));
         for (j, &p) in ring.points.iter().enumerate() {
             let x = j as f64 / n as f64;
             mesh.vertices
-                .push(self.vertex(p, facing, x, ring.row, Surface::Edge));
+                .push(self.vertex(p, facing, x, ring.row, surface));
         }
         let area: DVec3 = (0..n)
             .map(|j| (ring.points[j] - centre).cross(ring.points[(j + 1) % n] - centre))
@@ -182,15 +235,78 @@ impl ChamberMesh {
         }
     }
 
-    /// Adds chamber `c`'s rings, each joined to the ring below by a band.
+    /// A flat ring of quads from `outer` in to `inner` (a ring in the same plane, drawn in
+    /// towards its centre), each facing along `facing`: a septum's face around the siphuncle,
+    /// or the lip around the open mouth.
+    fn annulus(
+        &self,
+        mesh: &mut Mesh,
+        [outer, inner]: [&Ring; 2],
+        facing: DVec3,
+        surface: Surface,
+    ) {
+        let n = outer.points.len();
+        for j in 0..n {
+            let facet = Facet::new([&outer.points, &inner.points], [outer.row, inner.row], j);
+            let flip = (facet.face.dot(facing) < 0.0) != self.stack.handedness().is_sinistral();
+            let base = mesh.next_index();
+            for (p, [u, row]) in facet.corners.into_iter().zip(facet.pattern) {
+                mesh.vertices.push(self.vertex(p, facing, u, row, surface));
+            }
+            mesh.quad([base, base + 1, base + 2, base + 3], flip);
+        }
+    }
+
+    /// Chamber `c`'s cavity, whose frame is `frame`, up to where the septum above it will
+    /// begin: the septum below it (the first cavity's floor, or the faces of the septum
+    /// between it and the cavity of the chamber before, whose frame is `previous`, the
+    /// siphuncle through them) and its side.
+    fn hollow_chamber(
+        &self,
+        mesh: &mut Mesh,
+        previous: Option<&DAffine3>,
+        frame: &DAffine3,
+        c: usize,
+    ) {
+        let s = self.stack.septum();
+        let floor = self.cavity_ring(frame, c, s, 1.0);
+        if let Some(previous) = previous {
+            let roof = self.cavity_ring(previous, c - 1, 1.0 - s, 1.0);
+            let roof_hole = self.cavity_ring(previous, c - 1, 1.0 - s, SIPHUNCLE);
+            let floor_hole = self.cavity_ring(frame, c, s, SIPHUNCLE);
+            self.annulus(mesh, [&roof, &roof_hole], -roof.growth, Surface::Inner);
+            let tube = [&roof_hole, &roof_hole, &floor_hole, &floor_hole];
+            self.band(mesh, tube, Surface::Inner, true);
+            self.annulus(mesh, [&floor, &floor_hole], floor.growth, Surface::Inner);
+        } else {
+            self.cap(mesh, &floor, floor.growth, Surface::Inner);
+        }
+        let ceiling = self.cavity_ring(frame, c, 1.0 - s, 1.0);
+        self.band(
+            mesh,
+            [&floor, &floor, &ceiling, &ceiling],
+            Surface::Inner,
+            true,
+        );
+    }
+
+    /// The open mouth of a hollow stack whose last chamber's frame is `frame`: the top of the
+    /// last cavity, and the lip from the top base in to it.
+    fn open_mouth(&self, edge: &mut Mesh, frame: &DAffine3, c: usize) {
+        let s = self.stack.septum();
+        let ceiling = self.cavity_ring(frame, c, 1.0 - s, 1.0);
+        let rim = self.cavity_ring(frame, c, 1.0, 1.0);
+        self.band(edge, [&ceiling, &ceiling, &rim, &rim], Surface::Inner, true);
+        let top = self.ring(frame, c, RingKind::Top);
+        self.annulus(edge, [&top, &rim], top.growth, Surface::Edge);
+    }
+
+    /// Adds chamber `c`'s rings, each joined to the ring below by a band, and its cavity when
+    /// the stack is hollow.
     fn grow_chamber(&mut self, mesh: &mut Mesh, c: usize) {
         let frame = self.frame;
         let next_frame = self.stack.next_frame(&frame);
-        let rings: Vec<Ring> = self
-            .stack
-            .rings_above_bottom()
-            .map(|k| self.ring(&frame, c, k))
-            .collect();
+        let kinds: Vec<RingKind> = self.stack.rings_above_bottom().collect();
         // Smooth normals at the last ring look at the next chamber's first ring.
         let smooth = self.look == Look::Smooth;
         let following = (smooth && c + 1 < self.stack.chambers()).then(|| {
@@ -201,20 +317,29 @@ impl ChamberMesh {
                 .expect("a chamber has rings");
             self.ring(&next_frame, c + 1, kind)
         });
-        let mut rings = rings.into_iter().peekable();
-        while let Some(ring) = rings.next() {
+        let rings: Vec<Ring> = kinds.iter().map(|&k| self.ring(&frame, c, k)).collect();
+        let mut rings = kinds.into_iter().zip(rings).peekable();
+        while let Some((kind, ring)) = rings.next() {
             let below = self.last.take().expect("the apex ring is grown first");
-            let surface = match (below.kind, ring.kind) {
-                (_, RingKind::Suture) => Surface::Edge,
+            let surface = match kind {
+                RingKind::Suture => Surface::Edge,
                 _ => Surface::Outer,
             };
             {
                 let below_below = self.before_last.as_ref().unwrap_or(&below);
-                let above = rings.peek().or(following.as_ref()).unwrap_or(&ring);
-                self.band(mesh, [below_below, &below, &ring, above], surface);
+                let above = rings
+                    .peek()
+                    .map(|(_, r)| r)
+                    .or(following.as_ref())
+                    .unwrap_or(&ring);
+                self.band(mesh, [below_below, &below, &ring, above], surface, false);
             }
             self.before_last = Some(below);
             self.last = Some(ring);
+        }
+        let previous = self.grown.replace(frame);
+        if self.stack.hollow() {
+            self.hollow_chamber(mesh, previous.as_ref(), &frame, c);
         }
         self.frame = next_frame;
     }
@@ -267,11 +392,16 @@ impl GrowingShape for ChamberMesh {
         } else {
             if self.done == 1 {
                 let apex = self.last.as_ref().expect("the apex ring is laid first");
-                self.cap(mesh, apex, -apex.growth);
+                self.cap(mesh, apex, -apex.growth, Surface::Edge);
             }
-            self.grow_chamber(mesh, self.done - 1);
-            let mouth = self.last.as_ref().expect("a ring is grown");
-            self.cap(edge, mouth, mouth.growth);
+            let (frame, c) = (self.frame, self.done - 1);
+            self.grow_chamber(mesh, c);
+            if self.stack.hollow() {
+                self.open_mouth(edge, &frame, c);
+            } else {
+                let mouth = self.last.as_ref().expect("a ring is grown");
+                self.cap(edge, mouth, mouth.growth, Surface::Edge);
+            }
         }
         self.done += 1;
         true

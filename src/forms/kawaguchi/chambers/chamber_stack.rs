@@ -34,6 +34,14 @@ use glam::{DAffine3, DMat3, DQuat, DVec3};
 /// Where a septum's suture band ends, as a fraction of the chamber's width from its bottom base.
 pub const SUTURE: f64 = 0.12;
 
+/// The siphuncle's size, as a fraction of the septum it pierces: the tube that joins every
+/// chamber of a hollow stack to the next, near the centre of each septum as in *Nautilus*.
+pub const SIPHUNCLE: f64 = 0.12;
+
+/// The most a septum's half may take of its chamber's width, so that every chamber keeps a
+/// cavity however thick the wall is asked to be.
+const MOST_SEPTUM: f64 = 0.25;
+
 /// One ring of apexes in the sequence that the mesh joins band by band.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RingKind {
@@ -118,6 +126,11 @@ pub struct ChamberStack {
     placement: DAffine3,
     chambers: usize,
     septa: bool,
+    /// The wall's thickness as a fraction of a ring's size about its centre (0: solid).
+    wall: f64,
+    /// Where a hollow chamber's cavity begins above its bottom base and ends below its top
+    /// base, as a fraction of the chamber's width: half a septum.
+    septum: f64,
     handedness: Handedness,
 }
 
@@ -155,6 +168,15 @@ impl ChamberStack {
             ));
         }
         check_growth(spec.chambers, c.ratio)?;
+        if !(0.0..1.0).contains(&spec.wall) {
+            return Err(ShapeError::new(
+                "form.wall",
+                format!(
+                    "the wall must be at least 0 (solid chambers) and less than 1 (a chamber's whole radius), not {}",
+                    spec.wall
+                ),
+            ));
+        }
         let bottom: Vec<DVec3> = mouth_polygon(&spec.mouth)?
             .into_iter()
             .map(|p| p.extend(0.0))
@@ -192,12 +214,15 @@ impl ChamberStack {
             ));
         }
         let placement = placement(&chamber, &top, rotation);
+        let septum = septum(&bottom, &chamber, spec.wall);
         Ok(Self {
             bottom,
             chamber,
             placement,
             chambers: spec.chambers as usize,
             septa: spec.septa,
+            wall: spec.wall,
+            septum,
             handedness: spec.handedness,
         })
     }
@@ -254,6 +279,35 @@ impl ChamberStack {
         }
     }
 
+    /// Whether the chambers are hollow: walled, with septa between them.
+    pub fn hollow(&self) -> bool {
+        self.wall > 0.0
+    }
+
+    /// Where a hollow chamber's cavity begins above the bottom base (and ends as far below
+    /// the top base), as a fraction of the chamber's width.
+    pub fn septum(&self) -> f64 {
+        self.septum
+    }
+
+    /// A ring of the cavity inside the chamber whose frame is `frame`, at `level` of its width
+    /// (0 the bottom base, 1 the top base): the chamber's side at that level, drawn in towards
+    /// its centre by the wall, and further by `scale` (1 for the cavity's side, [`SIPHUNCLE`]
+    /// for the siphuncle through a septum). Every chamber's cavity is the same similarity's
+    /// image of the one before, as its chamber is.
+    pub fn cavity_ring(&self, frame: &DAffine3, level: f64, scale: f64) -> Vec<DVec3> {
+        let side: Vec<DVec3> = self
+            .bottom
+            .iter()
+            .map(|&p| p.lerp(self.chamber.transform_point3(p), level))
+            .collect();
+        let centre = side.iter().sum::<DVec3>() / side.len() as f64;
+        let shrink = (1.0 - self.wall) * scale;
+        side.iter()
+            .map(|&p| frame.transform_point3(centre + (p - centre) * shrink))
+            .collect()
+    }
+
     /// The direction of growth through a ring: the normal of its base plane (a suture ring
     /// takes the bottom base's).
     pub fn growth_direction(&self, frame: &DAffine3, kind: RingKind) -> DVec3 {
@@ -300,6 +354,17 @@ impl ChamberStack {
         }
         bounds
     }
+}
+
+/// Half a septum as a fraction of a chamber's width: half the wall's thickness (`wall` times
+/// the bottom base's mean radius) over the distance between the centres of the bottom and
+/// top bases, so that the septum between two cavities is as thick as the wall; at most
+/// [`MOST_SEPTUM`].
+fn septum(bottom: &[DVec3], chamber: &DAffine3, wall: f64) -> f64 {
+    let centre = bottom.iter().sum::<DVec3>() / bottom.len() as f64;
+    let radius = bottom.iter().map(|&p| p.distance(centre)).sum::<f64>() / bottom.len() as f64;
+    let width = chamber.transform_point3(centre).distance(centre);
+    (wall * radius / (2.0 * width)).min(MOST_SEPTUM)
 }
 
 /// The first chamber's frame in shell space: the centre of similitude of `period` at the
