@@ -9,6 +9,7 @@ use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
 use crate::shape::{EdgePart, GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::ShellSpec;
+use crate::spec::pattern::EdgeGrowth;
 use glam::DVec3;
 use std::ops::Range;
 
@@ -113,11 +114,24 @@ impl std::error::Error for BuildError {
     }
 }
 
+/// The pattern of `spec` without its mesh (a preview, a map of parameters). Its form is built
+/// only for a growing edge, whose cells follow the rim.
+pub fn pattern_alone(spec: &ShellSpec) -> Result<Option<PatternRun>, BuildError> {
+    let rim: Box<dyn GrowingShape> = match spec.pattern.edge_growth {
+        EdgeGrowth::Off => return PatternRun::new(spec, |_| None).map_err(BuildError::Pattern),
+        EdgeGrowth::Uniform => {
+            shape_for(spec, spec.growth.rows.max(2) as usize).map_err(BuildError::Shape)?
+        }
+    };
+    PatternRun::new(spec, |row| rim.rim_length(row)).map_err(BuildError::Pattern)
+}
+
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
         let rows = spec.growth.rows.max(2) as usize;
         let shape = shape_for(spec, rows).map_err(BuildError::Shape)?;
-        let pattern = PatternRun::new(spec).map_err(BuildError::Pattern)?;
+        let pattern =
+            PatternRun::new(spec, |row| shape.rim_length(row)).map_err(BuildError::Pattern)?;
         let mut generator = Self {
             mesh: Mesh::with_capacity(shape.capacity()),
             edge: Mesh::with_capacity(shape.edge_capacity()),

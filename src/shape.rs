@@ -136,6 +136,10 @@ pub trait GrowingShape {
     fn front(&self) -> DVec3;
     /// Where a line drawing of the shape draws its lines.
     fn line_grid(&self) -> LineGrid;
+    /// The length of the growing edge at pattern row `row` (shell units), whose growth a
+    /// pattern on a growing edge follows with its number of cells; `None` for a form that
+    /// has no one growing edge.
+    fn rim_length(&self, row: usize) -> Option<f64>;
     /// Grows one step: appends to `mesh`, and may replace `edge` with the geometry that closes
     /// the new growing edge, or change it in place (it holds what the previous step left in
     /// it); says whether it did.

@@ -11,6 +11,7 @@ mod branching;
 mod chambers;
 mod cli;
 mod drawing;
+mod edge_growth;
 mod exports;
 mod file_writer;
 mod generator;

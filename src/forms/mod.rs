@@ -64,6 +64,16 @@ pub fn meshed_in_pieces(form: &Form) -> bool {
     }
 }
 
+/// Whether `form` grows one edge whose length a pattern's dividing cells can follow
+/// ([`GrowingShape::rim_length`] gives it): a swept shell's rim and a chamber stack's mouth
+/// have one; the Murex's sections and a tree's many branches have not. Each form says.
+pub fn has_one_growing_edge(form: &Form) -> bool {
+    match form {
+        Form::Sweep(_) | Form::Chambers(_) => true,
+        Form::Implicit(_) | Form::Branching(_) => false,
+    }
+}
+
 /// Repairs what `form` asks that its model cannot build, or that breaks a cap, from
 /// `fallback` (a form of the same kind), and says what was done in `problems`.
 pub(crate) fn repair(

@@ -6,6 +6,7 @@
 //! empty, inactive edge.
 
 use super::automaton_rule::{MAX_COUNT, Rule};
+use super::edge_growth::insert_copy;
 use super::edge_model::{EdgeModel, PatternError};
 use super::noise::Noise;
 use crate::spec::pattern::{Automaton as Params, Boundary, ColourBy, PatternSpec};
@@ -107,6 +108,15 @@ impl EdgeModel for Automaton {
     /// The prepigment counts.
     fn recorded(&self) -> &[f32] {
         &self.recorded
+    }
+
+    /// The daughter is a copy of its mother: counts and activity are not means.
+    fn divide(&mut self, cell: usize, _noise: &mut Noise) {
+        insert_copy(&mut self.x, cell);
+        insert_copy(&mut self.p, cell);
+        insert_copy(&mut self.recorded, cell);
+        self.next_x.push(0);
+        self.next_p.push(0);
     }
 
     /// By prepigment (mapped from low..high), by activity, or both: active cells full

@@ -25,6 +25,7 @@
 //! Explicit Euler with Δt = Δx = 1 (unrefined), as for the paper's models.
 
 use super::diffusion;
+use super::edge_growth::{daughter_rho, insert_mean};
 use super::edge_model::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use super::grid::Grid;
 use super::noise::Noise;
@@ -129,5 +130,18 @@ impl EdgeModel for Coupled {
 
     fn recorded(&self) -> &[f32] {
         &self.a
+    }
+
+    fn divide(&mut self, cell: usize, noise: &mut Noise) {
+        let b = self.grid.boundary;
+        insert_mean(&mut self.a, cell, b);
+        insert_mean(&mut self.e, cell, b);
+        insert_mean(&mut self.f, cell, b);
+        let rho = daughter_rho(noise, self.p.rho, self.p.rho_noise);
+        self.rho_dt.insert(cell + 1, self.grid.per_step([rho])[0]);
+        self.next_a.push(0.0);
+        self.next_e.push(0.0);
+        self.next_f.push(0.0);
+        self.grid.cells += 1;
     }
 }

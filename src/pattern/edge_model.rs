@@ -2,6 +2,8 @@
 //! growing edge by one row, the [`PatternError`] that stops it, and the checks that refuse
 //! concentrations explicit Euler has driven out of range.
 
+use super::noise::Noise;
+
 /// Why a pattern cannot go on: a message in words, naming the parameters that matter.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PatternError(pub String);
@@ -23,6 +25,10 @@ pub trait EdgeModel {
     /// the prepigment count of the automaton. Single precision: the models' statistics (stripe
     /// spacing, wave counts, periods) hold in it, and it halves the work of every step.
     fn recorded(&self) -> &[f32];
+
+    /// Cell `cell` divides (see [`super::edge_growth`]): a daughter after it takes the mean of
+    /// its neighbours' concentrations, and its own fluctuation of ρ from `noise`.
+    fn divide(&mut self, cell: usize, noise: &mut Noise);
 
     /// Pigment density in [0, 1] per cell, from the recorded value mapped from `low..high`.
     fn pigment(&self, low: f64, high: f64, out: &mut [f32]) {

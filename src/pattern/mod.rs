@@ -8,6 +8,7 @@ pub mod automaton;
 pub(crate) mod automaton_rule;
 pub(crate) mod coupled;
 pub(crate) mod diffusion;
+pub(crate) mod edge_growth;
 pub(crate) mod edge_model;
 pub(crate) mod grid;
 pub(crate) mod noise;

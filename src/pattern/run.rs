@@ -1,11 +1,19 @@
 //! A pattern being grown: the model, the colours, every row so far as RGBA (the texture and
 //! the planar view), and a hash of the recorded values that is the same on every platform
 //! for the same spec.
+//!
+//! On a growing edge (see [`super::edge_growth`]) a row has as many cells as the rim has
+//! room for, fewer than the last row's; its RGBA is still as wide as the last row's, each
+//! cell stretched over its share of the row, so that position x along the rim (in [0, 1])
+//! finds the cell there on every row, as the texture and the files read it.
 
+use super::edge_growth::{Divisions, cell_counts};
+use super::noise::Noise;
 use super::{EdgeModel, PatternError, build};
 use crate::fnv::Fnv;
 use crate::spec::ShellSpec;
 use crate::spec::colour::Rgb;
+use crate::spec::pattern::{EdgeGrowth, Model};
 
 /// The pattern of one shell, row by row.
 pub struct PatternRun {
@@ -16,19 +24,65 @@ pub struct PatternRun {
     high: f64,
     cells: usize,
     rows: usize,
+    /// Cells of each row recorded (all `cells` on a fixed edge).
+    widths: Vec<u32>,
+    growth: Option<Box<Growth>>,
     rgba: Vec<u8>,
     shade: Vec<f32>,
     hash: Fnv,
 }
 
+/// How a growing edge divides its cells: computed cells on each row, and which divide.
+struct Growth {
+    counts: Vec<usize>,
+    divisions: Divisions,
+    noise: Noise,
+}
+
+/// The stream of the seed that gives daughter cells their fluctuation of ρ.
+const DAUGHTERS: u64 = 7;
+
 impl PatternRun {
     /// The pattern a spec asks for, with its first row (the starting state) recorded; `None`
-    /// when the spec has no pattern model.
-    pub fn new(spec: &ShellSpec) -> Result<Option<Self>, PatternError> {
-        let Some(model) = build(&spec.pattern, spec.seed)? else {
+    /// when the spec has no pattern model. `rim` gives the rim's length on each row, which a
+    /// growing edge follows; `None` where the form has no one growing edge.
+    pub fn new(
+        spec: &ShellSpec,
+        rim: impl Fn(usize) -> Option<f64>,
+    ) -> Result<Option<Self>, PatternError> {
+        let refinement = spec.pattern.refinement.max(1) as usize;
+        let (pattern, growth) = match spec.pattern.edge_growth {
+            _ if spec.pattern.model == Model::None => (spec.pattern.clone(), None),
+            EdgeGrowth::Off => (spec.pattern.clone(), None),
+            EdgeGrowth::Uniform => {
+                let rows = spec.growth.rows.max(2) as usize;
+                let rims = (0..rows).map(&rim).collect::<Option<Vec<f64>>>().ok_or_else(|| {
+                    PatternError(
+                        "pattern.edge_growth: this form has no one growing edge whose cells could divide (swept shells and chambers have); set it to off".into(),
+                    )
+                })?;
+                let counts = cell_counts(spec.pattern.cells, &rims)?;
+                let mut first = spec.pattern.clone();
+                first.cells = counts[0];
+                // The automaton's starting cells are positions along the last row's edge.
+                if let Model::Automaton(a) = &mut first.model {
+                    for c in &mut a.start_cells {
+                        let at = u64::from(*c) * u64::from(counts[0]);
+                        *c = (at / u64::from(spec.pattern.cells.max(1))) as u32;
+                    }
+                }
+                let growth = Growth {
+                    counts: counts.iter().map(|&n| n as usize * refinement).collect(),
+                    divisions: Divisions::default(),
+                    noise: Noise::new(spec.seed, DAUGHTERS),
+                };
+                (first, Some(Box::new(growth)))
+            }
+        };
+        let Some(model) = build(&pattern, spec.seed)? else {
             return Ok(None);
         };
-        let cells = model.recorded().len();
+        let cells = spec.pattern.cells as usize * refinement;
         let mut run = Self {
             model,
             ground: spec.colours.ground,
@@ -37,29 +91,61 @@ impl PatternRun {
             high: spec.pattern.high,
             cells,
             rows: 0,
+            widths: Vec::with_capacity(spec.growth.rows as usize),
+            growth,
             rgba: Vec::with_capacity(cells * 4 * spec.growth.rows as usize),
-            shade: vec![0.0; cells],
+            shade: Vec::with_capacity(cells),
             hash: Fnv::default(),
         };
         run.record();
         Ok(Some(run))
     }
 
+    /// Records the model's row: its values in the hash, and its colours stretched to the
+    /// row's whole width (cell i of n has its centre at texel (i + ½)·cells/n).
     fn record(&mut self) {
-        for x in self.model.recorded() {
+        let recorded = self.model.recorded();
+        for x in recorded {
             self.hash.write(&x.to_bits().to_le_bytes());
         }
+        let n = recorded.len();
+        self.shade.resize(n, 0.0);
         self.model.pigment(self.low, self.high, &mut self.shade);
         let start = self.rgba.len();
         self.rgba.resize(start + self.cells * 4, 255);
-        for (pixel, &p) in self.rgba[start..].chunks_exact_mut(4).zip(&self.shade) {
-            pixel[..3].copy_from_slice(&self.ground.mix(self.pigment, p).0);
+        let row = self.rgba[start..].chunks_exact_mut(4);
+        if n == self.cells {
+            for (pixel, &p) in row.zip(&self.shade) {
+                pixel[..3].copy_from_slice(&self.ground.mix(self.pigment, p).0);
+            }
+        } else {
+            // Each texel's centre in cells, its pigment interpolated between the two nearest
+            // cells' centres: a cell's colour stays on its part of the rim without the steps
+            // a row of few wide cells would draw each time one divides.
+            let scale = n as f32 / self.cells as f32;
+            for (k, pixel) in row.enumerate() {
+                let at = ((k as f32 + 0.5) * scale - 0.5).clamp(0.0, (n - 1) as f32);
+                let i = (at as usize).min(n.saturating_sub(2));
+                let f = at - i as f32;
+                let next = self.shade[(i + 1).min(n - 1)];
+                let p = self.shade[i] + (next - self.shade[i]) * f;
+                pixel[..3].copy_from_slice(&self.ground.mix(self.pigment, p).0);
+            }
         }
+        self.widths.push(n as u32);
         self.rows += 1;
     }
 
-    /// Computes and records the next row.
+    /// Computes and records the next row: on a growing edge its cells divide first, to as
+    /// many as the rim has room for there.
     pub fn advance(&mut self) -> Result<(), PatternError> {
+        if let Some(g) = &mut self.growth {
+            let target = g.counts[self.rows.min(g.counts.len() - 1)];
+            while self.model.recorded().len() < target {
+                let cell = g.divisions.next(self.model.recorded().len());
+                self.model.divide(cell, &mut g.noise);
+            }
+        }
         self.model
             .advance_row()
             .map_err(|e| PatternError(format!("at row {}, {e}", self.rows)))?;
@@ -67,9 +153,38 @@ impl PatternRun {
         Ok(())
     }
 
-    /// Cells per row.
+    /// Cells per row of the RGBA: the last row's cells.
     pub fn cells(&self) -> usize {
         self.cells
+    }
+
+    /// The rows as the planar view shows them: each of its cells one texel, the row centred,
+    /// the texels beyond its ends transparent, so that a growing edge's pattern widens as a
+    /// fan (the same as [`Self::rgba`] on a fixed edge). Cell i of a row of n is the texel
+    /// (2i + 1)·cells / 2n of its stretched row, the one nearest its centre.
+    pub fn planar(&self) -> Vec<u8> {
+        let mut out = vec![0u8; self.rgba.len()];
+        let row_bytes = self.cells * 4;
+        for ((row, stretched), &n) in out
+            .chunks_exact_mut(row_bytes)
+            .zip(self.rgba.chunks_exact(row_bytes))
+            .zip(&self.widths)
+        {
+            let n = n as usize;
+            let offset = (self.cells - n) / 2;
+            for i in 0..n {
+                let k = ((2 * i + 1) * self.cells) / (2 * n);
+                let at = 4 * (offset + i);
+                row[at..at + 4].copy_from_slice(&stretched[4 * k..4 * k + 4]);
+            }
+        }
+        out
+    }
+
+    /// Cells the model computed on each row recorded: `cells` on a fixed edge, fewer before
+    /// the last rows on a growing one.
+    pub fn widths(&self) -> &[u32] {
+        &self.widths
     }
 
     /// Rows recorded so far.

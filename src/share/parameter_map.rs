@@ -5,6 +5,7 @@
 //! computed a row at a time, so that a page fills the map within its frames, and each is kept
 //! as a small picture (averaged blocks of cells and rows), not as its whole pattern.
 
+use crate::generator::pattern_alone;
 use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
 use crate::share::link::{self, flatten};
@@ -174,7 +175,7 @@ impl TileWork {
         // Only this map's rows are kept while computing, not the shell's.
         let mut spec = spec.clone();
         spec.growth.rows = rows as u32;
-        match PatternRun::new(&spec) {
+        match pattern_alone(&spec) {
             Ok(Some(run)) => Ok(Self { run, rows }),
             Ok(None) => Err("this shell has no pattern".into()),
             Err(e) => Err(e.to_string()),

@@ -8,6 +8,7 @@ use crate::pattern;
 use crate::presets;
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;
+use crate::spec::pattern::EdgeGrowth;
 use crate::spec::problem::Problem;
 
 /// The form to repair `form` from: `fallback`'s when it is of the same kind, else that of the
@@ -41,5 +42,12 @@ pub fn repair(spec: &mut ShellSpec, fallback: &ShellSpec) -> Vec<Problem> {
         &fallback.pattern,
         &mut problems,
     );
+    if spec.pattern.edge_growth != EdgeGrowth::Off && !forms::has_one_growing_edge(&spec.form) {
+        problems.push(Problem::new(
+            "pattern.edge_growth",
+            "this form has no one growing edge whose cells could divide (swept shells and chambers have); used off",
+        ));
+        spec.pattern.edge_growth = EdgeGrowth::Off;
+    }
     problems
 }

@@ -16,6 +16,10 @@ pub struct PatternSpec {
     pub refinement: u32,
     /// What happens at the two ends of the edge.
     pub boundary: Boundary,
+    /// Whether the edge's cells divide as the rim lengthens (beyond the paper, which keeps
+    /// their number fixed: "we ignore the effect of the gradual increase of polygon size
+    /// resulting from the rim's growth", §3). `cells` are then those of the last row.
+    pub edge_growth: EdgeGrowth,
     /// Recorded value shown as no pigment.
     pub low: f64,
     /// Recorded value shown as full pigment.
@@ -31,6 +35,7 @@ impl Default for PatternSpec {
             iterations: 1,
             refinement: 1,
             boundary: Boundary::ZeroFlux,
+            edge_growth: EdgeGrowth::Off,
             low: 0.0,
             high: 1.0,
             model: Model::None,
@@ -46,6 +51,17 @@ pub enum Boundary {
     ZeroFlux,
     /// The edge is a ring: the last cell neighbours the first.
     Periodic,
+}
+
+/// How the number of cells follows the rim's growth.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EdgeGrowth {
+    /// As many cells on every row: each cell widens as the rim grows (the paper's models).
+    Off,
+    /// As many cells on a row as keep every cell the same length: cells divide as the rim
+    /// lengthens, evenly along it, each daughter taking the mean of its neighbours.
+    Uniform,
 }
 
 /// The pattern model.

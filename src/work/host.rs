@@ -8,9 +8,9 @@ use super::edge_slots::EdgeSlots;
 use super::message::{Delta, Progress, Reply, Request, ShellInfo, WholeShell};
 use crate::blobtree::polygonize::ChunkWork;
 use crate::forms::{PieceMaker, piece_maker};
+use crate::generator::pattern_alone;
 use crate::generator::{Advance, EdgeRuns, Generator, within};
 use crate::mesh::{Bounds, Mesh};
-use crate::pattern::run::PatternRun;
 use crate::share::link;
 use crate::share::parameter_map::TileWork;
 use crate::spec::ShellSpec;
@@ -43,7 +43,7 @@ struct Growth {
 enum Job {
     Pieces { job: u32, work: Box<ChunkWork> },
     Whole { job: u32, generator: Box<Generator> },
-    Tile { job: u32, work: TileWork },
+    Tile { job: u32, work: Box<TileWork> },
 }
 
 /// A worker's state: its sessions, the jobs waiting, and the pieces' maker of the last shell
@@ -283,7 +283,7 @@ impl Host {
             Request::Preview { session, link } => {
                 let spec = spec_of(&link);
                 let rows = spec.growth.rows as usize;
-                match PatternRun::new(&spec) {
+                match pattern_alone(&spec) {
                     Ok(Some(run)) => {
                         let reply = Reply::Previewed {
                             session,
@@ -377,7 +377,12 @@ impl Host {
             },
             Request::Tile { job, link, rows } => {
                 match TileWork::new(&spec_of(&link), rows as usize) {
-                    Ok(work) => return Err(Job::Tile { job, work }),
+                    Ok(work) => {
+                        return Err(Job::Tile {
+                            job,
+                            work: Box::new(work),
+                        });
+                    }
                     Err(why) => Reply::Tiled {
                         job,
                         result: Err(why),

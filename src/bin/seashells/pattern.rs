@@ -4,7 +4,7 @@ use crate::Failure;
 use crate::options::{Options, WRITES};
 use crate::out::Out;
 use seashells_core::export;
-use seashells_core::pattern::run::PatternRun;
+use seashells_core::generator::pattern_alone;
 use seashells_core::share::repair::repair;
 
 pub fn pattern(args: &[String]) -> Result<(), Failure> {
@@ -45,8 +45,8 @@ pub fn pattern(args: &[String]) -> Result<(), Failure> {
     if let Some(p) = problems.first() {
         return Err(p.to_string().into());
     }
-    let mut run = PatternRun::new(&spec)
-        .map_err(|e| format!("the pattern cannot be computed: {e}"))?
+    let mut run = pattern_alone(&spec)
+        .map_err(|e| e.to_string())?
         .ok_or("this shell has no pattern model")?;
     let mut text = String::new();
     if csv {
@@ -62,7 +62,7 @@ pub fn pattern(args: &[String]) -> Result<(), Failure> {
     let bytes = if csv {
         text.into_bytes()
     } else {
-        export::png::encode(run.cells(), run.rows(), run.rgba())
+        export::png::encode(run.cells(), run.rows(), &run.planar())
     };
     out.write(&bytes)?;
     out.report(&format!(

@@ -217,6 +217,11 @@ impl GrowingShape for ImplicitMesh {
         self.line_grid
     }
 
+    /// None: the implicit surface grows by whole sections, with no one rim.
+    fn rim_length(&self, _row: usize) -> Option<f64> {
+        None
+    }
+
     fn front(&self) -> DVec3 {
         self.front
     }

@@ -222,6 +222,14 @@ impl GrowingShape for SweepMesh {
         LineGrid::sparse(rows_per_whorl, Some(self.rows_per_rim))
     }
 
+    /// The generating curve's length on the rim at that row, sculpture and lip included.
+    fn rim_length(&self, row: usize) -> Option<f64> {
+        let t = row as f64 / self.rows_per_rim * self.sweep.step();
+        let rim = self.sweep.rim_at(t.min(self.sweep.t_max()));
+        let points = rim.points.windows(2);
+        Some(points.map(|p| p[0].position.distance(p[1].position)).sum())
+    }
+
     fn front(&self) -> DVec3 {
         let rim = self.sweep.rim_at(self.sweep.t_max());
         let facing: DVec3 = rim.points.iter().map(|p| p.along_t).sum();

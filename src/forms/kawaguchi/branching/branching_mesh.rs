@@ -325,6 +325,11 @@ impl GrowingShape for BranchingMesh {
         }
     }
 
+    /// None: every branch has its own edge, and each narrows as it grows.
+    fn rim_length(&self, _row: usize) -> Option<f64> {
+        None
+    }
+
     fn front(&self) -> DVec3 {
         DVec3::NEG_Y
     }

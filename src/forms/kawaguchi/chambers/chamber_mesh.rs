@@ -374,6 +374,12 @@ impl GrowingShape for ChamberMesh {
         }
     }
 
+    /// The mouth polygon's perimeter, grown by r every chamber (continuously between).
+    fn rim_length(&self, row: usize) -> Option<f64> {
+        let chambers = row as f64 / self.rows_per_chamber;
+        Some(self.stack.perimeter() * self.stack.ratio().powf(chambers))
+    }
+
     fn front(&self) -> DVec3 {
         let last = self.stack.frame(self.stack.chambers() - 1);
         self.stack

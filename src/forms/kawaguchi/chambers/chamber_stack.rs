@@ -237,6 +237,19 @@ impl ChamberStack {
         self.bottom.len()
     }
 
+    /// The first chamber's bottom base's perimeter.
+    pub fn perimeter(&self) -> f64 {
+        let n = self.bottom.len();
+        (0..n)
+            .map(|j| self.bottom[j].distance(self.bottom[(j + 1) % n]))
+            .sum()
+    }
+
+    /// r: the growth ratio from each chamber to the next.
+    pub fn ratio(&self) -> f64 {
+        self.chamber.matrix3.x_axis.length()
+    }
+
     /// The rings a chamber adds above its bottom base (the previous chamber's top base, or
     /// for the first chamber the apex base), in growth order: the end of its suture band when
     /// septa are marked, and its top base.

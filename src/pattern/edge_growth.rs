@@ -1,0 +1,123 @@
+//! A growing edge whose cells divide as the rim lengthens. Fowler, Meinhardt & Prusinkiewicz
+//! keep the number of cells fixed: "We ignore the effect of the gradual increase of polygon
+//! size resulting from the rim's growth" (§3, after eqs 8–9), so every cell widens with the
+//! shell and a pattern's wavelength grows with it. Meinhardt's own account of the growing edge
+//! (*The Algorithmic Beauty of Sea Shells*) inserts cells instead: the number of cells follows
+//! the rim's length, so each cell keeps its size, diffusion acts over a constant length, the
+//! pattern keeps its wavelength in absolute size, and new stripes appear between old ones
+//! where the edge has room for them.
+//!
+//! Here the count on each row is the last row's times the rim's length there over its length
+//! at the last row (at least one cell, and never fewer than the row before: cells do not die).
+//! A cell divides by putting a daughter after itself, whose concentrations are the mean of its
+//! two neighbours' (the automaton's discrete counts: a copy of the mother's), with its own
+//! fluctuation of ρ drawn from the seed. Uniform growth spreads the divisions evenly along the
+//! edge and over time: the m-th division splits the cell at the fraction m/φ (mod 1) of the
+//! edge, a sequence that never clusters.
+
+use super::edge_model::PatternError;
+use super::noise::Noise;
+use crate::spec::pattern::Boundary;
+
+/// Cells on each row for a last row of `last` cells, given the rim's length on each row
+/// (`rims[r]`, shell units).
+pub(crate) fn cell_counts(last: u32, rims: &[f64]) -> Result<Vec<u32>, PatternError> {
+    let end = *rims
+        .last()
+        .ok_or_else(|| PatternError("no rows to grow".into()))?;
+    if let Some(r) = rims.iter().position(|&l| !(l.is_finite() && l > 0.0)) {
+        return Err(PatternError(format!(
+            "the rim at row {r} has no length ({}), so edge growth cannot follow it",
+            rims[r]
+        )));
+    }
+    let mut most = 1;
+    Ok(rims
+        .iter()
+        .map(|&l| {
+            let n = (f64::from(last) * l / end)
+                .round()
+                .clamp(1.0, f64::from(u32::MAX)) as u32;
+            most = most.max(n);
+            most
+        })
+        .collect())
+}
+
+/// Which cell divides next: the m-th division splits the cell at frac(m/φ) of the edge.
+#[derive(Default)]
+pub(crate) struct Divisions {
+    made: u64,
+}
+
+impl Divisions {
+    /// 1/φ, the golden ratio's inverse: its multiples mod 1 spread most evenly over [0, 1).
+    const STRIDE: f64 = 0.618_033_988_749_894_9;
+
+    /// The cell of an edge of `n` cells that divides next.
+    pub fn next(&mut self, n: usize) -> usize {
+        self.made += 1;
+        let at = (self.made as f64 * Self::STRIDE).fract();
+        ((at * n as f64) as usize).min(n - 1)
+    }
+}
+
+/// A daughter after cell `c` of `v`: the mean of `c` and the cell after it (the ring's first
+/// after the last on a periodic edge; `c` itself after the last on a zero-flux edge).
+pub(crate) fn insert_mean(v: &mut Vec<f32>, c: usize, boundary: Boundary) {
+    let next = match boundary {
+        _ if c + 1 < v.len() => v[c + 1],
+        Boundary::Periodic => v[0],
+        Boundary::ZeroFlux => v[c],
+    };
+    v.insert(c + 1, (v[c] + next) * 0.5);
+}
+
+/// A daughter after cell `c` of `v`, a copy of its mother.
+pub(crate) fn insert_copy<T: Copy>(v: &mut Vec<T>, c: usize) {
+    v.insert(c + 1, v[c]);
+}
+
+/// The random fluctuation of ρ a daughter is born with (as each cell's at the start, see
+/// [`Noise::fluctuating`]), from the seed's stream for divisions.
+pub(crate) fn daughter_rho(noise: &mut Noise, rho: f64, fraction: f64) -> f32 {
+    noise.fluctuating(rho, fraction, 1)[0]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_count_follows_the_rim_never_falls_and_ends_at_the_last_rows() {
+        let rims = [1.0, 2.0, 4.0, 3.9, 8.0];
+        assert_eq!(cell_counts(64, &rims).unwrap(), [8, 16, 32, 32, 64]);
+        assert_eq!(cell_counts(64, &[1e-9, 1.0]).unwrap(), [1, 64]);
+        assert!(cell_counts(64, &[0.0, 1.0]).is_err());
+        assert!(cell_counts(64, &[f64::NAN, 1.0]).is_err());
+    }
+
+    #[test]
+    fn divisions_spread_evenly_along_the_edge() {
+        let mut d = Divisions::default();
+        let mut hits = [0u32; 10];
+        for _ in 0..1000 {
+            hits[d.next(10)] += 1;
+        }
+        assert!(hits.iter().all(|&h| (95..=105).contains(&h)), "{hits:?}");
+    }
+
+    #[test]
+    fn a_daughter_takes_the_mean_of_its_neighbours() {
+        let mut v = vec![1.0, 3.0, 5.0];
+        insert_mean(&mut v, 0, Boundary::ZeroFlux);
+        assert_eq!(v, [1.0, 2.0, 3.0, 5.0]);
+        insert_mean(&mut v, 3, Boundary::ZeroFlux);
+        assert_eq!(v, [1.0, 2.0, 3.0, 5.0, 5.0]);
+        insert_mean(&mut v, 4, Boundary::Periodic);
+        assert_eq!(v, [1.0, 2.0, 3.0, 5.0, 5.0, 3.0]);
+        let mut counts = vec![1u32, 7];
+        insert_copy(&mut counts, 1);
+        assert_eq!(counts, [1, 7, 7]);
+    }
+}

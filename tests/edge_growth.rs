@@ -1,0 +1,243 @@
+//! The pattern on a growing edge (`pattern.edge_growth`, beyond Fowler et al. 1992, who fix
+//! the number of cells): the cells divide as the rim lengthens, so their number follows the
+//! rim, the stripes of fig 11's model keep their wavelength in absolute length from the apex to
+//! the lip (on a fixed edge it grows with the rim), new stripes appear between old ones, the
+//! same seed gives the same bits however the growth is cut, and a form without one growing
+//! edge refuses the option by name.
+
+use seashells_core::forms::{has_one_growing_edge, shape_for};
+use seashells_core::generator::{BuildError, Generator, pattern_alone};
+use seashells_core::pattern::run::PatternRun;
+use seashells_core::presets::{preset, presets};
+use seashells_core::share::link::decode;
+use seashells_core::spec::ShellSpec;
+use seashells_core::spec::pattern::EdgeGrowth;
+
+fn spec_of(id: &str) -> ShellSpec {
+    preset(id).expect("preset").spec.clone()
+}
+
+/// The hash of the first 300 rows of each patterned preset of a fixed edge, computed before
+/// edge growth existed (at fd19452): the paper's patterns
+/// are bit for bit as they were.
+const BEFORE_EDGE_GROWTH: &[(&str, u64)] = &[
+    ("stripes", 0xc27666d814edc694),
+    ("amoria-undulata", 0xf56e0f3d306988e5),
+    ("volutoconus-bednalli", 0x273eb60f0ccbae5e),
+    ("oliva-porphyria", 0x369cf9c8717502db),
+    ("conus-marmoreus", 0xc31071a1ced64add),
+    ("ca-waves", 0x27f88a71c7feaaa5),
+    ("ca-solitons", 0x27d60dd090563cc5),
+    ("ca-fractal-core", 0x8f2d44d47677f9d8),
+    ("ca-trochidae", 0x6bdbf592727fe805),
+    ("ca-cymbiolacca", 0xfe92bb1ffb2941f5),
+    ("ca-conus-princeps", 0xde41000f0b427c15),
+    ("kawaguchi-painted", 0x3c902cfa272af148),
+];
+
+#[test]
+fn the_paper_presets_patterns_are_bit_for_bit_as_before_edge_growth() {
+    for &(id, before) in BEFORE_EDGE_GROWTH {
+        let spec = spec_of(id);
+        assert_eq!(spec.pattern.edge_growth, EdgeGrowth::Off, "{id}");
+        let mut run = pattern_alone(&spec).unwrap().unwrap();
+        for _ in 1..300 {
+            run.advance().unwrap();
+        }
+        assert_eq!(run.hash(), before, "{id}");
+        assert!(
+            run.widths().iter().all(|&w| w as usize == run.cells()),
+            "{id}"
+        );
+    }
+}
+
+/// fig 11's stripes on a growing edge, and the rim's length on each row.
+fn growing_stripes() -> (ShellSpec, Vec<f64>) {
+    let mut spec = spec_of("stripes");
+    spec.pattern.edge_growth = EdgeGrowth::Uniform;
+    let rows = spec.growth.rows as usize;
+    let shape = shape_for(&spec, rows).unwrap();
+    let rims = (0..rows).map(|r| shape.rim_length(r).unwrap()).collect();
+    (spec, rims)
+}
+
+#[test]
+fn the_cells_follow_the_rim_so_each_keeps_its_length() {
+    let (spec, rims) = growing_stripes();
+    let mut run = pattern_alone(&spec).unwrap().unwrap();
+    while run.rows() < rims.len() {
+        run.advance().unwrap();
+    }
+    let (cells, widths) = (run.cells(), run.widths());
+    let last = *rims.last().unwrap();
+    assert_eq!(widths.len(), rims.len());
+    assert_eq!(*widths.last().unwrap() as usize, cells);
+    assert!(widths.windows(2).all(|w| w[0] <= w[1]), "no cell dies");
+    assert!(
+        (widths[0] as usize) * 10 < cells,
+        "the rim grows {:.0}-fold: {} cells at the apex",
+        last / rims[0],
+        widths[0]
+    );
+    for (r, (&n, &rim)) in widths.iter().zip(&rims).enumerate() {
+        let asked = cells as f64 * rim / last;
+        assert!(
+            (f64::from(n) - asked).abs() <= 0.5 + 1e-9,
+            "row {r}: {n} cells for {asked}"
+        );
+    }
+    // The texture's rows are all as wide, each cell stretched over its share; the planar
+    // view's are as long as their cells, centred.
+    let planar = run.planar();
+    let row = 4 * cells;
+    for (r, &n) in widths.iter().enumerate().step_by(97) {
+        let shown = planar[r * row..(r + 1) * row]
+            .chunks_exact(4)
+            .filter(|p| p[3] == 255);
+        assert_eq!(shown.count(), n as usize, "row {r}");
+        assert!(
+            run.rgba()[r * row..(r + 1) * row]
+                .chunks_exact(4)
+                .all(|p| p[3] == 255)
+        );
+    }
+}
+
+/// Local maxima above `threshold`: the stripes a row crosses.
+fn stripes(row: &[f32], threshold: f32) -> usize {
+    (1..row.len() - 1)
+        .filter(|&i| row[i] > threshold && row[i] >= row[i - 1] && row[i] > row[i + 1])
+        .count()
+}
+
+/// The mean wavelength (shell units) over each half of the rows from `from` on, and the
+/// stripes on every tenth row.
+fn wavelengths(spec: &ShellSpec, rims: &[f64], from: usize) -> ([f64; 2], Vec<usize>) {
+    let mut run: PatternRun = pattern_alone(spec).unwrap().unwrap();
+    let mut counts = Vec::new();
+    let mut sums = [(0.0, 0); 2];
+    let middle = (from + rims.len()) / 2;
+    while run.rows() < rims.len() {
+        run.advance().unwrap();
+        let r = run.rows() - 1;
+        if r >= from && r.is_multiple_of(10) {
+            let n = stripes(run.recorded(), 1.5).max(1);
+            counts.push(n);
+            let half = &mut sums[usize::from(r >= middle)];
+            half.0 += rims[r] / n as f64;
+            half.1 += 1;
+        }
+    }
+    (sums.map(|(sum, n)| sum / f64::from(n)), counts)
+}
+
+/// On a fixed edge each of fig 11's stripes widens with the rim; on a growing edge new
+/// stripes appear between the old ones as the rim lengthens, so the wavelength in absolute
+/// length keeps to a saw-tooth about one value (a new stripe fits once a gap has about
+/// doubled): its mean over the first half of the rows where stripes have room and over the
+/// second half agree within 10 %.
+#[test]
+fn fig_11_stripes_keep_their_wavelength_as_the_rim_grows() {
+    let (mut spec, rims) = growing_stripes();
+    let from = rims
+        .iter()
+        .position(|&l| l > rims.last().unwrap() / 4.0)
+        .unwrap();
+    let ([early, late], counts) = wavelengths(&spec, &rims, from);
+    assert!(
+        (late / early - 1.0).abs() < 0.1,
+        "growing edge: wavelength {early:.3} then {late:.3}"
+    );
+    let (first, last) = (counts[0], *counts.last().unwrap());
+    assert!(last >= 3 * first, "the stripes multiply: {first} to {last}");
+    let branchings = counts.windows(2).filter(|w| w[1] > w[0]).count();
+    assert!(branchings >= 2, "new stripes appear {branchings} times");
+    spec.pattern.edge_growth = EdgeGrowth::Off;
+    let ([early, late], _) = wavelengths(&spec, &rims, from);
+    assert!(
+        late > 1.8 * early,
+        "fixed edge: wavelength {early:.3} then {late:.3}"
+    );
+}
+
+#[test]
+fn a_growing_edge_gives_the_same_bits_however_the_growth_is_cut() {
+    for id in [
+        "stripes",
+        "oliva-porphyria",
+        "ca-trochidae",
+        "kawaguchi-painted",
+        "conus-marmoreus",
+    ] {
+        let mut spec = spec_of(id);
+        spec.pattern.edge_growth = EdgeGrowth::Uniform;
+        spec.growth.rows = spec.growth.rows.min(600);
+        let mut whole = Generator::new(&spec).unwrap();
+        whole.finish();
+        let mut pieces = Generator::new(&spec).unwrap();
+        let mut step = 1;
+        while !pieces.is_done() {
+            pieces.advance(step);
+            step = step % 7 + 1;
+        }
+        let (a, b) = (whole.pattern().unwrap(), pieces.pattern().unwrap());
+        assert_eq!(a.hash(), b.hash(), "{id}");
+        assert_eq!(a.widths(), b.widths(), "{id}");
+        assert!(
+            a.widths()[0] < a.widths()[a.widths().len() - 1],
+            "{id}: the edge grows"
+        );
+        let mut alone = pattern_alone(&spec).unwrap().unwrap();
+        while alone.rows() < a.rows() {
+            alone.advance().unwrap();
+        }
+        assert_eq!(
+            alone.hash(),
+            a.hash(),
+            "{id}: the preview's pattern is the shell's"
+        );
+    }
+}
+
+#[test]
+fn a_form_without_one_growing_edge_refuses_edge_growth_by_name() {
+    for id in ["murex-rd-spines", "kawaguchi-tendril"] {
+        let mut spec = spec_of(id);
+        if spec.pattern.model == seashells_core::spec::pattern::Model::None {
+            spec.pattern = spec_of("stripes").pattern;
+        }
+        spec.pattern.edge_growth = EdgeGrowth::Uniform;
+        match Generator::new(&spec) {
+            Err(BuildError::Pattern(e)) => {
+                assert!(e.0.contains("pattern.edge_growth"), "{id}: {e}")
+            }
+            Err(e) => panic!("{id}: {e}"),
+            Ok(_) => panic!("{id}: grown with edge growth"),
+        }
+        // A link asking for it opens with edge growth off, and says why.
+        let decoded = decode(&format!("v=1&preset={id}&pattern.edge_growth=uniform"));
+        assert_eq!(decoded.spec.pattern.edge_growth, EdgeGrowth::Off, "{id}");
+        assert!(
+            decoded
+                .problems
+                .iter()
+                .any(|p| p.key == "pattern.edge_growth"),
+            "{id}: {:?}",
+            decoded.problems
+        );
+    }
+    // Each form says whether it has one growing edge, and its shape agrees.
+    for p in presets()
+        .iter()
+        .filter(|p| p.spec.form.kind() != "implicit")
+    {
+        let shape = shape_for(&p.spec, 8).unwrap();
+        assert_eq!(
+            has_one_growing_edge(&p.spec.form),
+            shape.rim_length(0).is_some(),
+            "{}",
+            p.id
+        );
+    }
+}
