@@ -1,4 +1,5 @@
-//! The benchmark (figures, not a test): cell updates per second of each pattern model, the
+//! The benchmark (figures, not a test): cell updates per second of each pattern model (and of
+//! one on a fixed and on a growing edge), the
 //! time of one animation frame's growth for each species at its default speed, and the
 //! implicit-surface modeller (field evaluations, whole polygonizations, frames of growth), and
 //! the exports of the Murex written step by step (the whole file, and the longest step). The
@@ -14,19 +15,21 @@ use crate::export::job::Export;
 use crate::export::print_size::PrintSize;
 use crate::export::shell::Shell;
 use crate::forms::murex::whorl::whorl;
-use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
+use crate::generator::{GROWTH_BUDGET_MS, Generator, pattern_alone, within};
 use crate::pattern::build;
 use crate::presets::{Preset, presets};
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;
 use crate::spec::form::implicit::ImplicitSpec;
-use crate::spec::pattern::Model;
+use crate::spec::pattern::{EdgeGrowth, Model};
 use std::fmt::Write;
 
 /// Frames timed per species, in each of the [`REPEATS`] growths.
 const FRAMES: usize = 120;
 /// The preset whose whole pattern is timed, as the live preview redraws it.
 const WHOLE_PATTERN: &str = "oliva-porphyria";
+/// The preset whose whole pattern is timed on a fixed and on a growing edge.
+const EDGE_GROWTH: &str = "stripes";
 
 /// One measured figure.
 #[derive(Clone, Debug, PartialEq)]
@@ -82,6 +85,7 @@ pub fn run(now: &dyn Fn() -> f64) -> Vec<Figure> {
         }
     }
     figures.extend(whole_pattern(now));
+    figures.extend(edge_growth(now));
     for preset in patterned() {
         figures.extend(growth_frames(now, preset));
     }
@@ -130,6 +134,43 @@ fn whole_pattern(now: &dyn Fn() -> f64) -> Option<Figure> {
         unit: "ms",
         spread: Some(spread),
     })
+}
+
+/// The whole pattern of [`EDGE_GROWTH`] on a fixed edge and on a growing one, each in cell
+/// updates per second over all its rows (cells × iterations summed row by row), so that the
+/// cost of the divisions shows as the ratio of the two.
+fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
+    let Some(preset) = presets().iter().find(|p| p.id == EDGE_GROWTH) else {
+        return Vec::new();
+    };
+    [EdgeGrowth::Off, EdgeGrowth::Uniform]
+        .into_iter()
+        .filter_map(|growth| {
+            let mut spec = preset.spec.clone();
+            spec.pattern.edge_growth = growth;
+            let rows = spec.growth.rows as usize;
+            let mut updates = 0u64;
+            let mut complete = true;
+            let (ms, spread) = timed(now, || {
+                updates = 0;
+                let Ok(Some(mut run)) = pattern_alone(&spec) else {
+                    complete = false;
+                    return;
+                };
+                while run.rows() < rows && complete {
+                    complete &= run.advance().is_ok();
+                    updates += run.recorded().len() as u64;
+                }
+            });
+            let per_row = u64::from(spec.pattern.iterations);
+            complete.then(|| Figure {
+                what: format!("{EDGE_GROWTH} whole pattern, edge growth {growth:?}"),
+                value: (updates * per_row) as f64 / ms / 1e3,
+                unit: "M cell updates/s",
+                spread: Some(spread),
+            })
+        })
+        .collect()
 }
 
 /// The growth of `preset` at its default speed, [`FRAMES`] frames from the start, grown

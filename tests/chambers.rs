@@ -360,14 +360,7 @@ fn sinistral_stacks_mirror_dextral_ones() {
 #[test]
 fn growth_is_deterministic_whatever_the_chunks() {
     let spec = spec_of("kawaguchi-painted");
-    let mut whole = Generator::new(&spec).unwrap();
-    whole.finish();
-    let mut pieces = Generator::new(&spec).unwrap();
-    let mut step = 1;
-    while !pieces.is_done() {
-        pieces.advance(step);
-        step = step % 5 + 1;
-    }
+    let (whole, pieces) = common::grown_whole_and_in_chunks(&spec);
     assert_eq!(pieces.mesh(), whole.mesh());
     assert_eq!(pieces.edge(), whole.edge());
     assert_eq!(

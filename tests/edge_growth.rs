@@ -5,6 +5,8 @@
 //! same seed gives the same bits however the growth is cut, and a form without one growing
 //! edge refuses the option by name.
 
+use crate::common;
+
 use seashells_core::forms::{has_one_growing_edge, shape_for};
 use seashells_core::generator::{BuildError, Generator, pattern_alone};
 use seashells_core::pattern::run::PatternRun;
@@ -173,14 +175,7 @@ fn a_growing_edge_gives_the_same_bits_however_the_growth_is_cut() {
         let mut spec = spec_of(id);
         spec.pattern.edge_growth = EdgeGrowth::Uniform;
         spec.growth.rows = spec.growth.rows.min(600);
-        let mut whole = Generator::new(&spec).unwrap();
-        whole.finish();
-        let mut pieces = Generator::new(&spec).unwrap();
-        let mut step = 1;
-        while !pieces.is_done() {
-            pieces.advance(step);
-            step = step % 7 + 1;
-        }
+        let (whole, pieces) = common::grown_whole_and_in_chunks(&spec);
         let (a, b) = (whole.pattern().unwrap(), pieces.pattern().unwrap());
         assert_eq!(a.hash(), b.hash(), "{id}");
         assert_eq!(a.widths(), b.widths(), "{id}");

@@ -460,6 +460,7 @@ fn edge_delta(edge: EdgeWrites) -> Delta {
     Delta {
         rows: 0..0,
         rgba: Vec::new(),
+        widths: Vec::new(),
         first_vertex: 0,
         vertices: Vec::new(),
         first_index: 0,

@@ -13,7 +13,7 @@
 //! its waves alive by branching when the hormone lets the inhibitor decay fast.
 
 use super::diffusion;
-use super::edge_growth::{daughter_rho, insert_mean};
+use super::edge_growth;
 use super::edge_model::{EdgeModel, PatternError, check_finite};
 use super::grid::Grid;
 use super::noise::Noise;
@@ -141,13 +141,16 @@ impl EdgeModel for ActivatorInhibitor {
     }
 
     fn divide(&mut self, cell: usize, noise: &mut Noise) {
-        let b = self.grid.boundary;
-        insert_mean(&mut self.a, cell, b);
-        insert_mean(&mut self.h, cell, b);
-        let rho = daughter_rho(noise, self.p.rho, self.p.rho_noise);
-        self.rho_dt.insert(cell + 1, self.grid.per_step([rho])[0]);
-        self.next_a.push(0.0);
-        self.next_h.push(0.0);
-        self.grid.cells += 1;
+        edge_growth::divide(
+            cell,
+            [
+                &mut [&mut self.a, &mut self.h],
+                &mut [&mut self.next_a, &mut self.next_h],
+            ],
+            &mut self.rho_dt,
+            (self.p.rho, self.p.rho_noise),
+            &mut self.grid,
+            noise,
+        );
     }
 }

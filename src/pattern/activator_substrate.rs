@@ -14,7 +14,7 @@
 //! *Amoria* and the stripes with waves of *Volutoconus*.
 
 use super::diffusion;
-use super::edge_growth::{daughter_rho, insert_mean};
+use super::edge_growth;
 use super::edge_model::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use super::grid::Grid;
 use super::noise::Noise;
@@ -111,14 +111,16 @@ impl EdgeModel for ActivatorSubstrate {
     }
 
     fn divide(&mut self, cell: usize, noise: &mut Noise) {
-        let b = self.grid.boundary;
-        insert_mean(&mut self.a, cell, b);
-        insert_mean(&mut self.s, cell, b);
-        insert_mean(&mut self.sigma_dt, cell, b);
-        let rho = daughter_rho(noise, self.p.rho, self.p.rho_noise);
-        self.rho_dt.insert(cell + 1, self.grid.per_step([rho])[0]);
-        self.next_a.push(0.0);
-        self.next_s.push(0.0);
-        self.grid.cells += 1;
+        edge_growth::divide(
+            cell,
+            [
+                &mut [&mut self.a, &mut self.s, &mut self.sigma_dt],
+                &mut [&mut self.next_a, &mut self.next_s],
+            ],
+            &mut self.rho_dt,
+            (self.p.rho, self.p.rho_noise),
+            &mut self.grid,
+            noise,
+        );
     }
 }

@@ -25,7 +25,7 @@
 //! Explicit Euler with Δt = Δx = 1 (unrefined), as for the paper's models.
 
 use super::diffusion;
-use super::edge_growth::{daughter_rho, insert_mean};
+use super::edge_growth;
 use super::edge_model::{EdgeModel, PatternError, check_finite, check_nonnegative};
 use super::grid::Grid;
 use super::noise::Noise;
@@ -133,15 +133,16 @@ impl EdgeModel for Coupled {
     }
 
     fn divide(&mut self, cell: usize, noise: &mut Noise) {
-        let b = self.grid.boundary;
-        insert_mean(&mut self.a, cell, b);
-        insert_mean(&mut self.e, cell, b);
-        insert_mean(&mut self.f, cell, b);
-        let rho = daughter_rho(noise, self.p.rho, self.p.rho_noise);
-        self.rho_dt.insert(cell + 1, self.grid.per_step([rho])[0]);
-        self.next_a.push(0.0);
-        self.next_e.push(0.0);
-        self.next_f.push(0.0);
-        self.grid.cells += 1;
+        edge_growth::divide(
+            cell,
+            [
+                &mut [&mut self.a, &mut self.e, &mut self.f],
+                &mut [&mut self.next_a, &mut self.next_e, &mut self.next_f],
+            ],
+            &mut self.rho_dt,
+            (self.p.rho, self.p.rho_noise),
+            &mut self.grid,
+            noise,
+        );
     }
 }

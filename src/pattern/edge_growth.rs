@@ -16,6 +16,7 @@
 //! edge, a sequence that never clusters.
 
 use super::edge_model::PatternError;
+use super::grid::Grid;
 use super::noise::Noise;
 use crate::spec::pattern::Boundary;
 
@@ -64,7 +65,7 @@ impl Divisions {
 
 /// A daughter after cell `c` of `v`: the mean of `c` and the cell after it (the ring's first
 /// after the last on a periodic edge; `c` itself after the last on a zero-flux edge).
-pub(crate) fn insert_mean(v: &mut Vec<f32>, c: usize, boundary: Boundary) {
+fn insert_mean(v: &mut Vec<f32>, c: usize, boundary: Boundary) {
     let next = match boundary {
         _ if c + 1 < v.len() => v[c + 1],
         Boundary::Periodic => v[0],
@@ -78,10 +79,29 @@ pub(crate) fn insert_copy<T: Copy>(v: &mut Vec<T>, c: usize) {
     v.insert(c + 1, v[c]);
 }
 
-/// The random fluctuation of ρ a daughter is born with (as each cell's at the start, see
-/// [`Noise::fluctuating`]), from the seed's stream for divisions.
-pub(crate) fn daughter_rho(noise: &mut Noise, rho: f64, fraction: f64) -> f32 {
-    noise.fluctuating(rho, fraction, 1)[0]
+/// Cell `cell` of a reaction-diffusion model divides: a daughter after it in each of its
+/// `fields` takes the mean of its neighbours; its Δt·ρ in `rho_dt` is drawn from `noise` with
+/// ρ's fluctuation `(ρ, fraction)`, as each cell's is at the start (see
+/// [`Noise::fluctuating`]); each next-step buffer in `next` and the `grid` grow by one cell.
+pub(crate) fn divide(
+    cell: usize,
+    [fields, next]: [&mut [&mut Vec<f32>]; 2],
+    rho_dt: &mut Vec<f32>,
+    (rho, fraction): (f64, f64),
+    grid: &mut Grid,
+    noise: &mut Noise,
+) {
+    for field in fields {
+        insert_mean(field, cell, grid.boundary);
+    }
+    for buffer in next {
+        buffer.push(0.0);
+    }
+    rho_dt.insert(
+        cell + 1,
+        grid.per_step(noise.fluctuating(rho, fraction, 1))[0],
+    );
+    grid.cells += 1;
 }
 
 #[cfg(test)]

@@ -158,27 +158,9 @@ impl PatternRun {
         self.cells
     }
 
-    /// The rows as the planar view shows them: each of its cells one texel, the row centred,
-    /// the texels beyond its ends transparent, so that a growing edge's pattern widens as a
-    /// fan (the same as [`Self::rgba`] on a fixed edge). Cell i of a row of n is the texel
-    /// (2i + 1)·cells / 2n of its stretched row, the one nearest its centre.
+    /// The rows as the planar view shows them (see [`planar_rows`]).
     pub fn planar(&self) -> Vec<u8> {
-        let mut out = vec![0u8; self.rgba.len()];
-        let row_bytes = self.cells * 4;
-        for ((row, stretched), &n) in out
-            .chunks_exact_mut(row_bytes)
-            .zip(self.rgba.chunks_exact(row_bytes))
-            .zip(&self.widths)
-        {
-            let n = n as usize;
-            let offset = (self.cells - n) / 2;
-            for i in 0..n {
-                let k = ((2 * i + 1) * self.cells) / (2 * n);
-                let at = 4 * (offset + i);
-                row[at..at + 4].copy_from_slice(&stretched[4 * k..4 * k + 4]);
-            }
-        }
-        out
+        planar_rows(&self.rgba, &self.widths, self.cells)
     }
 
     /// Cells the model computed on each row recorded: `cells` on a fixed edge, fewer before
@@ -206,4 +188,28 @@ impl PatternRun {
     pub fn hash(&self) -> u64 {
         self.hash.value()
     }
+}
+
+/// Rows of `cells` RGBA texels as the planar view shows them, each row's `widths[r]` cells one
+/// texel each, the row centred, the texels beyond its ends transparent: a growing edge's
+/// pattern widens as a fan (rows as wide as `cells` are as they are). Cell i of a row of n is
+/// the texel (2i + 1)·cells / 2n of its stretched row, the one nearest its centre (see
+/// [`PatternRun::rgba`]).
+pub fn planar_rows(rgba: &[u8], widths: &[u32], cells: usize) -> Vec<u8> {
+    let mut out = vec![0u8; rgba.len()];
+    let row_bytes = cells * 4;
+    for ((row, stretched), &n) in out
+        .chunks_exact_mut(row_bytes)
+        .zip(rgba.chunks_exact(row_bytes))
+        .zip(widths)
+    {
+        let n = (n as usize).clamp(1, cells);
+        let offset = (cells - n) / 2;
+        for i in 0..n {
+            let k = ((2 * i + 1) * cells) / (2 * n);
+            let at = 4 * (offset + i);
+            row[at..at + 4].copy_from_slice(&stretched[4 * k..4 * k + 4]);
+        }
+    }
+    out
 }

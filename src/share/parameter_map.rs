@@ -121,9 +121,10 @@ pub struct Picture {
 }
 
 impl Picture {
-    /// The pattern of `run` averaged over blocks of `block` × `block` cells and rows.
+    /// The pattern of `run` as the planar view shows it, averaged over blocks of `block` ×
+    /// `block` cells and rows.
     fn of(run: &PatternRun, block: usize) -> Self {
-        let (cells, rows, rgba) = (run.cells(), run.rows(), run.rgba());
+        let (cells, rows, rgba) = (run.cells(), run.rows(), run.planar());
         let (width, height) = (cells.div_ceil(block), rows.div_ceil(block));
         let mut out = vec![0u8; width * height * 4];
         for (py, line) in out.chunks_exact_mut(width * 4).enumerate() {

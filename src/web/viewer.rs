@@ -23,6 +23,7 @@ use crate::export::estimate::Counts;
 use crate::export::print_size::PrintSize;
 use crate::generator::{Advance, GROWTH_BUDGET_MS};
 use crate::mesh::Bounds;
+use crate::pattern::run::planar_rows;
 use crate::pattern::texture_layout::TextureLayout;
 use crate::presets::Preset;
 use crate::render::{Canvas, Renderer, ShellLook};
@@ -480,7 +481,7 @@ impl Viewer {
             Took::Advanced(advance) => self.upload(&advance),
             Took::Previewed(reply) => {
                 let rows = g.spec.growth.rows;
-                self.previewed(reply, rows);
+                self.previewed(*reply, rows);
             }
         }
         self.dirty = true;
@@ -523,7 +524,7 @@ impl Viewer {
             self.planar_updates.extend([
                 PlanarUpdate::Rows {
                     first: advance.rows.start as u32,
-                    rgba: rgba.to_vec(),
+                    rgba: replica.planar(advance.rows.clone()),
                 },
                 PlanarUpdate::Follow(advance.rows.end as u32),
             ]);
@@ -556,6 +557,7 @@ impl Viewer {
             cells,
             first,
             rgba,
+            widths,
             state,
             failure,
         } = reply
@@ -582,6 +584,7 @@ impl Viewer {
             self.planar_updates
                 .push(PlanarUpdate::Open(Some((cells, rows))));
         }
+        let rgba = planar_rows(&rgba, &widths, cells as usize);
         self.planar_updates.push(PlanarUpdate::Rows { first, rgba });
     }
 
@@ -601,7 +604,7 @@ impl Viewer {
             self.planar_updates.extend([
                 PlanarUpdate::Rows {
                     first: 0,
-                    rgba: replica.rgba().to_vec(),
+                    rgba: replica.planar(0..replica.rgba().len() / (replica.cells() * 4).max(1)),
                 },
                 PlanarUpdate::Follow((replica.rgba().len() / (replica.cells() * 4).max(1)) as u32),
             ]);

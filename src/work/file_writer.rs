@@ -225,7 +225,7 @@ fn begin(what: Download, name: String, size: PrintSize, source: &Source) -> Resu
                 return Err("this shell has no pattern".into());
             }
             let rows = r.rgba().len() / (r.cells() * 4);
-            Export::pattern(r.cells(), rows, r.rgba().to_vec())
+            Export::pattern(r.cells(), rows, r.planar(0..rows))
         }
         Download::Mesh(format) => {
             let size = if format.sized() {

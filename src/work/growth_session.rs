@@ -19,7 +19,7 @@ pub enum Took {
     /// Growth moved on by this.
     Advanced(Advance),
     /// A pattern preview's rows, for the viewer's preview.
-    Previewed(Reply),
+    Previewed(Box<Reply>),
 }
 
 /// A shell grown on a worker under one session number.
@@ -170,7 +170,7 @@ impl GrowthSession {
                 }
                 return Ok(Took::Nothing);
             }
-            reply @ Reply::Previewed { .. } => return Ok(Took::Previewed(reply)),
+            reply @ Reply::Previewed { .. } => return Ok(Took::Previewed(Box::new(reply))),
             Reply::Made { job, meshes, hash } => {
                 let Request::Pieces { link, .. } = request else {
                     return Ok(Took::Nothing);

@@ -107,13 +107,17 @@ impl Growth {
             self.grown.include_vertices(&edge.vertices);
             self.sent_edge.update(edge, &generator.edge_parts())
         });
-        let rgba = generator.pattern().map_or(Vec::new(), |p| {
+        let (rgba, widths) = generator.pattern().map_or_else(Default::default, |p| {
             let row = p.cells() * 4;
-            p.rgba()[advance.rows.start * row..advance.rows.end * row].to_vec()
+            (
+                p.rgba()[advance.rows.start * row..advance.rows.end * row].to_vec(),
+                p.widths()[advance.rows.clone()].to_vec(),
+            )
         });
         Delta {
             rows: advance.rows.start as u32..advance.rows.end as u32,
             rgba,
+            widths,
             first_vertex: advance.vertices.start as u32,
             vertices: mesh.vertices[advance.vertices.clone()].to_vec(),
             first_index: advance.indices.start as u32,
@@ -290,6 +294,7 @@ impl Host {
                             cells: run.cells() as u32,
                             first: 0,
                             rgba: run.rgba().to_vec(),
+                            widths: run.widths().to_vec(),
                             state: PreviewState::Filling,
                             failure: None,
                         };
@@ -308,6 +313,7 @@ impl Host {
                             cells: 0,
                             first: 0,
                             rgba: Vec::new(),
+                            widths: Vec::new(),
                             state: if failure.is_some() {
                                 PreviewState::Stopped
                             } else {
@@ -329,6 +335,7 @@ impl Host {
                         cells: run.cells() as u32,
                         first: first as u32,
                         rgba: run.rgba()[first * row..].to_vec(),
+                        widths: run.widths()[first..].to_vec(),
                         state: preview.state(),
                         failure: failure
                             .map(|e| format!("With these values the pattern stops {e}.")),
@@ -421,15 +428,16 @@ impl Host {
                 if !generator.is_done() {
                     return Err(Job::Whole { job, generator });
                 }
-                let rgba = generator
-                    .pattern()
-                    .map_or(Vec::new(), |p| p.rgba().to_vec());
+                let (rgba, widths) = generator.pattern().map_or_else(Default::default, |p| {
+                    (p.rgba().to_vec(), p.widths().to_vec())
+                });
                 Ok(Reply::Grown {
                     job,
                     result: Ok(WholeShell {
                         shell: shell_info(&generator),
                         mesh: generator.snapshot(),
                         rgba,
+                        widths,
                     }),
                 })
             }

@@ -89,10 +89,12 @@ pub struct Progress {
 /// What one request added to a growing shell.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Delta {
-    /// The pattern rows added, and their RGBA.
+    /// The pattern rows added, their RGBA, and the cells each has (see
+    /// [`crate::pattern::run::PatternRun::widths`]).
     pub rows: Range<u32>,
     #[serde(with = "crate::pod_bytes")]
     pub rgba: Vec<u8>,
+    pub widths: Vec<u32>,
     /// The vertices added to the permanent mesh, the first being number `first_vertex`.
     pub first_vertex: u32,
     #[serde(with = "crate::pod_bytes")]
@@ -116,6 +118,7 @@ pub struct WholeShell {
     pub mesh: Mesh,
     #[serde(with = "crate::pod_bytes")]
     pub rgba: Vec<u8>,
+    pub widths: Vec<u32>,
 }
 
 /// What a worker sends back.
@@ -146,14 +149,15 @@ pub enum Reply {
         indices: u32,
     },
     /// Rows of the previewed pattern: `rgba` holds rows `first..` of `cells` cells (0 when the
-    /// values give no pattern model); `failure` says in words why it stopped, or why there is
-    /// no pattern.
+    /// values give no pattern model), `widths` the cells each computed; `failure` says in
+    /// words why it stopped, or why there is no pattern.
     Previewed {
         session: u32,
         cells: u32,
         first: u32,
         #[serde(with = "crate::pod_bytes")]
         rgba: Vec<u8>,
+        widths: Vec<u32>,
         state: PreviewState,
         failure: Option<String>,
     },

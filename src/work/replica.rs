@@ -11,8 +11,10 @@ use crate::export::paint::PatternImage;
 use crate::export::shell::Grown;
 use crate::generator::{Advance, EdgeRuns};
 use crate::mesh::{Bounds, Mesh};
+use crate::pattern::run::planar_rows;
 use crate::shape::Pieces;
 use std::fmt;
+use std::ops::Range;
 
 /// A delta that does not continue the copy (a bug: each worker answers in order).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -53,6 +55,8 @@ pub struct Replica {
     mesh: Mesh,
     edge: SlottedEdge,
     rgba: Vec<u8>,
+    /// Cells computed on each pattern row (see [`crate::pattern::run::PatternRun::widths`]).
+    widths: Vec<u32>,
     rows_grown: usize,
     grown: Bounds,
     progress: Progress,
@@ -68,6 +72,7 @@ impl Replica {
             mesh: Mesh::default(),
             edge: SlottedEdge::default(),
             rgba: Vec::new(),
+            widths: Vec::new(),
             rows_grown: 0,
             grown: Bounds::EMPTY,
             progress: Progress::default(),
@@ -88,6 +93,7 @@ impl Replica {
             mesh: whole.mesh,
             edge: SlottedEdge::default(),
             rgba: whole.rgba,
+            widths: whole.widths,
             rows_grown: rows as usize,
             grown,
             progress: Progress {
@@ -140,6 +146,7 @@ impl Replica {
         self.mesh.vertices.extend_from_slice(&delta.vertices);
         self.mesh.indices.extend_from_slice(&delta.indices);
         self.rgba.extend_from_slice(&delta.rgba);
+        self.widths.extend_from_slice(&delta.widths);
         self.rows_grown = delta.rows.end as usize;
         let edge = delta.edge.map(|writes| self.edge.apply(&writes));
         self.grown = delta.grown;
@@ -247,6 +254,14 @@ impl Replica {
     /// The pattern's rows so far, `cells() × 4` bytes each.
     pub fn rgba(&self) -> &[u8] {
         &self.rgba
+    }
+
+    /// Rows `rows` of the pattern as the planar view shows them, each as long as its cells
+    /// (see [`planar_rows`]).
+    pub fn planar(&self, rows: Range<usize>) -> Vec<u8> {
+        let row = self.cells() * 4;
+        let rgba = &self.rgba[rows.start * row..rows.end * row];
+        planar_rows(rgba, &self.widths[rows], self.cells())
     }
 
     /// Cells of a pattern row, 0 without a pattern (or before the shell is built).

@@ -3,6 +3,7 @@
 
 use glam::DVec3;
 use seashells_core::forms::murex::check::check;
+use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::share::repair::repair;
 use seashells_core::spec::ShellSpec;
@@ -156,4 +157,18 @@ pub fn assert_refused_and_repaired(mut spoiled: ShellSpec, base: &ShellSpec, key
         "{key}: {problems:?}"
     );
     assert!(check(implicit(&mut spoiled)).is_ok(), "{key}: repaired");
+}
+
+/// `spec` grown at once, and grown again in chunks of one to seven rows in turn: the two must
+/// agree bit for bit.
+pub fn grown_whole_and_in_chunks(spec: &ShellSpec) -> (Generator, Generator) {
+    let mut whole = Generator::new(spec).unwrap();
+    whole.finish();
+    let mut pieces = Generator::new(spec).unwrap();
+    let mut step = 1;
+    while !pieces.is_done() {
+        pieces.advance(step);
+        step = step % 7 + 1;
+    }
+    (whole, pieces)
 }

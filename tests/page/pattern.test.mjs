@@ -1,5 +1,6 @@
 // The pattern the page grows is bit for bit the one the native core computes (the same hash
-// from the wasm build), the planar view shows it, and it can be downloaded as a PNG.
+// from the wasm build, on a fixed and on a growing edge), the planar view shows it (a growing
+// edge's as a fan), and it can be downloaded as a PNG.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -23,6 +24,7 @@ const LINKS = [
   'v=1&preset=conus-marmoreus',
   'v=1&preset=amoria-undulata&pattern.model.d_a=0.006&seed=9',
   'v=1&preset=kawaguchi-painted',
+  'v=1&preset=stripes-growing-edge',
 ];
 
 for (const fragment of LINKS) {
@@ -138,6 +140,34 @@ test('the parameter map fills a grid of patterns, and a chosen tile opens that s
       assert.ok(chosen.href.includes(`${key}=${shown}`), `${chosen.href} has ${key}=${shown}`);
     }
     assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test("a growing edge's planar view widens as a fan, and downloads as one", async () => {
+  const { page } = await open(browser, `${base}#v=1&preset=stripes-growing-edge&growth.speed=200`);
+  try {
+    await waitForState(page, ['grown']);
+    // The drawn (opaque) cells of a row, near the apex and at the lip.
+    const widths = await page.evaluate(() => {
+      const c = document.getElementById('planar');
+      const row = (y) => {
+        const { data } = c.getContext('2d').getImageData(0, y, c.width, 1);
+        let drawn = 0;
+        for (let i = 3; i < data.length; i += 4) drawn += data[i] === 255 ? 1 : 0;
+        return drawn;
+      };
+      return [row(0), row(Math.floor(c.height / 2)), row(c.height - 1), c.width];
+    });
+    const [apex, middle, lip, width] = widths;
+    assert.equal(lip, width, `the last row is the whole edge: ${widths}`);
+    assert.ok(apex * 10 < lip && apex < middle && middle < lip, `rows widen: ${widths}`);
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-pattern')]);
+    const file = `${SHOTS}stripes-growing-edge-pattern.png`;
+    await download.saveAs(file);
+    const png = readFileSync(file);
+    assert.deepEqual([png.readUInt32BE(16), png.readUInt32BE(20)], [180, 2100]);
   } finally {
     await page.close();
   }
