@@ -236,3 +236,31 @@ fn a_form_without_one_growing_edge_refuses_edge_growth_by_name() {
         );
     }
 }
+
+/// The RGBA's rows are as wide as the cells the model computes on the last row: the spec's
+/// cells times the refinement k of a reaction-diffusion model, and the automaton's own (which
+/// is not refined), on a fixed edge and on a growing one.
+#[test]
+fn the_rows_are_as_wide_as_the_last_rows_computed_cells_whatever_the_refinement() {
+    for (id, refined) in [("stripes", 2), ("ca-trochidae", 1)] {
+        for growth in [EdgeGrowth::Off, EdgeGrowth::Uniform] {
+            let mut spec = spec_of(id);
+            spec.pattern.refinement = 2;
+            spec.pattern.edge_growth = growth;
+            spec.growth.rows = 300;
+            let mut run = pattern_alone(&spec).unwrap().unwrap();
+            while run.rows() < 300 {
+                run.advance().unwrap();
+            }
+            let cells = spec.pattern.cells as usize * refined;
+            assert_eq!(run.cells(), cells, "{id}, {growth:?}");
+            assert_eq!(run.recorded().len(), cells, "{id}, {growth:?}");
+            assert_eq!(run.rgba().len(), 300 * cells * 4, "{id}, {growth:?}");
+            assert_eq!(
+                *run.widths().last().unwrap() as usize,
+                cells,
+                "{id}, {growth:?}"
+            );
+        }
+    }
+}

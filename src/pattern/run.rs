@@ -50,10 +50,9 @@ impl PatternRun {
         spec: &ShellSpec,
         rim: impl Fn(usize) -> Option<f64>,
     ) -> Result<Option<Self>, PatternError> {
-        let refinement = spec.pattern.refinement.max(1) as usize;
-        let (pattern, growth) = match spec.pattern.edge_growth {
-            _ if spec.pattern.model == Model::None => (spec.pattern.clone(), None),
+        let (pattern, counts) = match spec.pattern.edge_growth {
             EdgeGrowth::Off => (spec.pattern.clone(), None),
+            _ if spec.pattern.model == Model::None => (spec.pattern.clone(), None),
             EdgeGrowth::Uniform => {
                 let rows = spec.growth.rows.max(2) as usize;
                 let rims = (0..rows).map(&rim).collect::<Option<Vec<f64>>>().ok_or_else(|| {
@@ -71,18 +70,23 @@ impl PatternRun {
                         *c = (at / u64::from(spec.pattern.cells.max(1))) as u32;
                     }
                 }
-                let growth = Growth {
-                    counts: counts.iter().map(|&n| n as usize * refinement).collect(),
-                    divisions: Divisions::default(),
-                    noise: Noise::new(spec.seed, DAUGHTERS),
-                };
-                (first, Some(Box::new(growth)))
+                (first, Some(counts))
             }
         };
         let Some(model) = build(&pattern, spec.seed)? else {
             return Ok(None);
         };
-        let cells = spec.pattern.cells as usize * refinement;
+        // Cells the model computes per cell of the spec: the refinement k of a
+        // reaction-diffusion model, 1 for the automaton.
+        let per_cell = model.recorded().len() / pattern.cells.max(1) as usize;
+        let cells = spec.pattern.cells as usize * per_cell;
+        let growth = counts.map(|counts| {
+            Box::new(Growth {
+                counts: counts.iter().map(|&n| n as usize * per_cell).collect(),
+                divisions: Divisions::default(),
+                noise: Noise::new(spec.seed, DAUGHTERS),
+            })
+        });
         let mut run = Self {
             model,
             ground: spec.colours.ground,
