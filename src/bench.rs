@@ -15,8 +15,10 @@ use crate::export::job::Export;
 use crate::export::print_size::PrintSize;
 use crate::export::shell::Shell;
 use crate::forms::murex::whorl::whorl;
-use crate::generator::{GROWTH_BUDGET_MS, Generator, pattern_alone, within};
+use crate::forms::shape_for;
+use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;
+use crate::pattern::run::PatternRun;
 use crate::presets::{Preset, presets};
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;
@@ -138,22 +140,30 @@ fn whole_pattern(now: &dyn Fn() -> f64) -> Option<Figure> {
 
 /// The whole pattern of [`EDGE_GROWTH`] on a fixed edge and on a growing one, each in cell
 /// updates per second over all its rows (cells × iterations summed row by row), so that the
-/// cost of the divisions shows as the ratio of the two.
+/// cost of the divisions shows as the ratio of the two; and the time the form takes to give
+/// the rim's length on every row, which a growing edge needs once before its first row.
 fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
     let Some(preset) = presets().iter().find(|p| p.id == EDGE_GROWTH) else {
         return Vec::new();
     };
-    [EdgeGrowth::Off, EdgeGrowth::Uniform]
+    let rows = preset.spec.growth.rows as usize;
+    let Ok(shape) = shape_for(&preset.spec, rows) else {
+        return Vec::new();
+    };
+    let mut rims = Vec::new();
+    let (rim_ms, rim_spread) = timed(now, || {
+        rims = (0..rows).map(|r| shape.rim_length(r)).collect::<Vec<_>>();
+    });
+    let mut figures: Vec<Figure> = [EdgeGrowth::Off, EdgeGrowth::Uniform]
         .into_iter()
         .filter_map(|growth| {
             let mut spec = preset.spec.clone();
             spec.pattern.edge_growth = growth;
-            let rows = spec.growth.rows as usize;
             let mut updates = 0u64;
             let mut complete = true;
             let (ms, spread) = timed(now, || {
                 updates = 0;
-                let Ok(Some(mut run)) = pattern_alone(&spec) else {
+                let Ok(Some(mut run)) = PatternRun::new(&spec, |r| rims[r]) else {
                     complete = false;
                     return;
                 };
@@ -170,7 +180,14 @@ fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
                 spread: Some(spread),
             })
         })
-        .collect()
+        .collect();
+    figures.push(Figure {
+        what: format!("{EDGE_GROWTH} rim lengths of its {rows} rows"),
+        value: rim_ms,
+        unit: "ms",
+        spread: Some(rim_spread),
+    });
+    figures
 }
 
 /// The growth of `preset` at its default speed, [`FRAMES`] frames from the start, grown
