@@ -208,6 +208,10 @@ pub fn planar_rows(rgba: &[u8], widths: &[u32], cells: usize) -> Vec<u8> {
         .zip(widths)
     {
         let n = (n as usize).clamp(1, cells);
+        if n == cells {
+            row.copy_from_slice(stretched);
+            continue;
+        }
         let offset = (cells - n) / 2;
         for i in 0..n {
             let k = ((2 * i + 1) * cells) / (2 * n);
