@@ -1,5 +1,5 @@
-//! The benchmark (figures, not a test): cell updates per second of each pattern model (and of
-//! one on a fixed and on a growing edge), the
+//! The benchmark (figures, not a test): cell updates per second of each pattern model (and
+//! two whole patterns on a fixed and on a growing edge), the
 //! time of one animation frame's growth for each species at its default speed, and the
 //! implicit-surface modeller (field evaluations, whole polygonizations, frames of growth), and
 //! the exports of the Murex written step by step (the whole file, and the longest step). The
@@ -18,6 +18,7 @@ use crate::forms::murex::whorl::whorl;
 use crate::forms::shape_for;
 use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
 use crate::pattern::build;
+use crate::pattern::edge_growth::{Divisions, cell_counts};
 use crate::pattern::run::PatternRun;
 use crate::presets::{Preset, presets};
 use crate::spec::ShellSpec;
@@ -30,8 +31,8 @@ use std::fmt::Write;
 const FRAMES: usize = 120;
 /// The preset whose whole pattern is timed, as the live preview redraws it.
 const WHOLE_PATTERN: &str = "oliva-porphyria";
-/// The preset whose whole pattern is timed on a fixed and on a growing edge.
-const EDGE_GROWTH: &str = "stripes";
+/// The presets whose whole patterns are timed on a growing edge and on the paper's fixed one.
+const EDGE_GROWTH: [&str; 2] = ["stripes-growing-edge", "oliva-porphyria-growing-edge"];
 
 /// One measured figure.
 #[derive(Clone, Debug, PartialEq)]
@@ -138,55 +139,81 @@ fn whole_pattern(now: &dyn Fn() -> f64) -> Option<Figure> {
     })
 }
 
-/// The whole pattern of [`EDGE_GROWTH`] on a fixed edge and on a growing one, each in cell
-/// updates per second over all its rows (cells × iterations summed row by row), so that the
-/// cost of the divisions shows as the ratio of the two; and the time the form takes to give
-/// the rim's length on every row, which a growing edge needs once before its first row.
+/// The whole pattern of each of [`EDGE_GROWTH`] on the paper's fixed edge and on its growing
+/// one, in milliseconds for all its rows, as a user waits for it (the growing edge computes
+/// fewer cells on its early rows); its model built on the first row's cells and divided to
+/// the last row's without a step, what the divisions cost at most; and the time the form
+/// takes to give the rim's length on every row, which a growing edge needs once.
 fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
-    let Some(preset) = presets().iter().find(|p| p.id == EDGE_GROWTH) else {
-        return Vec::new();
-    };
-    let rows = preset.spec.growth.rows as usize;
-    let Ok(shape) = shape_for(&preset.spec, rows) else {
-        return Vec::new();
-    };
-    let mut rims = Vec::new();
-    let (rim_ms, rim_spread) = timed(now, || {
-        rims = (0..rows).map(|r| shape.rim_length(r)).collect::<Vec<_>>();
-    });
-    let mut figures: Vec<Figure> = [EdgeGrowth::Off, EdgeGrowth::Uniform]
-        .into_iter()
-        .filter_map(|growth| {
-            let mut spec = preset.spec.clone();
+    let mut figures = Vec::new();
+    for id in EDGE_GROWTH {
+        let Some(preset) = presets().iter().find(|p| p.id == id) else {
+            continue;
+        };
+        let spec = &preset.spec;
+        let rows = spec.growth.rows as usize;
+        let Ok(shape) = shape_for(spec, rows) else {
+            continue;
+        };
+        let mut rims = Vec::new();
+        let (rim_ms, rim_spread) = timed(now, || {
+            rims = (0..rows).map(|r| shape.rim_length(r)).collect::<Vec<_>>();
+        });
+        for (growth, what) in [
+            (EdgeGrowth::Off, "fixed edge (the paper's)"),
+            (EdgeGrowth::Uniform, "growing edge"),
+        ] {
+            let mut spec = spec.clone();
             spec.pattern.edge_growth = growth;
-            let mut updates = 0u64;
             let mut complete = true;
             let (ms, spread) = timed(now, || {
-                updates = 0;
                 let Ok(Some(mut run)) = PatternRun::new(&spec, |r| rims[r]) else {
                     complete = false;
                     return;
                 };
                 while run.rows() < rows && complete {
                     complete &= run.advance().is_ok();
-                    updates += run.recorded().len() as u64;
                 }
             });
-            let per_row = u64::from(spec.pattern.iterations);
-            complete.then(|| Figure {
-                what: format!("{EDGE_GROWTH} whole pattern, edge growth {growth:?}"),
-                value: (updates * per_row) as f64 / ms / 1e3,
-                unit: "M cell updates/s",
+            figures.extend(complete.then(|| Figure {
+                what: format!("{id} whole pattern ({rows} rows), {what}"),
+                value: ms,
+                unit: "ms",
                 spread: Some(spread),
-            })
-        })
-        .collect();
-    figures.push(Figure {
-        what: format!("{EDGE_GROWTH} rim lengths of its {rows} rows"),
-        value: rim_ms,
-        unit: "ms",
-        spread: Some(rim_spread),
-    });
+            }));
+        }
+        let Some(Ok(counts)) = rims
+            .iter()
+            .copied()
+            .collect::<Option<Vec<f64>>>()
+            .map(|rims| cell_counts(spec.pattern.cells, spec.pattern.apex_cells, &rims))
+        else {
+            continue;
+        };
+        let mut first = spec.pattern.clone();
+        first.cells = counts[0];
+        let last = counts[rows - 1] as usize * spec.pattern.refinement as usize;
+        let (ms, spread) = timed(now, || {
+            if let Ok(Some(mut model)) = build(&first, spec.seed) {
+                Divisions::new(spec.seed).divide_to(model.as_mut(), last);
+            }
+        });
+        figures.push(Figure {
+            what: format!(
+                "{id} model built on {} cells and divided to {last}, no step",
+                counts[0]
+            ),
+            value: ms,
+            unit: "ms",
+            spread: Some(spread),
+        });
+        figures.push(Figure {
+            what: format!("{id} rim lengths of its {rows} rows"),
+            value: rim_ms,
+            unit: "ms",
+            spread: Some(rim_spread),
+        });
+    }
     figures
 }
 

@@ -3,12 +3,13 @@
 //! `rows − 1` the opening). The cost of a call depends on the rows it adds, never on the age
 //! of the shell.
 
-use crate::forms::shape_for;
+use crate::forms::{has_one_growing_edge, shape_for};
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
 use crate::shape::{EdgePart, GrowingShape, LineGrid, Pieces, ShapeError};
 use crate::spec::ShellSpec;
+use crate::spec::form::Form;
 use crate::spec::pattern::EdgeGrowth;
 use glam::DVec3;
 use std::ops::Range;
@@ -114,16 +115,46 @@ impl std::error::Error for BuildError {
     }
 }
 
-/// The pattern of `spec` without its mesh (a preview, a map of parameters). Its form is built
-/// only for a growing edge, whose cells follow the rim.
-pub fn pattern_alone(spec: &ShellSpec) -> Result<Option<PatternRun>, BuildError> {
-    let rim: Box<dyn GrowingShape> = match spec.pattern.edge_growth {
-        EdgeGrowth::Off => return PatternRun::new(spec, |_| None).map_err(BuildError::Pattern),
-        EdgeGrowth::Uniform => {
-            shape_for(spec, spec.growth.rows.max(2) as usize).map_err(BuildError::Shape)?
+/// The rim's length on every row of one form grown in a number of rows, kept for the next
+/// pattern of the same form and rows: a preview redrawn at every step of a pattern's slider,
+/// or a parameter map's tiles over two values of the pattern, build the form once.
+#[derive(Default)]
+pub struct RimLengths {
+    of: Option<(Form, usize)>,
+    lengths: Vec<Option<f64>>,
+}
+
+impl RimLengths {
+    /// The rim's length on each of the `rows` rows of `spec`'s form; all `None` for a form
+    /// without one growing edge, which is not built for it.
+    fn of(&mut self, spec: &ShellSpec, rows: usize) -> Result<&[Option<f64>], ShapeError> {
+        if !matches!(&self.of, Some((form, r)) if *form == spec.form && *r == rows) {
+            self.lengths = if has_one_growing_edge(&spec.form) {
+                let shape = shape_for(spec, rows)?;
+                (0..rows).map(|row| shape.rim_length(row)).collect()
+            } else {
+                vec![None; rows]
+            };
+            self.of = Some((spec.form.clone(), rows));
         }
+        Ok(&self.lengths)
+    }
+}
+
+/// The pattern of `spec` without its mesh (a preview, a map of parameters). Its form is built
+/// only for a growing edge, whose cells follow the rim, and only when `rims` does not hold its
+/// rim's lengths already.
+pub fn pattern_alone(
+    spec: &ShellSpec,
+    rims: &mut RimLengths,
+) -> Result<Option<PatternRun>, BuildError> {
+    let lengths: &[Option<f64>] = match spec.pattern.edge_growth {
+        EdgeGrowth::Off => &[],
+        EdgeGrowth::Uniform => rims
+            .of(spec, spec.growth.rows.max(2) as usize)
+            .map_err(BuildError::Shape)?,
     };
-    PatternRun::new(spec, |row| rim.rim_length(row)).map_err(BuildError::Pattern)
+    PatternRun::new(spec, |row| lengths.get(row).copied().flatten()).map_err(BuildError::Pattern)
 }
 
 impl Generator {

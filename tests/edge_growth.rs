@@ -3,20 +3,28 @@
 //! rim, the stripes of fig 11's model keep their wavelength in absolute length from the apex to
 //! the lip (on a fixed edge it grows with the rim), new stripes appear between old ones, the
 //! same seed gives the same bits however the growth is cut, and a form without one growing
-//! edge refuses the option by name.
+//! edge refuses the option by name; fig 14's waves keep their density on a growing edge.
 
 use crate::common;
 
 use seashells_core::forms::{has_one_growing_edge, shape_for};
-use seashells_core::generator::{BuildError, Generator, pattern_alone};
+use seashells_core::generator::{BuildError, Generator, RimLengths, pattern_alone};
 use seashells_core::pattern::run::PatternRun;
 use seashells_core::presets::{preset, presets};
 use seashells_core::share::link::decode;
 use seashells_core::spec::ShellSpec;
+use seashells_core::spec::form::Form;
 use seashells_core::spec::pattern::EdgeGrowth;
 
 fn spec_of(id: &str) -> ShellSpec {
     preset(id).expect("preset").spec.clone()
+}
+
+/// The pattern of `spec` alone, its rim's lengths computed afresh.
+fn pattern_of(spec: &ShellSpec) -> PatternRun {
+    pattern_alone(spec, &mut RimLengths::default())
+        .unwrap()
+        .unwrap()
 }
 
 /// The hash of the first 300 rows of each patterned preset of a fixed edge, computed before
@@ -42,7 +50,7 @@ fn the_paper_presets_patterns_are_bit_for_bit_as_before_edge_growth() {
     for &(id, before) in BEFORE_EDGE_GROWTH {
         let spec = spec_of(id);
         assert_eq!(spec.pattern.edge_growth, EdgeGrowth::Off, "{id}");
-        let mut run = pattern_alone(&spec).unwrap().unwrap();
+        let mut run = pattern_of(&spec);
         for _ in 1..300 {
             run.advance().unwrap();
         }
@@ -67,7 +75,7 @@ fn growing_stripes() -> (ShellSpec, Vec<f64>) {
 #[test]
 fn the_cells_follow_the_rim_so_each_keeps_its_length() {
     let (spec, rims) = growing_stripes();
-    let mut run = pattern_alone(&spec).unwrap().unwrap();
+    let mut run = pattern_of(&spec);
     while run.rows() < rims.len() {
         run.advance().unwrap();
     }
@@ -116,7 +124,7 @@ fn stripes(row: &[f32], threshold: f32) -> usize {
 /// The mean wavelength (shell units) over each half of the rows from `from` on, and the
 /// stripes on every tenth row.
 fn wavelengths(spec: &ShellSpec, rims: &[f64], from: usize) -> ([f64; 2], Vec<usize>) {
-    let mut run: PatternRun = pattern_alone(spec).unwrap().unwrap();
+    let mut run: PatternRun = pattern_of(spec);
     let mut counts = Vec::new();
     let mut sums = [(0.0, 0); 2];
     let middle = (from + rims.len()) / 2;
@@ -183,7 +191,7 @@ fn a_growing_edge_gives_the_same_bits_however_the_growth_is_cut() {
             a.widths()[0] < a.widths()[a.widths().len() - 1],
             "{id}: the edge grows"
         );
-        let mut alone = pattern_alone(&spec).unwrap().unwrap();
+        let mut alone = pattern_of(&spec);
         while alone.rows() < a.rows() {
             alone.advance().unwrap();
         }
@@ -248,7 +256,7 @@ fn the_rows_are_as_wide_as_the_last_rows_computed_cells_whatever_the_refinement(
             spec.pattern.refinement = 2;
             spec.pattern.edge_growth = growth;
             spec.growth.rows = 300;
-            let mut run = pattern_alone(&spec).unwrap().unwrap();
+            let mut run = pattern_of(&spec);
             while run.rows() < 300 {
                 run.advance().unwrap();
             }
@@ -262,5 +270,89 @@ fn the_rows_are_as_wide_as_the_last_rows_computed_cells_whatever_the_refinement(
                 "{id}, {growth:?}"
             );
         }
+    }
+}
+
+/// The share of a row's cells that a wave of fig 14 has raised above 0.5, averaged over each
+/// row of `rows`, for `spec`'s pattern grown to its last row.
+fn wave_shares(spec: &ShellSpec, rows: &[std::ops::Range<usize>]) -> Vec<f64> {
+    let mut run = pattern_of(spec);
+    let mut sums = vec![0.0; rows.len()];
+    while run.rows() < spec.growth.rows as usize {
+        run.advance().unwrap();
+        let r = run.rows() - 1;
+        let row = run.recorded();
+        let share = row.iter().filter(|&&a| a > 0.5).count() as f64 / row.len() as f64;
+        for (sum, range) in sums.iter_mut().zip(rows) {
+            if range.contains(&r) {
+                *sum += share / range.len() as f64;
+            }
+        }
+    }
+    sums
+}
+
+/// Fig 14's Oliva on a growing edge: eq 9's hormone follows the mean activator, so as the
+/// cells divide and the waves thin out it lets more of them branch, and the share of cells a
+/// wave covers stays that of the fixed edge, for any seed. The apex holds 50 cells
+/// (`pattern.apex_cells`): on the one or two a rim from the apex has room for, the eight
+/// starting waves die out and never start again.
+#[test]
+fn fig_14_waves_keep_their_density_as_the_edge_grows() {
+    let grown = spec_of("oliva-porphyria-growing-edge");
+    assert_eq!(grown.pattern.edge_growth, EdgeGrowth::Uniform);
+    let rows = grown.growth.rows as usize;
+    // The rim has room for more than the apex's 50 cells from about row 1,950 of 2,900: the
+    // edge has about 110 to 170 cells over the middle rows, 260 to 400 over the late ones.
+    let (late, middle) = (rows - 300..rows, rows - 600..rows - 400);
+    for seed in 1..=3 {
+        let mut spec = grown.clone();
+        spec.seed = seed;
+        let mut fixed = spec_of("oliva-porphyria");
+        fixed.seed = seed;
+        let growing = wave_shares(&spec, &[late.clone(), middle.clone()]);
+        let paper = wave_shares(&fixed, std::slice::from_ref(&late))[0];
+        assert!(
+            paper > 0.05,
+            "seed {seed}: the paper's waves cover {paper:.3}"
+        );
+        for share in growing {
+            assert!(
+                (share / paper - 1.0).abs() < 0.25,
+                "seed {seed}: waves cover {share:.3} of a growing edge, {paper:.3} of a fixed one"
+            );
+        }
+    }
+    let mut bare = grown;
+    bare.pattern.apex_cells = 1;
+    let dead = wave_shares(&bare, &[late])[0];
+    assert_eq!(dead, 0.0, "on one cell at the apex the waves die out");
+}
+
+/// A preview keeps the rim's lengths of its last form: a pattern of the same form and rows
+/// reuses them, and one of another form or of other rows computes its own, so the pattern is
+/// the one a fresh computation gives whatever was previewed before.
+#[test]
+fn kept_rim_lengths_serve_only_the_form_and_rows_they_were_computed_for() {
+    let mut rims = RimLengths::default();
+    let stripes = spec_of("stripes-growing-edge");
+    let mut faster = stripes.clone();
+    let Form::Sweep(sweep) = &mut faster.form else {
+        panic!("a sweep")
+    };
+    sweep.curve.lambda_c = 1.03;
+    let mut shorter = stripes.clone();
+    shorter.growth.rows = 900;
+    let mut paler = stripes.clone();
+    paler.pattern.low = 1.0;
+    for spec in [&stripes, &faster, &shorter, &paler, &stripes] {
+        let mut kept = pattern_alone(spec, &mut rims).unwrap().unwrap();
+        let mut fresh = pattern_of(spec);
+        while kept.rows() < spec.growth.rows as usize {
+            kept.advance().unwrap();
+            fresh.advance().unwrap();
+        }
+        assert_eq!(kept.widths(), fresh.widths());
+        assert_eq!(kept.hash(), fresh.hash());
     }
 }

@@ -3,7 +3,7 @@
 //! spacing the parameters set, oscillations, travelling waves that annihilate and are kept in
 //! number by the hormone, triangles, and refusal of what explicit Euler cannot integrate.
 
-use seashells_core::generator::{Generator, pattern_alone};
+use seashells_core::generator::{Generator, RimLengths, pattern_alone};
 use seashells_core::pattern::build;
 use seashells_core::presets::{preset, presets};
 use seashells_core::spec::ShellSpec;
@@ -40,7 +40,9 @@ fn runs(row: &[f64], threshold: f64) -> usize {
 }
 
 fn hash(spec: &ShellSpec) -> u64 {
-    let mut run = pattern_alone(spec).unwrap().unwrap();
+    let mut run = pattern_alone(spec, &mut RimLengths::default())
+        .unwrap()
+        .unwrap();
     for _ in 1..400 {
         run.advance().unwrap();
     }

@@ -8,21 +8,22 @@
 //! where the edge has room for them.
 //!
 //! Here the count on each row is the last row's times the rim's length there over its length
-//! at the last row (at least one cell, and never fewer than the row before: cells do not die).
+//! at the last row, never fewer than the apex's cells (`pattern.apex_cells`, at least one) and
+//! never fewer than the row before: cells do not die.
 //! A cell divides by putting a daughter after itself, whose concentrations are the mean of its
 //! two neighbours' (the automaton's discrete counts: a copy of the mother's), with its own
 //! fluctuation of ρ drawn from the seed. Uniform growth spreads the divisions evenly along the
 //! edge and over time: the m-th division splits the cell at the fraction m/φ (mod 1) of the
 //! edge, a sequence that never clusters.
 
-use super::edge_model::PatternError;
+use super::edge_model::{EdgeModel, PatternError};
 use super::grid::Grid;
 use super::noise::Noise;
 use crate::spec::pattern::Boundary;
 
-/// Cells on each row for a last row of `last` cells, given the rim's length on each row
-/// (`rims[r]`, shell units).
-pub(crate) fn cell_counts(last: u32, rims: &[f64]) -> Result<Vec<u32>, PatternError> {
+/// Cells on each row for a last row of `last` cells and at least `apex` (clamped to 1..=last),
+/// given the rim's length on each row (`rims[r]`, shell units).
+pub(crate) fn cell_counts(last: u32, apex: u32, rims: &[f64]) -> Result<Vec<u32>, PatternError> {
     let end = *rims
         .last()
         .ok_or_else(|| PatternError("no rows to grow".into()))?;
@@ -32,7 +33,7 @@ pub(crate) fn cell_counts(last: u32, rims: &[f64]) -> Result<Vec<u32>, PatternEr
             rims[r]
         )));
     }
-    let mut most = 1;
+    let mut most = apex.clamp(1, last.max(1));
     Ok(rims
         .iter()
         .map(|&l| {
@@ -45,21 +46,39 @@ pub(crate) fn cell_counts(last: u32, rims: &[f64]) -> Result<Vec<u32>, PatternEr
         .collect())
 }
 
-/// Which cell divides next: the m-th division splits the cell at frac(m/φ) of the edge.
-#[derive(Default)]
+/// The divisions of one growing edge: which cell divides next (the m-th division splits the
+/// cell at frac(m/φ) of the edge), and the seed's stream that gives each daughter its ρ.
 pub(crate) struct Divisions {
     made: u64,
+    noise: Noise,
 }
 
 impl Divisions {
     /// 1/φ, the golden ratio's inverse: its multiples mod 1 spread most evenly over [0, 1).
     const STRIDE: f64 = 0.618_033_988_749_894_9;
+    /// The stream of the seed that gives daughter cells their fluctuation of ρ.
+    const DAUGHTERS: u64 = 7;
+
+    pub fn new(seed: u64) -> Self {
+        Self {
+            made: 0,
+            noise: Noise::new(seed, Self::DAUGHTERS),
+        }
+    }
 
     /// The cell of an edge of `n` cells that divides next.
-    pub fn next(&mut self, n: usize) -> usize {
+    fn next(&mut self, n: usize) -> usize {
         self.made += 1;
         let at = (self.made as f64 * Self::STRIDE).fract();
         ((at * n as f64) as usize).min(n - 1)
+    }
+
+    /// Divides `model`'s cells, one after another, until it has `cells`.
+    pub fn divide_to(&mut self, model: &mut dyn EdgeModel, cells: usize) {
+        while model.recorded().len() < cells {
+            let cell = self.next(model.recorded().len());
+            model.divide(cell, &mut self.noise);
+        }
     }
 }
 
@@ -111,15 +130,23 @@ mod tests {
     #[test]
     fn the_count_follows_the_rim_never_falls_and_ends_at_the_last_rows() {
         let rims = [1.0, 2.0, 4.0, 3.9, 8.0];
-        assert_eq!(cell_counts(64, &rims).unwrap(), [8, 16, 32, 32, 64]);
-        assert_eq!(cell_counts(64, &[1e-9, 1.0]).unwrap(), [1, 64]);
-        assert!(cell_counts(64, &[0.0, 1.0]).is_err());
-        assert!(cell_counts(64, &[f64::NAN, 1.0]).is_err());
+        assert_eq!(cell_counts(64, 1, &rims).unwrap(), [8, 16, 32, 32, 64]);
+        assert_eq!(cell_counts(64, 1, &[1e-9, 1.0]).unwrap(), [1, 64]);
+        assert!(cell_counts(64, 1, &[0.0, 1.0]).is_err());
+        assert!(cell_counts(64, 1, &[f64::NAN, 1.0]).is_err());
+    }
+
+    #[test]
+    fn the_apex_holds_its_cells_until_the_rim_has_room_for_more() {
+        let rims = [1.0, 2.0, 4.0, 3.9, 8.0];
+        assert_eq!(cell_counts(64, 20, &rims).unwrap(), [20, 20, 32, 32, 64]);
+        assert_eq!(cell_counts(64, 0, &rims).unwrap(), [8, 16, 32, 32, 64]);
+        assert_eq!(cell_counts(64, 500, &rims).unwrap(), [64; 5]);
     }
 
     #[test]
     fn divisions_spread_evenly_along_the_edge() {
-        let mut d = Divisions::default();
+        let mut d = Divisions::new(1);
         let mut hits = [0u32; 10];
         for _ in 0..1000 {
             hits[d.next(10)] += 1;

@@ -8,7 +8,6 @@
 //! finds the cell there on every row, as the texture and the files read it.
 
 use super::edge_growth::{Divisions, cell_counts};
-use super::noise::Noise;
 use super::{EdgeModel, PatternError, build};
 use crate::fnv::Fnv;
 use crate::spec::ShellSpec;
@@ -36,11 +35,7 @@ pub struct PatternRun {
 struct Growth {
     counts: Vec<usize>,
     divisions: Divisions,
-    noise: Noise,
 }
-
-/// The stream of the seed that gives daughter cells their fluctuation of ρ.
-const DAUGHTERS: u64 = 7;
 
 impl PatternRun {
     /// The pattern a spec asks for, with its first row (the starting state) recorded; `None`
@@ -60,7 +55,7 @@ impl PatternRun {
                         "pattern.edge_growth: this form has no one growing edge whose cells could divide (swept shells and chambers have); set it to off".into(),
                     )
                 })?;
-                let counts = cell_counts(spec.pattern.cells, &rims)?;
+                let counts = cell_counts(spec.pattern.cells, spec.pattern.apex_cells, &rims)?;
                 let mut first = spec.pattern.clone();
                 first.cells = counts[0];
                 // The automaton's starting cells are positions along the last row's edge.
@@ -83,8 +78,7 @@ impl PatternRun {
         let growth = counts.map(|counts| {
             Box::new(Growth {
                 counts: counts.iter().map(|&n| n as usize * per_cell).collect(),
-                divisions: Divisions::default(),
-                noise: Noise::new(spec.seed, DAUGHTERS),
+                divisions: Divisions::new(spec.seed),
             })
         });
         let mut run = Self {
@@ -145,10 +139,7 @@ impl PatternRun {
     pub fn advance(&mut self) -> Result<(), PatternError> {
         if let Some(g) = &mut self.growth {
             let target = g.counts[self.rows.min(g.counts.len() - 1)];
-            while self.model.recorded().len() < target {
-                let cell = g.divisions.next(self.model.recorded().len());
-                self.model.divide(cell, &mut g.noise);
-            }
+            g.divisions.divide_to(self.model.as_mut(), target);
         }
         self.model
             .advance_row()

@@ -5,7 +5,7 @@
 //! computed a row at a time, so that a page fills the map within its frames, and each is kept
 //! as a small picture (averaged blocks of cells and rows), not as its whole pattern.
 
-use crate::generator::pattern_alone;
+use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
 use crate::share::link::{self, flatten};
@@ -171,12 +171,13 @@ pub struct TileWork {
 }
 
 impl TileWork {
-    /// The first `rows` rows of the pattern of `spec`, or why it has none.
-    pub fn new(spec: &ShellSpec, rows: usize) -> Result<Self, String> {
+    /// The first `rows` rows of the pattern of `spec`, or why it has none; `rims` keeps the
+    /// rim's lengths of the last form for the next tile.
+    pub fn new(spec: &ShellSpec, rows: usize, rims: &mut RimLengths) -> Result<Self, String> {
         // Only this map's rows are kept while computing, not the shell's.
         let mut spec = spec.clone();
         spec.growth.rows = rows as u32;
-        match pattern_alone(&spec) {
+        match pattern_alone(&spec, rims) {
             Ok(Some(run)) => Ok(Self { run, rows }),
             Ok(None) => Err("this shell has no pattern".into()),
             Err(e) => Err(e.to_string()),
@@ -212,6 +213,7 @@ pub struct ParameterMap {
     /// The tile being computed here, and its pattern so far.
     next: usize,
     work: Option<TileWork>,
+    rims: RimLengths,
 }
 
 impl ParameterMap {
@@ -246,6 +248,7 @@ impl ParameterMap {
             tiles,
             next: 0,
             work: None,
+            rims: RimLengths::default(),
         }
     }
 
@@ -293,7 +296,7 @@ impl ParameterMap {
             }
             let work = match &mut self.work {
                 Some(work) => work,
-                None => match TileWork::new(&tile.spec, self.rows) {
+                None => match TileWork::new(&tile.spec, self.rows, &mut self.rims) {
                     Ok(work) => self.work.insert(work),
                     Err(why) => {
                         self.place(self.next, Err(why));

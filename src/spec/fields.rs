@@ -362,6 +362,7 @@ pub const SHELL: &[Field] = &[
     f("pattern.refinement", Pattern, "k", "refinement (k cells per cell, Δt = 1/k²)", int(1, 4)),
     f("pattern.boundary", Pattern, "", "ends of the edge", Kind::Choice(&["zero_flux", "periodic"])),
     f("pattern.edge_growth", Pattern, "", "cells divide as the rim lengthens (beyond the paper)", Kind::Choice(&["off", "uniform"])),
+    f("pattern.apex_cells", Pattern, "", "fewest cells of a growing edge (at the apex)", int(1, 2048)),
     f("pattern.low", Pattern, "", "value shown as no pigment", real(-1000.0, 1000.0)),
     f("pattern.high", Pattern, "", "value shown as full pigment", real(-1000.0, 1000.0)),
     f("pattern.model.kind", Pattern, "", "model", Kind::Choice(&["none", "activator_substrate", "activator_inhibitor", "coupled", "automaton"])),

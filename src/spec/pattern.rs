@@ -20,6 +20,11 @@ pub struct PatternSpec {
     /// their number fixed: "we ignore the effect of the gradual increase of polygon size
     /// resulting from the rim's growth", §3). `cells` are then those of the last row.
     pub edge_growth: EdgeGrowth,
+    /// The fewest cells a growing edge has (at most `cells`): its first rows, at the apex,
+    /// hold this many however short the rim is there, as a mollusc's mantle edge holds many
+    /// cells from the start; they divide once the rim has room for more. A model whose waves
+    /// need room to travel (fig 14's) dies out on an edge of one or two cells.
+    pub apex_cells: u32,
     /// Recorded value shown as no pigment.
     pub low: f64,
     /// Recorded value shown as full pigment.
@@ -36,6 +41,7 @@ impl Default for PatternSpec {
             refinement: 1,
             boundary: Boundary::ZeroFlux,
             edge_growth: EdgeGrowth::Off,
+            apex_cells: 1,
             low: 0.0,
             high: 1.0,
             model: Model::None,

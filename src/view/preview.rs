@@ -75,7 +75,7 @@ impl Preview {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::generator::pattern_alone;
+    use crate::generator::{RimLengths, pattern_alone};
     use crate::presets::preset;
     use crate::spec::pattern::Model;
 
@@ -92,7 +92,9 @@ mod tests {
     #[test]
     fn a_preview_fills_frame_by_frame_to_the_whole_pattern() {
         let spec = &preset("oliva-porphyria").expect("the Oliva").spec;
-        let run = pattern_alone(spec).expect("a pattern").expect("a model");
+        let run = pattern_alone(spec, &mut RimLengths::default())
+            .expect("a pattern")
+            .expect("a model");
         let total = spec.growth.rows as usize;
         let mut preview = Preview::new(run, total);
         assert_eq!(preview.state(), PreviewState::Filling);
@@ -121,7 +123,7 @@ mod tests {
         // Unsaturated autocatalysis (κ = 0) against an inhibitor it outruns.
         m.kappa = 0.0;
         m.rho = 5.0;
-        let run = pattern_alone(&spec)
+        let run = pattern_alone(&spec, &mut RimLengths::default())
             .expect("stable diffusion")
             .expect("a model");
         let mut preview = Preview::new(run, spec.growth.rows as usize);

@@ -8,8 +8,8 @@ use super::edge_slots::EdgeSlots;
 use super::message::{Delta, Progress, Reply, Request, ShellInfo, WholeShell};
 use crate::blobtree::polygonize::ChunkWork;
 use crate::forms::{PieceMaker, piece_maker};
-use crate::generator::pattern_alone;
 use crate::generator::{Advance, EdgeRuns, Generator, within};
+use crate::generator::{RimLengths, pattern_alone};
 use crate::mesh::{Bounds, Mesh};
 use crate::share::link;
 use crate::share::parameter_map::TileWork;
@@ -55,6 +55,8 @@ pub struct Host {
     maker: Option<(String, PieceMaker)>,
     queue: VecDeque<(u32, Request)>,
     current: Option<(u32, Job)>,
+    /// The rim's lengths of the last form whose pattern was previewed or mapped.
+    rims: RimLengths,
 }
 
 /// The spec a link gives.
@@ -287,7 +289,7 @@ impl Host {
             Request::Preview { session, link } => {
                 let spec = spec_of(&link);
                 let rows = spec.growth.rows as usize;
-                match pattern_alone(&spec) {
+                match pattern_alone(&spec, &mut self.rims) {
                     Ok(Some(run)) => {
                         let reply = Reply::Previewed {
                             session,
@@ -383,7 +385,7 @@ impl Host {
                 },
             },
             Request::Tile { job, link, rows } => {
-                match TileWork::new(&spec_of(&link), rows as usize) {
+                match TileWork::new(&spec_of(&link), rows as usize, &mut self.rims) {
                     Ok(work) => {
                         return Err(Job::Tile {
                             job,

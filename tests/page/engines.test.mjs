@@ -37,7 +37,7 @@ const AUTOMATION_HANG = /The view is drawn on the page's thread: the drawing wor
 
 /** One shell of every form, at full speed (the Murex on a coarse grid, to be quick). */
 const SHELLS = [
-  ['a sweep with its pattern', 'oliva-porphyria', ''],
+  ['a sweep with its pattern on a growing edge', 'oliva-porphyria-growing-edge', ''],
   ['the cellular automaton', 'ca-trochidae', ''],
   ["Kawaguchi's chambers", 'kawaguchi-horn', ''],
   ["Kawaguchi's branching", 'kawaguchi-tendril', ''],

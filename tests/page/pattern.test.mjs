@@ -20,7 +20,7 @@ before(async () => {
 after(() => close());
 
 const LINKS = [
-  'v=1&preset=oliva-porphyria',
+  'v=1&preset=oliva-porphyria-growing-edge',
   'v=1&preset=conus-marmoreus',
   'v=1&preset=amoria-undulata&pattern.model.d_a=0.006&seed=9',
   'v=1&preset=kawaguchi-painted',

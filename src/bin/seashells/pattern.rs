@@ -4,7 +4,7 @@ use crate::Failure;
 use crate::options::{Options, WRITES};
 use crate::out::Out;
 use seashells_core::export;
-use seashells_core::generator::pattern_alone;
+use seashells_core::generator::{RimLengths, pattern_alone};
 use seashells_core::share::repair::repair;
 
 pub fn pattern(args: &[String]) -> Result<(), Failure> {
@@ -45,7 +45,7 @@ pub fn pattern(args: &[String]) -> Result<(), Failure> {
     if let Some(p) = problems.first() {
         return Err(p.to_string().into());
     }
-    let mut run = pattern_alone(&spec)
+    let mut run = pattern_alone(&spec, &mut RimLengths::default())
         .map_err(|e| e.to_string())?
         .ok_or("this shell has no pattern model")?;
     let mut text = String::new();
