@@ -15,8 +15,7 @@ use crate::export::job::Export;
 use crate::export::print_size::PrintSize;
 use crate::export::shell::Shell;
 use crate::forms::murex::whorl::whorl;
-use crate::forms::shape_for;
-use crate::generator::{GROWTH_BUDGET_MS, Generator, within};
+use crate::generator::{GROWTH_BUDGET_MS, Generator, RimLengths, within};
 use crate::pattern::build;
 use crate::pattern::edge_growth::{Divisions, cell_counts};
 use crate::pattern::run::PatternRun;
@@ -143,7 +142,8 @@ fn whole_pattern(now: &dyn Fn() -> f64) -> Option<Figure> {
 /// one, in milliseconds for all its rows, as a user waits for it (the growing edge computes
 /// fewer cells on its early rows); its model built on the first row's cells and divided to
 /// the last row's without a step, what the divisions cost at most; and the time the form
-/// takes to give the rim's length on every row, which a growing edge needs once.
+/// takes to be built and give the rim's length on every row ([`RimLengths`]), which a growing
+/// edge needs once.
 fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
     let mut figures = Vec::new();
     for id in EDGE_GROWTH {
@@ -152,12 +152,11 @@ fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
         };
         let spec = &preset.spec;
         let rows = spec.growth.rows as usize;
-        let Ok(shape) = shape_for(spec, rows) else {
-            continue;
-        };
         let mut rims = Vec::new();
         let (rim_ms, rim_spread) = timed(now, || {
-            rims = (0..rows).map(|r| shape.rim_length(r)).collect::<Vec<_>>();
+            if let Ok(lengths) = RimLengths::default().of(spec, rows) {
+                rims = lengths.to_vec();
+            }
         });
         for (growth, what) in [
             (EdgeGrowth::Off, "fixed edge (the paper's)"),
@@ -167,7 +166,8 @@ fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
             spec.pattern.edge_growth = growth;
             let mut complete = true;
             let (ms, spread) = timed(now, || {
-                let Ok(Some(mut run)) = PatternRun::new(&spec, |r| rims[r]) else {
+                let Ok(Some(mut run)) = PatternRun::new(&spec, |r| rims.get(r).copied().flatten())
+                else {
                     complete = false;
                     return;
                 };
@@ -208,7 +208,7 @@ fn edge_growth(now: &dyn Fn() -> f64) -> Vec<Figure> {
             spread: Some(spread),
         });
         figures.push(Figure {
-            what: format!("{id} rim lengths of its {rows} rows"),
+            what: format!("{id} form built and its rim lengths of {rows} rows"),
             value: rim_ms,
             unit: "ms",
             spread: Some(rim_spread),

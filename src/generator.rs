@@ -127,7 +127,11 @@ pub struct RimLengths {
 impl RimLengths {
     /// The rim's length on each of the `rows` rows of `spec`'s form; all `None` for a form
     /// without one growing edge, which is not built for it.
-    fn of(&mut self, spec: &ShellSpec, rows: usize) -> Result<&[Option<f64>], ShapeError> {
+    pub(crate) fn of(
+        &mut self,
+        spec: &ShellSpec,
+        rows: usize,
+    ) -> Result<&[Option<f64>], ShapeError> {
         if !matches!(&self.of, Some((form, r)) if *form == spec.form && *r == rows) {
             self.lengths = if has_one_growing_edge(&spec.form) {
                 let shape = shape_for(spec, rows)?;
