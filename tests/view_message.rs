@@ -137,6 +137,7 @@ fn news() -> Vec<ViewerNews> {
         ViewerNews::Frame {
             device: Device::Ready,
             report: Some(Box::new(FrameReport {
+                loads: 3,
                 file: Some(written(Body::Bytes((0..=255).collect()))),
                 drawn: true,
                 status: status.clone(),

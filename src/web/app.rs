@@ -929,6 +929,7 @@ impl App {
         let mut drawn = false;
         let mut recorded = None;
         let mut status = None;
+        let loads = self.viewer.loads();
         for frame in frames {
             let report = frame.report;
             self.downloads.show(report.file);
@@ -940,8 +941,11 @@ impl App {
                     planar.apply(update);
                 }
             }
-            drawn |= report.drawn;
-            status = Some(report.status);
+            // A frame made before the last load reached the viewer shows the shell left.
+            if report.loads == loads {
+                drawn |= report.drawn;
+                status = Some(report.status);
+            }
             if let Some(frame) = frame.recorded {
                 recorded = Some(frame);
             }

@@ -224,6 +224,8 @@ pub struct Viewer {
     workers: Rc<RefCell<Workers>>,
     /// The last session started (each load starts one; replies of older ones are dropped).
     session: u32,
+    /// Loads the page asked for ([`FrameReport::loads`]).
+    loads: u32,
     /// Rows the playback's speed asked for while the worker was still busy.
     owed: usize,
     /// The clear colour, as sRGB bytes (for a renderer opened again).
@@ -308,6 +310,7 @@ impl Viewer {
             recorded: None,
             workers,
             session: 0,
+            loads: 0,
             owed: 0,
             background,
             reopening: None,
@@ -317,6 +320,11 @@ impl Viewer {
             notice: None,
             writer: FileWriter::default(),
         }
+    }
+
+    /// Loads the page asked for ([`FrameReport::loads`]).
+    pub fn loads(&self) -> u32 {
+        self.loads
     }
 
     /// "WebGPU" or "WebGL2", or `None` where it draws nothing.
@@ -337,6 +345,7 @@ impl Viewer {
     pub fn command(&mut self, command: ViewCommand) {
         match command {
             ViewCommand::Load { shell, finish } => {
+                self.loads = self.loads.wrapping_add(1);
                 self.load(shell.preset, &shell.spec);
                 if finish {
                     self.finish();
@@ -793,6 +802,7 @@ impl Viewer {
         let drawn = !self.held && self.frame(GROWTH_BUDGET_MS)?;
         Ok(ViewFrame {
             report: FrameReport {
+                loads: self.loads,
                 file,
                 drawn,
                 status: self.status(),

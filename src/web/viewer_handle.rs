@@ -61,6 +61,10 @@ pub struct ViewWorker {
     gave_canvas: bool,
     /// Whether the page has sent it a frame since it last said anything.
     ticked: bool,
+    /// Loads sent to it ([`FrameReport::loads`]).
+    ///
+    /// [`FrameReport::loads`]: crate::work::view_status::FrameReport::loads
+    loads: u32,
     _on_message: Closure<dyn FnMut(MessageEvent)>,
     _on_error: Closure<dyn FnMut(ErrorEvent)>,
 }
@@ -173,6 +177,7 @@ impl ViewWorker {
             crashed: false,
             gave_canvas: false,
             ticked: false,
+            loads: 0,
             _on_message: on_message,
             _on_error: on_error,
         };
@@ -205,7 +210,10 @@ impl ViewWorker {
         let _ = self.worker.post_message_with_transfer(message, transfer);
     }
 
-    fn command(&self, command: &ViewCommand) {
+    fn command(&mut self, command: &ViewCommand) {
+        if matches!(command, ViewCommand::Load { .. }) {
+            self.loads = self.loads.wrapping_add(1);
+        }
         let bytes = Uint8Array::from(&encode_command(command)[..]).buffer();
         let message = js_sys::Object::new();
         let _ = Reflect::set(&message, &"command".into(), &bytes);
@@ -254,6 +262,17 @@ impl ViewerHandle {
     /// Whether it runs in the drawing worker.
     pub fn in_worker(&self) -> bool {
         matches!(self, ViewerHandle::Worker(_))
+    }
+
+    /// How many shells the page has asked it to load: a frame that counts fewer was made
+    /// before the last load reached the viewer ([`FrameReport::loads`]).
+    ///
+    /// [`FrameReport::loads`]: crate::work::view_status::FrameReport::loads
+    pub fn loads(&self) -> u32 {
+        match self {
+            ViewerHandle::Here(viewer) => viewer.loads(),
+            ViewerHandle::Worker(w) => w.loads,
+        }
     }
 
     /// Asks the viewer `command`.

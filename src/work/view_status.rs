@@ -105,6 +105,13 @@ mod tests {
 /// was drawn, the status, words to show, and what the planar view is to show.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct FrameReport {
+    /// How many shells the page had asked the viewer to load ([`ViewCommand::Load`]) when it
+    /// made this frame. A viewer in a worker may send a frame before the page's last load
+    /// reaches it: the page takes status and drawing only from a frame that counts every load
+    /// it sent, or it would show the shell it left as the one it asked for.
+    ///
+    /// [`ViewCommand::Load`]: super::view_command::ViewCommand::Load
+    pub loads: u32,
     /// Where the file asked for stands (`None`: none is asked for).
     pub file: Option<FileStage>,
     pub drawn: bool,
