@@ -114,6 +114,39 @@ fn the_cells_follow_the_rim_so_each_keeps_its_length() {
     }
 }
 
+/// The link `make test`'s property test drew that ran for 13 minutes: a generating curve that
+/// shrinks (λ_c = 0.8) has a rim 4,800 times longer at the apex than at the lip, and each of
+/// its rows asked for up to 4,800 times the last row's cells, kept to the end since cells do
+/// not die. Each row now has at most the last row's cells.
+#[test]
+fn a_shrinking_rim_keeps_the_last_rows_cells_from_the_apex() {
+    let decoded = decode(
+        "v=1&preset=stripes-growing-edge&form.curve.lambda_c=0.8&form.spiral.r0=9.931112054812846&pattern.iterations=40",
+    );
+    let spec = decoded.spec;
+    let rows = spec.growth.rows as usize;
+    let shape = shape_for(&spec, rows).unwrap();
+    let (first, last) = (
+        shape.rim_length(0).unwrap(),
+        shape.rim_length(rows - 1).unwrap(),
+    );
+    assert!(
+        first > 100.0 * last,
+        "the rim shrinks from {first} to {last}"
+    );
+    let mut run = pattern_of(&spec);
+    while run.rows() < rows {
+        run.advance().unwrap();
+    }
+    let cells = spec.pattern.cells;
+    assert_eq!(run.cells(), cells as usize);
+    assert!(
+        run.widths().iter().all(|&n| n == cells),
+        "{:?}",
+        &run.widths()[..8]
+    );
+}
+
 /// Local maxima above `threshold`: the stripes a row crosses.
 fn stripes(row: &[f32], threshold: f32) -> usize {
     (1..row.len() - 1)

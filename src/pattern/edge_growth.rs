@@ -9,7 +9,10 @@
 //!
 //! Here the count on each row is the last row's times the rim's length there over its length
 //! at the last row, never fewer than the apex's cells (`pattern.apex_cells`, at least one) and
-//! never fewer than the row before: cells do not die.
+//! never fewer than the row before: cells do not die. Nor more than the last row's: a rim
+//! longer before than at the end (a generating curve that shrinks, λ_c < 1) keeps the last
+//! row's cells from the apex on, as a fixed edge would, instead of the millions its first
+//! rows would ask for.
 //! A cell divides by putting a daughter after itself, whose concentrations are the mean of its
 //! two neighbours' (the automaton's discrete counts: a copy of the mother's), with its own
 //! fluctuation of ρ drawn from the seed. Uniform growth spreads the divisions evenly along the
@@ -22,7 +25,7 @@ use super::noise::Noise;
 use crate::spec::pattern::Boundary;
 
 /// Cells on each row for a last row of `last` cells and at least `apex` (clamped to 1..=last),
-/// given the rim's length on each row (`rims[r]`, shell units).
+/// given the rim's length on each row (`rims[r]`, shell units): never more than `last`.
 pub(crate) fn cell_counts(last: u32, apex: u32, rims: &[f64]) -> Result<Vec<u32>, PatternError> {
     let end = *rims
         .last()
@@ -33,13 +36,14 @@ pub(crate) fn cell_counts(last: u32, apex: u32, rims: &[f64]) -> Result<Vec<u32>
             rims[r]
         )));
     }
-    let mut most = apex.clamp(1, last.max(1));
+    let last = last.max(1);
+    let mut most = apex.clamp(1, last);
     Ok(rims
         .iter()
         .map(|&l| {
             let n = (f64::from(last) * l / end)
                 .round()
-                .clamp(1.0, f64::from(u32::MAX)) as u32;
+                .clamp(1.0, f64::from(last)) as u32;
             most = most.max(n);
             most
         })
@@ -142,6 +146,14 @@ mod tests {
         assert_eq!(cell_counts(64, 20, &rims).unwrap(), [20, 20, 32, 32, 64]);
         assert_eq!(cell_counts(64, 0, &rims).unwrap(), [8, 16, 32, 32, 64]);
         assert_eq!(cell_counts(64, 500, &rims).unwrap(), [64; 5]);
+    }
+
+    #[test]
+    fn a_rim_longer_before_than_at_the_end_keeps_the_last_rows_cells() {
+        // A shrinking generating curve: the apex's rim is 4,800 times the lip's.
+        let rims: Vec<f64> = (0..40).map(|r| 0.8f64.powi(r)).collect();
+        assert_eq!(cell_counts(64, 1, &rims).unwrap(), [64; 40]);
+        assert_eq!(cell_counts(64, 1, &[0.5, 2.0, 1.0]).unwrap(), [32, 64, 64]);
     }
 
     #[test]
