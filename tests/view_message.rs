@@ -217,7 +217,14 @@ fn news() -> Vec<ViewerNews> {
             report: None,
             recorded: None,
         },
-        ViewerNews::Refused("the spec has no rows".into()),
+        ViewerNews::Refused {
+            loads: Some(7),
+            why: "the spec has no rows".into(),
+        },
+        ViewerNews::Refused {
+            loads: None,
+            why: "a command was misread".into(),
+        },
         ViewerNews::Pool(PoolNews {
             count: 3,
             status: "Growing on 3 workers.".into(),

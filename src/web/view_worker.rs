@@ -110,7 +110,10 @@ fn take(state: &Rc<RefCell<State>>, data: &JsValue) {
                 }
             }
             Err(e) => post(
-                &ViewerNews::Refused(format!("a command was misread: {e}")),
+                &ViewerNews::Refused {
+                    loads: None,
+                    why: format!("a command was misread: {e}"),
+                },
                 None,
             ),
         }
@@ -235,7 +238,14 @@ fn frame(run: &mut Running) -> bool {
     for (request, reply) in polled.replies {
         if let Err(message) = run.viewer.take(&request, reply) {
             run.viewer.unload();
-            post(&ViewerNews::Refused(message), None);
+            let loads = Some(run.viewer.loads());
+            post(
+                &ViewerNews::Refused {
+                    loads,
+                    why: message,
+                },
+                None,
+            );
         }
     }
     let frame = run.viewer.run_frame();

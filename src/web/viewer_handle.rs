@@ -409,7 +409,12 @@ impl ViewerHandle {
                                 (None, _) => None,
                             },
                         }),
-                        ViewerNews::Refused(why) => taken.refused.push(why),
+                        // The refusal of a shell the page has left since is not said.
+                        ViewerNews::Refused { loads, why }
+                            if loads.is_none_or(|l| l == w.loads) =>
+                        {
+                            taken.refused.push(why);
+                        }
                         ViewerNews::Failed(why) => return Err(why),
                         ViewerNews::Pool(pool) => taken.pool = Some(pool),
                         _ => {}

@@ -21,8 +21,10 @@ pub enum ViewerNews {
         report: Option<Box<FrameReport>>,
         recorded: Option<Result<(), String>>,
     },
-    /// The shell could not be built or grown: why, in words.
-    Refused(String),
+    /// The shell could not be built or grown: why, in words, and how many loads the viewer had
+    /// taken then ([`FrameReport::loads`]): the page ignores the refusal of a shell it has
+    /// already left. `None` for a command the worker could not read, said whatever was loaded.
+    Refused { loads: Option<u32>, why: String },
     /// What its pool of workers says of itself.
     Pool(PoolNews),
     /// Its renderer failed: the viewer draws no more (why, in words).
