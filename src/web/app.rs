@@ -929,7 +929,6 @@ impl App {
         let mut drawn = false;
         let mut recorded = None;
         let mut status = None;
-        let loads = self.viewer.loads();
         for frame in frames {
             let report = frame.report;
             self.downloads.show(report.file);
@@ -942,7 +941,7 @@ impl App {
                 }
             }
             // A frame made before the last load reached the viewer shows the shell left.
-            if report.loads == loads {
+            if frame.current {
                 drawn |= report.drawn;
                 status = Some(report.status);
             }

@@ -250,6 +250,9 @@ pub struct ViewFrame {
     pub report: FrameReport,
     /// A recording's video frame asked for, drawn (or why it could not be).
     pub recorded: Option<Result<VideoFrame, String>>,
+    /// Made after the page's last load reached the viewer ([`FrameReport::loads`]): its status
+    /// and drawing are of the shell the page shows. Always so on the page's thread.
+    pub current: bool,
 }
 
 impl Viewer {
@@ -810,6 +813,7 @@ impl Viewer {
                 planar: std::mem::take(&mut self.planar_updates),
             },
             recorded: self.recorded.take(),
+            current: true,
         })
     }
 

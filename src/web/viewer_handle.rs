@@ -264,17 +264,6 @@ impl ViewerHandle {
         matches!(self, ViewerHandle::Worker(_))
     }
 
-    /// How many shells the page has asked it to load: a frame that counts fewer was made
-    /// before the last load reached the viewer ([`FrameReport::loads`]).
-    ///
-    /// [`FrameReport::loads`]: crate::work::view_status::FrameReport::loads
-    pub fn loads(&self) -> u32 {
-        match self {
-            ViewerHandle::Here(viewer) => viewer.loads(),
-            ViewerHandle::Worker(w) => w.loads,
-        }
-    }
-
     /// Asks the viewer `command`.
     pub fn command(&mut self, command: ViewCommand) {
         match self {
@@ -399,6 +388,7 @@ impl ViewerHandle {
                             recorded,
                             ..
                         } => taken.frames.push(ViewFrame {
+                            current: report.loads == w.loads,
                             report: *report,
                             recorded: match (recorded, video) {
                                 (Some(Ok(())), Some(frame)) => Some(Ok(frame)),
