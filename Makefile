@@ -22,7 +22,7 @@ export NPM_INSTALLED := const fs = require('fs'); \
     try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
     catch { return false; } }) ? 0 : 1);
 
-.PHONY: run test build bench fuzz deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots
+.PHONY: run test build bench fuzz deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
@@ -125,6 +125,12 @@ fuzz: deps-build
 bench: build deps-browser
 	cargo build --release --bin seashells
 	node tests/page/bench.mjs
+
+## The README's pictures, taken by the page tests that check what they show.
+readme-pictures: build deps-browser
+	$(XVFB) node --test --test-name-pattern='morphospace.*WebGL2' tests/page/map.test.mjs
+	mkdir -p docs/images
+	cp tests/page/screenshots/shape-map-WebGL2.png docs/images/shape-map.png
 
 ## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…' [TURN=20]
 

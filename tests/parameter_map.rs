@@ -1,6 +1,7 @@
-//! The map of a pattern model's parameter space: tiles spaced as the axes say, each the pattern
-//! of the spec its link reopens, computed deterministically, with tiles that cannot be
-//! integrated refused with their reason while the others fill.
+//! The map of a shell's parameter space: tiles spaced as the axes say, each the pattern (or, over
+//! a parameter of the form, the shell) of the spec its link reopens, computed deterministically,
+//! with tiles that cannot be integrated or grown refused with their reason while the others
+//! fill.
 
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};
@@ -25,32 +26,49 @@ fn filled(map: &mut ParameterMap) {
 
 #[test]
 fn axes_step_evenly_or_by_equal_ratios_and_refuse_what_cannot_span_a_map() {
-    let linear = Axis::new("pattern.model.d_a", 0.01, 0.03, 5).unwrap();
+    let linear = Axis::new("sweep", "pattern.model.d_a", 0.01, 0.03, 5).unwrap();
     assert_eq!(linear.values, [0.01, 0.015, 0.02, 0.025, 0.03]);
-    let ratios = Axis::new("pattern.model.sigma", 0.0001, 0.01, 3).unwrap();
+    let ratios = Axis::new("sweep", "pattern.model.sigma", 0.0001, 0.01, 3).unwrap();
     assert_eq!(ratios.values, [0.0001, 0.001, 0.01]);
     for (key, from, to, count, why) in [
         ("pattern.model.d_a", 0.01, 0.9, 8, "leaves that range"),
         ("pattern.model.d_a", 0.01, 0.01, 8, "two different numbers"),
-        ("pattern.cells", 10.0, 20.0, 8, "not a real number"),
+        ("pattern.cells", 10.0, 20.0, 8, "not a parameter"),
         (
-            "form.spiral.whorls",
+            "form.chamber.ratio",
             1.0,
-            2.0,
+            1.2,
             8,
-            "not a parameter of a pattern model",
+            "not a parameter of a sweep",
         ),
+        ("form.curve.closed", 0.0, 1.0, 8, "not a parameter"),
+        ("form.spiral.whorls", 1.0, 40.0, 8, "leaves that range"),
         ("pattern.model.d_a", 0.01, 0.02, 1, "at least two values"),
     ] {
-        let e = Axis::new(key, from, to, count).unwrap_err();
+        let e = Axis::new("sweep", key, from, to, count).unwrap_err();
         assert!(e.contains(why), "{key}: {e}");
     }
     let d_a = field("sweep", "pattern.model.d_a").unwrap();
     assert_eq!(
-        Axis::around(d_a, 0.015, 3).unwrap().values,
+        Axis::around("sweep", d_a, 0.015, 3).unwrap().values,
         [0.0075, 0.01875, 0.03]
     );
-    assert_eq!(Axis::around(d_a, 0.0, 2).unwrap().values, [0.0, 0.125]);
+    assert_eq!(
+        Axis::around("sweep", d_a, 0.0, 2).unwrap().values,
+        [0.0, 0.125]
+    );
+    let lambda = field("sweep", "form.spiral.lambda_r").unwrap();
+    let ratios = Axis::around("sweep", lambda, 1.007, 3).unwrap().values;
+    let per_whorl = |l: f64| l.powi(36);
+    assert!(
+        (per_whorl(ratios[0]).ln() * 2.0 - per_whorl(1.007).ln()).abs() < 0.05
+            && (per_whorl(ratios[2]).ln() / 2.0 - per_whorl(1.007).ln()).abs() < 0.05,
+        "a growth ratio spans half to twice its logarithm (rounded as the panel shows it): \
+         {ratios:?}"
+    );
+    let apexes = Axis::new("chambers", "form.mouth.apexes", 3.0, 12.0, 4).unwrap();
+    assert_eq!(apexes.values, [3.0, 6.0, 9.0, 12.0], "whole numbers");
+    assert!(apexes.shapes() && !linear.shapes());
 }
 
 #[test]
@@ -60,8 +78,11 @@ fn every_tile_is_the_pattern_of_its_own_link_and_the_map_is_the_same_every_time(
     let offered = parameters(spec);
     let names: Vec<&str> = offered.iter().map(|(f, _)| f.key).collect();
     assert!(names.contains(&"pattern.model.d_a") && names.contains(&"pattern.model.nu"));
+    assert!(names.contains(&"form.spiral.lambda_r") && names.contains(&"form.curve.segments"));
     assert!(
-        names.iter().all(|k| k.starts_with("pattern.model.")),
+        names
+            .iter()
+            .all(|k| k.starts_with("pattern.model.") || k.starts_with("form.")),
         "{names:?}"
     );
     let (x, y) = first_axes(&offered);
@@ -71,9 +92,10 @@ fn every_tile_is_the_pattern_of_its_own_link_and_the_map_is_the_same_every_time(
     );
     assert_eq!(offered[x].1, 0.015, "with the shell's value");
     let map = || {
-        let x = Axis::new("pattern.model.d_a", 0.005, 0.04, 3).unwrap();
-        let y = Axis::new("pattern.model.nu", 0.005, 0.03, 3).unwrap();
+        let x = Axis::new("sweep", "pattern.model.d_a", 0.005, 0.04, 3).unwrap();
+        let y = Axis::new("sweep", "pattern.model.nu", 0.005, 0.03, 3).unwrap();
         let mut map = ParameterMap::new(oliva, spec, x, y);
+        assert!(!map.shells(), "a table of patterns");
         filled(&mut map);
         map
     };
@@ -116,8 +138,8 @@ fn every_tile_is_the_pattern_of_its_own_link_and_the_map_is_the_same_every_time(
 fn tiles_that_cannot_be_integrated_say_why_and_the_others_fill() {
     let stripes = preset("stripes").unwrap();
     // D_a with μ = 0.01 is stable up to (2 − μ)/4 = 0.4975.
-    let x = Axis::new("pattern.model.d_a", 0.002, 0.5, 2).unwrap();
-    let y = Axis::new("pattern.model.d_s", 0.1, 0.4, 2).unwrap();
+    let x = Axis::new("sweep", "pattern.model.d_a", 0.002, 0.5, 2).unwrap();
+    let y = Axis::new("sweep", "pattern.model.d_s", 0.1, 0.4, 2).unwrap();
     let mut map = ParameterMap::new(stripes, &stripes.spec, x, y);
     filled(&mut map);
     for j in 0..2 {
@@ -127,4 +149,79 @@ fn tiles_that_cannot_be_integrated_say_why_and_the_others_fill() {
         let why = refused.failure.as_deref().unwrap();
         assert!(why.contains("D_a") && why.contains("stabl"), "{why}");
     }
+}
+
+#[test]
+fn a_map_over_the_forms_parameters_is_a_grid_of_shells_each_reopened_by_its_link() {
+    let plain = preset("turbinate").unwrap();
+    let offered = parameters(&plain.spec);
+    assert!(
+        offered.iter().all(|(f, _)| f.key.starts_with("form.")),
+        "no pattern"
+    );
+    let (x, y) = first_axes(&offered);
+    assert_eq!(
+        (offered[x].0.key, offered[y].0.key),
+        ("form.spiral.lambda_r", "form.spiral.lambda_z"),
+        "Raup's expansion across, translation down"
+    );
+    let lambda_r = Axis::new("sweep", "form.spiral.lambda_r", 1.002, 1.02, 4).unwrap();
+    let whorls = Axis::new("sweep", "form.spiral.whorls", 1.0, 6.0, 3).unwrap();
+    let mut map = ParameterMap::new(plain, &plain.spec, lambda_r, whorls);
+    assert!(map.shells(), "tiles show shells, drawn by the page");
+    assert_eq!(
+        map.current, None,
+        "8 whorls lie beyond 6 by more than half a step"
+    );
+    assert_eq!(map.to_compute().len(), 12);
+    assert_eq!(map.work(|| true), 0..0, "no pattern is computed here");
+    for (j, &w) in map.y.values.clone().iter().enumerate() {
+        for (i, &l) in map.x.values.clone().iter().enumerate() {
+            let tile = map.tile(i, j);
+            assert_eq!(tile.failure, None);
+            assert_eq!(value(&tile.spec, "form.spiral.lambda_r"), l);
+            assert_eq!(value(&tile.spec, "form.spiral.whorls"), w);
+            let opened = decode(&tile.link);
+            assert!(opened.problems.is_empty(), "{:?}", opened.problems);
+            assert_eq!(opened.spec, tile.spec, "the link reopens the tile's shell");
+        }
+    }
+    let around = ParameterMap::new(
+        plain,
+        &plain.spec,
+        Axis::new("sweep", "form.spiral.lambda_r", 1.002, 1.02, 4).unwrap(),
+        Axis::new("sweep", "form.spiral.whorls", 2.0, 9.0, 3).unwrap(),
+    );
+    assert_eq!(
+        around.current,
+        Some(2 * 4 + 1),
+        "λᵣ 1.007 by 1.008, 8 whorls by 9"
+    );
+    let fast = Axis::new("sweep", "form.spiral.lambda_r", 1.02, 1.05, 2).unwrap();
+    let whorls = Axis::new("sweep", "form.spiral.lambda_z", 1.0, 1.001, 2).unwrap();
+    let repaired = ParameterMap::new(plain, &plain.spec, fast, whorls);
+    let tile = repaired.tile(1, 0);
+    assert_eq!(tile.failure, None, "the values of its axes can grow");
+    assert!(value(&tile.spec, "form.spiral.whorls") < 8.0);
+    let note = tile.note.as_deref().unwrap();
+    assert!(note.starts_with("form.spiral.whorls:"), "{note}");
+    let refused = ParameterMap::new(
+        plain,
+        &plain.spec,
+        Axis::new("sweep", "form.spiral.lambda_r", 1.02, 1.05, 2).unwrap(),
+        Axis::new("sweep", "form.spiral.whorls", 1.0, 30.0, 2).unwrap(),
+    );
+    let why = refused.tile(1, 1).failure.as_deref().unwrap();
+    assert!(why.starts_with("form.spiral.whorls:"), "{why}");
+    map.shown(0, Ok(()));
+    map.shown(1, Err("the curve leaves the axis".into()));
+    assert_eq!(map.to_compute().len(), 10);
+    for index in map.to_compute() {
+        map.shown(index, Ok(()));
+    }
+    assert!(map.finished());
+    assert_eq!(
+        map.tile(1, 0).failure.as_deref(),
+        Some("the curve leaves the axis")
+    );
 }

@@ -309,7 +309,7 @@ fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
         });
     }
     let oliva = preset("oliva-porphyria").unwrap();
-    let axis = |key: &str, from, to| Axis::new(key, from, to, SIDE).unwrap();
+    let axis = |key: &str, from, to| Axis::new("sweep", key, from, to, SIDE).unwrap();
     let map = |page: Option<&mut Page>| {
         let mut map = ParameterMap::new(
             oliva,

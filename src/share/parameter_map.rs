@@ -1,16 +1,21 @@
-//! A map of a pattern model's parameter space, as Meinhardt's tables of patterns show it: the
-//! planar patterns of a grid of shells that differ from one shell in two parameters only, each
-//! spread over a range in equal steps (equal ratios on a logarithmic field). Every tile is a
-//! spec read exactly as a link's values would be, so choosing one opens that shell. Tiles are
-//! computed a row at a time, so that a page fills the map within its frames, and each is kept
-//! as a small picture (averaged blocks of cells and rows), not as its whole pattern.
+//! A map of a shell's parameter space: a grid of shells that differ from one shell in two
+//! parameters only, each spread over a range in equal steps (equal ratios on a logarithmic
+//! field). Every tile is a spec read exactly as a link's values would be, so choosing one opens
+//! that shell.
+//!
+//! Over two parameters of the pattern model the map is Meinhardt's table of patterns: each tile
+//! is the planar pattern, computed a row at a time so that a page fills the map within its
+//! frames, and kept as a small picture (averaged blocks of cells and rows), not as its whole
+//! pattern. Over a parameter of the form it is a morphospace, as Raup's cube of coiling
+//! parameters is: each tile is the whole shell, grown and drawn as a gallery picture is.
 
 use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
 use crate::share::link::{self, flatten};
+use crate::spec::Problem;
 use crate::spec::ShellSpec;
-use crate::spec::fields::{Field, Kind, SHELL, Section, display};
+use crate::spec::fields::{Field, Kind, display, fields};
 use serde::{Deserialize, Serialize};
 
 /// Tiles along each side of the page's map (its style sheet lays out eight columns).
@@ -26,15 +31,19 @@ pub struct Axis {
 }
 
 impl Axis {
-    /// `count` values of the real field `key` from `from` to `to` (both within its range), in
-    /// equal steps, or equal ratios on a logarithmic field; each rounded as the panel shows it.
-    pub fn new(key: &str, from: f64, to: f64, count: usize) -> Result<Self, String> {
-        let field = SHELL
-            .iter()
-            .find(|f| f.key == key && f.section == Section::Pattern)
-            .ok_or_else(|| format!("'{key}' is not a parameter of a pattern model"))?;
-        let Kind::Real { min, max, log } = field.kind else {
-            return Err(format!("{key} is not a real number and cannot span a map"));
+    /// `count` values of the numeric field `key` of a shell whose form is of `kind`, from
+    /// `from` to `to` (both within its range), in equal steps, or equal ratios on a logarithmic
+    /// field; each rounded as the panel shows it (to a whole number on an integer field).
+    pub fn new(kind: &str, key: &str, from: f64, to: f64, count: usize) -> Result<Self, String> {
+        let field = fields(kind)
+            .find(|f| f.key == key && mappable(f))
+            .ok_or_else(|| {
+                format!("'{key}' is not a parameter of a {kind} shell's form or pattern model")
+            })?;
+        let (min, max, log, integer) = match field.kind {
+            Kind::Real { min, max, log } => (min, max, log, false),
+            Kind::Integer { min, max } => (min as f64, max as f64, false, true),
+            _ => return Err(format!("{key} is not a number and cannot span a map")),
         };
         if !(from.is_finite() && to.is_finite()) || from == to {
             return Err(format!("{key} needs two different numbers to span a map"));
@@ -62,47 +71,106 @@ impl Axis {
                 } else {
                     from + (to - from) * t
                 };
-                display(v).parse().unwrap_or(v)
+                if integer {
+                    v.round()
+                } else {
+                    display(v).parse().unwrap_or(v)
+                }
             })
             .collect();
         Ok(Self { field, values })
     }
 
-    /// The default span of a parameter whose value is `value`: half to twice it, kept within
-    /// the field's range (a quarter of the range from its low end when the value is 0).
-    pub fn around(field: &'static Field, value: f64, count: usize) -> Result<Self, String> {
-        let Kind::Real { min, max, .. } = field.kind else {
-            return Err(format!("{} is not a real number", field.key));
+    /// The value nearest `value`, by ratios on a logarithmic field, if `value` lies within the
+    /// axis or less than half a step beyond an end.
+    fn nearest(&self, value: f64) -> Option<usize> {
+        let log = matches!(self.field.kind, Kind::Real { log: true, .. });
+        let t = |v: f64| {
+            if log {
+                v.max(f64::MIN_POSITIVE).ln()
+            } else {
+                v
+            }
         };
-        let (from, to) = if value > 0.0 {
-            ((value / 2.0).max(min), (value * 2.0).min(max))
+        let ts: Vec<f64> = self.values.iter().map(|&v| t(v)).collect();
+        let half_step = (ts[ts.len() - 1] - ts[0]).abs() / (ts.len() - 1) as f64 / 2.0;
+        let (low, high) = (ts[0].min(ts[ts.len() - 1]), ts[0].max(ts[ts.len() - 1]));
+        let v = t(value);
+        if v < low - half_step || v > high + half_step {
+            return None;
+        }
+        (0..ts.len()).min_by(|&a, &b| (ts[a] - v).abs().total_cmp(&(ts[b] - v).abs()))
+    }
+
+    /// Whether the tiles along this axis differ in shape, not in pattern only.
+    pub fn shapes(&self) -> bool {
+        self.field.key.starts_with("form.")
+    }
+
+    /// The default span of a parameter whose value is `value`, kept within the field's range:
+    /// half to twice it; for a growth ratio (a logarithmic field whose range holds 1, such as
+    /// λ per step) its square root to its square, so that the growth per whorl halves and
+    /// doubles in its logarithm; about 0, an eighth of the range either side (a quarter from its
+    /// low end when that is 0).
+    pub fn around(
+        kind: &str,
+        field: &'static Field,
+        value: f64,
+        count: usize,
+    ) -> Result<Self, String> {
+        let (min, max, log) = match field.kind {
+            Kind::Real { min, max, log } => (min, max, log),
+            Kind::Integer { min, max } => (min as f64, max as f64, false),
+            _ => return Err(format!("{} is not a number", field.key)),
+        };
+        let ratio = log && min < 1.0 && 1.0 < max;
+        let (from, to) = if ratio && value == 1.0 {
+            (min.powf(1.0 / 16.0), max.powf(1.0 / 16.0))
+        } else if ratio {
+            let (a, b) = (value.sqrt(), value * value);
+            (a.min(b), a.max(b))
+        } else if value > 0.0 {
+            (value / 2.0, value * 2.0)
+        } else if value < 0.0 {
+            (value * 2.0, value / 2.0)
+        } else if min < 0.0 {
+            (-(max - min) / 8.0, (max - min) / 8.0)
         } else {
             (min, min + (max - min) / 4.0)
         };
-        Self::new(field.key, from, to, count)
+        let (from, to) = (from.max(min), to.min(max));
+        Self::new(kind, field.key, from, to, count)
     }
 }
 
-/// The real parameters of the pattern model of `spec`, in the panel's order, with their values:
-/// what a map can span.
+/// Whether a map can span `field`: a number of the form (its shape) or of the pattern model.
+fn mappable(field: &Field) -> bool {
+    (field.key.starts_with("form.") || field.key.starts_with("pattern.model."))
+        && matches!(field.kind, Kind::Real { .. } | Kind::Integer { .. })
+}
+
+/// The numeric parameters of the form of `spec` and of its pattern model, in the panel's order,
+/// with their values: what a map can span.
 pub fn parameters(spec: &ShellSpec) -> Vec<(&'static Field, f64)> {
     let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
-    SHELL
-        .iter()
-        .filter(|f| f.key.starts_with("pattern.model.") && matches!(f.kind, Kind::Real { .. }))
+    fields(spec.form.kind())
+        .filter(|f| mappable(f))
         .filter_map(|f| Some((f, leaves.get(f.key)?.as_f64()?)))
         .collect()
 }
 
 /// The two of `parameters` a map starts with: the activator's diffusion D_a across (it sets
 /// the spacing of stripes and the speed of waves), and down the next parameter of the equations
-/// (one with a symbol) after it; the first two where there is no D_a.
+/// (one with a symbol) after it. Without a pattern, the helico-spiral's radial growth λᵣ
+/// across and its axial growth λ_z down (how fast the whorls widen, and how far they are drawn
+/// out along the axis: Raup's whorl expansion and translation); the first two otherwise.
 pub fn first_axes(parameters: &[(&'static Field, f64)]) -> (usize, usize) {
-    let Some(x) = parameters
-        .iter()
-        .position(|(f, _)| f.key == "pattern.model.d_a")
-    else {
-        return (0, 1);
+    let at = |key: &str| parameters.iter().position(|(f, _)| f.key == key);
+    let Some(x) = at("pattern.model.d_a") else {
+        return match (at("form.spiral.lambda_r"), at("form.spiral.lambda_z")) {
+            (Some(x), Some(y)) => (x, y),
+            _ => (0, 1),
+        };
     };
     let y = (x + 1..parameters.len())
         .chain(0..x)
@@ -159,8 +227,22 @@ pub struct Tile {
     pub values: (f64, f64),
     pub spec: ShellSpec,
     pub link: String,
+    /// The pattern's picture, on a map over the pattern model's parameters.
     pub picture: Option<Picture>,
+    /// Whether its shell is drawn, on a map over the form's parameters (drawn by the page,
+    /// as a gallery picture is).
+    pub shown: bool,
+    /// Why it has no picture: its values cannot grow.
     pub failure: Option<String>,
+    /// What else its link changed so that its values can grow (fewer whorls at a faster
+    /// growth, say): it is drawn, and this is said beside it.
+    pub note: Option<String>,
+}
+
+impl Tile {
+    fn done(&self) -> bool {
+        self.picture.is_some() || self.shown || self.failure.is_some()
+    }
 }
 
 /// One tile's pattern being computed, a row at a time: `rows` rows of a shell's pattern, kept
@@ -205,6 +287,10 @@ impl TileWork {
 /// The map: `y.values.len()` rows of `x.values.len()` tiles, the first row at the first value
 /// of y, each row from the first value of x. Only the tile being computed holds its pattern.
 pub struct ParameterMap {
+    /// The preset the mapped shell is a variant of (each tile's too).
+    pub preset: &'static Preset,
+    /// The tile nearest the shell mapped, when its values fall within the map.
+    pub current: Option<usize>,
     pub x: Axis,
     pub y: Axis,
     /// Pattern rows computed for every tile.
@@ -225,23 +311,35 @@ impl ParameterMap {
             for &vx in &x.values {
                 let across = link::with(preset, spec, x.field.key, &vx.to_string());
                 let tile = link::with(preset, &across.spec, y.field.key, &vy.to_string());
-                let problems: Vec<String> = across
+                // A value of an axis the link could not keep leaves the tile empty; another
+                // value repaired for it is said, and the tile is drawn.
+                let (refused, repaired): (Vec<&Problem>, Vec<&Problem>) = across
                     .problems
                     .iter()
                     .chain(&tile.problems)
-                    .map(ToString::to_string)
-                    .collect();
+                    .partition(|p| p.key == x.field.key || p.key == y.field.key);
+                let words = |problems: Vec<&Problem>| {
+                    let words: Vec<String> = problems.iter().map(ToString::to_string).collect();
+                    (!words.is_empty()).then(|| words.join("; "))
+                };
                 tiles.push(Tile {
                     values: (vx, vy),
                     link: link::encode(tile.preset, &tile.spec),
                     spec: tile.spec,
                     picture: None,
-                    failure: (!problems.is_empty()).then(|| problems.join("; ")),
+                    shown: false,
+                    failure: words(refused),
+                    note: words(repaired),
                 });
             }
         }
         let rows = (spec.growth.rows as usize).min(spec.pattern.cells.max(1) as usize);
+        let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
+        let at = |axis: &Axis| axis.nearest(leaves.get(axis.field.key)?.as_f64()?);
+        let current = at(&x).zip(at(&y)).map(|(i, j)| j * x.values.len() + i);
         Self {
+            preset,
+            current,
             x,
             y,
             rows,
@@ -261,18 +359,22 @@ impl ParameterMap {
         &self.tiles[j * self.x.values.len() + i]
     }
 
+    /// Whether the tiles show whole shells (an axis spans a parameter of the form), not
+    /// patterns: those are grown and drawn by the page, [`Self::shown`] as they are.
+    pub fn shells(&self) -> bool {
+        self.x.shapes() || self.y.shapes()
+    }
+
     /// Whether every tile is computed (or has failed).
     pub fn finished(&self) -> bool {
-        self.tiles
-            .iter()
-            .all(|t| t.picture.is_some() || t.failure.is_some())
+        self.tiles.iter().all(Tile::done)
     }
 
     /// The tiles still to compute, by index: what may be computed elsewhere ([`TileWork`] on
-    /// each tile's spec and [`Self::rows`]) and [`Self::place`]d.
+    /// each tile's spec and [`Self::rows`], or the whole shell) and [`Self::place`]d.
     pub fn to_compute(&self) -> Vec<usize> {
         (0..self.tiles.len())
-            .filter(|&i| self.tiles[i].picture.is_none() && self.tiles[i].failure.is_none())
+            .filter(|&i| !self.tiles[i].done())
             .collect()
     }
 
@@ -285,12 +387,22 @@ impl ParameterMap {
         }
     }
 
-    /// Computes rows, tile after tile, while `more()` says so; returns the tiles it finished.
+    /// Tile `index`'s shell was drawn, or could not be grown for the reason given.
+    pub fn shown(&mut self, index: usize, result: Result<(), String>) {
+        let tile = &mut self.tiles[index];
+        match result {
+            Ok(()) => tile.shown = true,
+            Err(why) => tile.failure = Some(why),
+        }
+    }
+
+    /// Computes the patterns, row after row and tile after tile, while `more()` says so;
+    /// returns the tiles it finished. A map of shells is not computed here ([`Self::shells`]).
     pub fn work(&mut self, mut more: impl FnMut() -> bool) -> std::ops::Range<usize> {
         let first = self.next;
-        while self.next < self.tiles.len() && more() {
+        while self.next < self.tiles.len() && !self.shells() && more() {
             let tile = &self.tiles[self.next];
-            if tile.failure.is_some() || tile.picture.is_some() {
+            if tile.done() {
                 self.next += 1;
                 continue;
             }

@@ -228,7 +228,8 @@ impl App {
 
     /// Follows the URL fragment (closing the parameter map, whose tiles are links).
     pub fn route(&mut self) {
-        self.map.close(&mut self.workers.borrow_mut());
+        self.map
+            .close(&mut self.workers.borrow_mut(), &mut self.pictures);
         let fragment = location_hash();
         activity::set(format!("opening the link {fragment}"));
         if fragment.trim_start_matches('#').is_empty() {
@@ -971,6 +972,9 @@ impl App {
             self.update_url();
         }
         if self.map.is_open() {
+            if let Some(tile) = self.pictures.work(&mut self.workers.borrow_mut()) {
+                self.map.shown(tile, Ok(()));
+            }
             activity::set("drawing the parameter map".to_string());
             return Ok(());
         }
@@ -1073,8 +1077,10 @@ impl App {
         }
         for (request, reply) in polled.replies {
             match (request, reply) {
-                (Request::Whole { link, .. }, Reply::Grown { result, .. }) => {
-                    self.pictures.take(&link, result);
+                (Request::Whole { job, .. }, Reply::Grown { result, .. }) => {
+                    if let Some((tile, why)) = self.pictures.take(job, result) {
+                        self.map.shown(tile, Err(why));
+                    }
                 }
                 (_, Reply::Tiled { job, result }) => self.map.take(job, result),
                 (request, reply) => {
@@ -1108,14 +1114,24 @@ impl App {
     pub fn open_map(&mut self) {
         self.stop_recording("the map covered the shell");
         if let Some((preset, spec)) = &self.current {
-            self.map.open(preset, spec, &mut self.workers.borrow_mut());
+            self.map.open(
+                preset,
+                spec,
+                &mut self.workers.borrow_mut(),
+                &mut self.pictures,
+            );
         }
     }
 
     /// Draws the map anew over the axes its controls now describe.
     pub fn draw_map(&mut self) {
         if let Some((preset, spec)) = &self.current {
-            self.map.draw(preset, spec, &mut self.workers.borrow_mut());
+            self.map.draw(
+                preset,
+                spec,
+                &mut self.workers.borrow_mut(),
+                &mut self.pictures,
+            );
         }
     }
 
@@ -1124,8 +1140,19 @@ impl App {
         self.map.chose(name);
     }
 
+    /// Whether the parameter map covers the shell.
+    pub fn map_open(&self) -> bool {
+        self.map.is_open()
+    }
+
+    /// Moves the focus across the map's tiles (arrow keys).
+    pub fn step_map(&self, dx: i32, dy: i32) {
+        self.map.step(dx, dy);
+    }
+
     pub fn close_map(&mut self) {
-        self.map.close(&mut self.workers.borrow_mut());
+        self.map
+            .close(&mut self.workers.borrow_mut(), &mut self.pictures);
     }
 
     /// Follows a change of the page's light or dark theme.

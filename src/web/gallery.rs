@@ -14,6 +14,7 @@ use crate::presets::{Preset, presets};
 use crate::render::Canvas;
 use crate::share::link;
 use crate::spec::ShellSpec;
+use crate::view::picture::{CARD_PIXELS, TILE_PIXELS, picture_spec};
 use crate::work::message::{Request, WholeShell};
 use crate::work::view_command::ViewCommand;
 use crate::work::view_status::Device;
@@ -55,96 +56,179 @@ pub fn build(container: &Element) {
     }
 }
 
-/// Draws the cards' pictures: each shell is grown whole by a worker of the pool (all at once,
-/// shared among them), and drawn here by a viewer of its own as its answer comes.
+/// Where a picture goes: a gallery card's, or a tile of the parameter map over a shape's
+/// parameters (by its job number in the map).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Place {
+    Card,
+    Tile(u32),
+}
+
+impl Place {
+    /// Pixels across the picture as drawn.
+    fn pixels(self) -> u32 {
+        match self {
+            Place::Card => CARD_PIXELS,
+            Place::Tile(_) => TILE_PIXELS,
+        }
+    }
+}
+
+/// A picture asked of the pool: where it goes, the shell and the link it is grown from, and
+/// the job number it was asked with.
+#[derive(Clone)]
+struct Wanted {
+    job: u32,
+    place: Place,
+    preset: &'static Preset,
+    spec: ShellSpec,
+    link: String,
+}
+
+impl Wanted {
+    /// The `img` the picture is shown in.
+    fn selector(&self) -> String {
+        match self.place {
+            Place::Card => format!("a.card[data-preset=\"{}\"] img", self.preset.id),
+            Place::Tile(job) => format!("#map-grid a.tile[data-job=\"{job}\"] img"),
+        }
+    }
+}
+
+/// Draws the gallery's and the shape map's pictures: each shell is grown whole by a worker of
+/// the pool (all at once, shared among them), and drawn here by a viewer of its own as its
+/// answer comes.
 pub struct Pictures {
     viewer: Viewer,
-    /// The presets whose pictures are not drawn yet, each with the link its shell is grown from.
-    left: Vec<(&'static Preset, String)>,
-    /// Whether the pool has been asked for them since the gallery was last shown.
+    /// The pictures not drawn yet.
+    left: Vec<Wanted>,
+    /// Whether the pool has been asked for the cards' since the gallery was last shown.
     asked: bool,
     /// Shells grown and not drawn yet.
-    waiting: Vec<(&'static Preset, WholeShell)>,
+    waiting: Vec<(Wanted, WholeShell)>,
     /// Pictures drawn within [`LOSS_NOTICE_MS`], and when: the browser tells of a lost device a
     /// little after the fact, so these may be blank, and are grown and drawn again after a loss.
-    lately: VecDeque<(&'static Preset, f64)>,
+    lately: VecDeque<(Wanted, f64)>,
+    /// The job number of the next picture asked.
+    next_job: u32,
 }
 
 /// Milliseconds within which the browser is taken to report a lost device.
 const LOSS_NOTICE_MS: f64 = 2000.0;
 
-/// The spec of a preset's picture: its mesh as fine as a picture shows.
-fn picture_spec(preset: &Preset) -> ShellSpec {
-    crate::view::picture::picture_spec(&preset.spec)
-}
-
-/// The link a preset's picture is grown from.
-fn picture_link(preset: &Preset) -> String {
-    link::encode(preset, &picture_spec(preset))
-}
-
 impl Pictures {
     /// Pictures drawn by `viewer` (none where it draws nothing).
     pub fn new(viewer: Viewer) -> Self {
-        let left = if viewer.backend().is_some() {
-            presets().iter().map(|p| (p, picture_link(p))).collect()
-        } else {
-            Vec::new()
-        };
-        Self {
+        let mut pictures = Self {
             viewer,
-            left,
+            left: Vec::new(),
             asked: false,
             waiting: Vec::new(),
             lately: VecDeque::new(),
+            next_job: 0,
+        };
+        if pictures.draws() {
+            for preset in presets() {
+                pictures.want(Place::Card, preset, &preset.spec);
+            }
         }
+        pictures
     }
 
-    /// Asks the pool for the pictures not drawn yet (once while the gallery is shown).
+    /// Adds the picture of `spec` (a variant of `preset`) to those to draw, its mesh as fine as
+    /// a picture shows; returns it to be asked of the pool.
+    fn want(&mut self, place: Place, preset: &'static Preset, spec: &ShellSpec) -> &Wanted {
+        let spec = picture_spec(spec, place.pixels());
+        let wanted = Wanted {
+            job: self.next_job,
+            place,
+            preset,
+            link: link::encode(preset, &spec),
+            spec,
+        };
+        self.next_job = self.next_job.wrapping_add(1);
+        self.left.push(wanted);
+        self.left.last().expect("just pushed")
+    }
+
+    fn submit(workers: &mut Workers, wanted: &Wanted) {
+        workers.submit(Request::Whole {
+            job: wanted.job,
+            link: wanted.link.clone(),
+        });
+    }
+
+    /// Asks the pool for the cards' pictures not drawn yet (once while the gallery is shown).
     pub fn ask(&mut self, workers: &mut Workers) {
         if self.asked {
             return;
         }
         self.asked = true;
-        for (job, (_, link)) in self.left.iter().enumerate() {
-            workers.submit(Request::Whole {
-                job: job as u32,
-                link: link.clone(),
-            });
+        for wanted in self.left.iter().filter(|w| w.place == Place::Card) {
+            Self::submit(workers, wanted);
         }
+    }
+
+    /// Asks the pool for the picture of tile `job` of the shape map, the shell `spec`.
+    pub fn ask_tile(
+        &mut self,
+        job: u32,
+        preset: &'static Preset,
+        spec: &ShellSpec,
+        workers: &mut Workers,
+    ) {
+        let wanted = self.want(Place::Tile(job), preset, spec);
+        Self::submit(workers, wanted);
     }
 
     /// Asks the pool again for a picture that may have been drawn blank by a lost device.
-    fn ask_again(&mut self, preset: &'static Preset, workers: &mut Workers) {
-        let link = picture_link(preset);
-        workers.submit(Request::Whole {
-            job: self.left.len() as u32,
-            link: link.clone(),
-        });
-        self.left.push((preset, link));
+    fn ask_again(&mut self, wanted: Wanted, workers: &mut Workers) {
+        let again = self.want(wanted.place, wanted.preset, &wanted.spec);
+        Self::submit(workers, again);
     }
 
-    /// The gallery was left: the pictures not yet sent to a worker wait until it is shown
-    /// again.
+    /// Whether the pool's job `job` is a picture for `place`.
+    fn job_for(&self, job: u32, place: impl Fn(Place) -> bool) -> bool {
+        self.left.iter().any(|w| w.job == job && place(w.place))
+    }
+
+    /// The gallery was left: the cards' pictures not yet sent to a worker wait until it is
+    /// shown again.
     pub fn pause(&mut self, workers: &mut Workers) {
-        workers.cancel(|r| matches!(r, Request::Whole { .. }));
+        workers.cancel(
+            |r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, |p| p == Place::Card)),
+        );
         self.asked = false;
     }
 
-    /// A worker grew the shell of `link`: it waits to be drawn onto its card ([`Self::work`]).
-    pub fn take(&mut self, link: &str, result: Result<WholeShell, String>) {
-        let Some(at) = self.left.iter().position(|(_, l)| l == link) else {
-            return;
-        };
-        let (preset, _) = self.left.remove(at);
-        if let Ok(whole) = result {
-            self.waiting.push((preset, whole));
+    /// The shape map was closed or drawn anew: its tiles' pictures are drawn no more.
+    pub fn drop_tiles(&mut self, workers: &mut Workers) {
+        let tile = |p: Place| matches!(p, Place::Tile(_));
+        workers.cancel(|r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, tile)));
+        self.left.retain(|w| !tile(w.place));
+        self.waiting.retain(|(w, _)| !tile(w.place));
+        self.lately.retain(|(w, _)| !tile(w.place));
+    }
+
+    /// A worker grew the shell of picture `job`: it waits to be drawn ([`Self::work`]). A
+    /// map's tile whose shell could not be grown is returned with the reason.
+    pub fn take(&mut self, job: u32, result: Result<WholeShell, String>) -> Option<(u32, String)> {
+        let at = self.left.iter().position(|w| w.job == job)?;
+        let wanted = self.left.remove(at);
+        match (result, wanted.place) {
+            (Ok(whole), _) => {
+                self.waiting.push((wanted, whole));
+                None
+            }
+            (Err(why), Place::Tile(tile)) => Some((tile, why)),
+            (Err(_), Place::Card) => None,
         }
     }
 
-    /// Keeps the pictures' graphics device and draws the next shell waiting for it. After a
-    /// loss, the pictures drawn just before it are grown and drawn again on the next device.
-    pub fn work(&mut self, workers: &mut Workers) {
+    /// Keeps the pictures' graphics device and draws the next shell waiting for it; returns
+    /// the map's tile it drew, if it was one. After a loss, the pictures drawn just before it
+    /// are grown and drawn again on the next device.
+    pub fn work(&mut self, workers: &mut Workers) -> Option<u32> {
         let mut device = self.viewer.survive();
         if matches!(device, Device::NeedsCanvas(_)) {
             // The canvas cannot be drawn on again: a fresh copy takes its place (or, failing
@@ -155,10 +239,10 @@ impl Pictures {
             }
         }
         if device != Device::Ready {
-            while let Some((preset, _)) = self.lately.pop_front() {
-                self.ask_again(preset, workers);
+            while let Some((wanted, _)) = self.lately.pop_front() {
+                self.ask_again(wanted, workers);
             }
-            return;
+            return None;
         }
         let noticed = now() - LOSS_NOTICE_MS;
         while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
@@ -166,26 +250,27 @@ impl Pictures {
         }
         // One picture a frame: reading a picture back waits for the GPU to draw it, and the
         // page answers the user between two.
-        let Some((preset, whole)) = self.waiting.pop() else {
-            return;
-        };
-        self.viewer.show_whole(preset, &picture_spec(preset), whole);
-        let picture = self.viewer.picture();
+        let (wanted, whole) = self.waiting.pop()?;
+        let t0 = now();
+        self.viewer.show_whole(wanted.preset, &wanted.spec, whole);
+        let t1 = now();
+        let picture = self.viewer.picture_at(wanted.place.pixels());
+        web_sys::console::log_1(
+            &format!("ZZ show {:.0} picture {:.0}", t1 - t0, now() - t1).into(),
+        );
         if self.viewer.survive() != Device::Ready {
             // Lost while drawing: the picture may be blank; it is drawn on the next device.
-            self.ask_again(preset, workers);
-            return;
+            self.ask_again(wanted, workers);
+            return None;
         }
-        let Ok(blob) = picture else {
-            return;
-        };
-        self.lately.push_back((preset, now()));
-        let selector = format!("a.card[data-preset=\"{}\"] img", preset.id);
+        let blob = picture.ok()?;
         let image = super::page::document()
-            .query_selector(&selector)
+            .query_selector(&wanted.selector())
             .ok()
             .flatten()
             .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+        let place = wanted.place;
+        self.lately.push_back((wanted, now()));
         if let Some(img) = image {
             wasm_bindgen_futures::spawn_local(async move {
                 // A picture the browser could not read leaves the card as it was.
@@ -193,6 +278,10 @@ impl Pictures {
                     img.set_src(&url);
                 }
             });
+        }
+        match place {
+            Place::Tile(tile) => Some(tile),
+            Place::Card => None,
         }
     }
 
@@ -211,9 +300,12 @@ impl Pictures {
         self.viewer.backend().is_some()
     }
 
-    /// Whether every picture is drawn, and the last of them long enough ago that a lost
-    /// device would have been reported.
+    /// Whether every card's picture is drawn, and the last of them long enough ago that a
+    /// lost device would have been reported.
     pub fn finished(&self) -> bool {
-        self.left.is_empty() && self.waiting.is_empty() && self.lately.is_empty()
+        let card = |w: &Wanted| w.place == Place::Card;
+        !self.left.iter().any(card)
+            && !self.waiting.iter().any(|(w, _)| card(w))
+            && !self.lately.iter().any(|(w, _)| card(w))
     }
 }

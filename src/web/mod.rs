@@ -293,17 +293,22 @@ fn on_click(id: &str, app: &Shared, handler: impl Fn(&mut App) + 'static) -> Res
     }
 }
 
-/// Whether a key press belongs to a form field rather than to the page's shortcuts.
-fn typing(e: &KeyboardEvent) -> bool {
-    let tag = e
-        .target()
+/// The tag of the element a key press goes to, in lower case.
+fn target_tag(e: &KeyboardEvent) -> String {
+    e.target()
         .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
         .map(|t| t.tag_name().to_ascii_lowercase())
-        .unwrap_or_default();
-    matches!(
-        tag.as_str(),
-        "input" | "select" | "textarea" | "button" | "summary" | "a"
-    )
+        .unwrap_or_default()
+}
+
+/// Whether a key press goes to a field that takes text or a choice.
+fn editing(e: &KeyboardEvent) -> bool {
+    matches!(target_tag(e).as_str(), "input" | "select" | "textarea")
+}
+
+/// Whether a key press belongs to a form field or control rather than to the page's shortcuts.
+fn typing(e: &KeyboardEvent) -> bool {
+    editing(e) || matches!(target_tag(e).as_str(), "button" | "summary" | "a")
 }
 
 /// Listens to the shell's canvas: orbit, zoom, reset (again on a fresh canvas that replaced it).
@@ -424,10 +429,27 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
         }
     })?;
     on(&document, "keydown", app, |a, e: KeyboardEvent| {
-        if typing(&e) || e.ctrl_key() || e.meta_key() || e.alt_key() || !a.has_shell() {
+        if e.ctrl_key() || e.meta_key() || e.alt_key() || !a.has_shell() {
             return;
         }
-        match e.key().as_str() {
+        let key = e.key();
+        let arrow = match key.as_str() {
+            "ArrowLeft" => Some((-1, 0)),
+            "ArrowRight" => Some((1, 0)),
+            "ArrowUp" => Some((0, -1)),
+            "ArrowDown" => Some((0, 1)),
+            _ => None,
+        };
+        // Over the map, the arrows move among its tiles (links), but not in its fields.
+        if let Some((dx, dy)) = arrow.filter(|_| a.map_open() && !editing(&e)) {
+            a.step_map(dx, dy);
+            e.prevent_default();
+            return;
+        }
+        if typing(&e) {
+            return;
+        }
+        match key.as_str() {
             "Escape" => a.close_map(),
             " " => a.toggle_playing(),
             "r" => a.restart(),

@@ -933,6 +933,18 @@ impl Viewer {
         }
     }
 
+    /// [`Self::picture`], drawn on a canvas of `pixels` × `pixels` (a viewer of pictures only,
+    /// whose canvas is not laid out on the page).
+    pub fn picture_at(&mut self, pixels: u32) -> Result<js_sys::Promise, String> {
+        if let Some(d) = &mut self.drawing
+            && d.canvas.size() != (pixels, pixels)
+        {
+            d.canvas.set_size((pixels, pixels));
+            d.renderer.resize(pixels, pixels);
+        }
+        self.picture()
+    }
+
     /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
     /// browser clears the drawing).
     pub fn picture(&mut self) -> Result<js_sys::Promise, String> {

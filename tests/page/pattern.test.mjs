@@ -111,40 +111,6 @@ test('dragging a pattern slider redraws the whole pattern in the planar view whi
   }
 });
 
-test('the parameter map fills a grid of patterns, and a chosen tile opens that shell with its two values', async () => {
-  const { page, errors } = await open(browser, `${base}#v=1&preset=oliva-porphyria`);
-  try {
-    await waitForState(page, ['growing', 'grown']);
-    await page.click('#map-open');
-    const started = Date.now();
-    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 60_000 });
-    const seconds = (Date.now() - started) / 1000;
-    const tiles = await page.evaluate(() => [...document.querySelectorAll('#map-grid .tile')].map((a) => {
-      const c = a.querySelector('canvas');
-      return { href: a.getAttribute('href'), title: a.title, failed: a.classList.contains('failed'), width: c.width, picture: c.toDataURL() };
-    }));
-    await page.screenshot({ path: `${SHOTS}parameter-map.png` });
-    assert.equal(tiles.length, 64);
-    const painted = tiles.filter((t) => !t.failed && t.width === 100);
-    assert.ok(painted.length >= 56, `only ${painted.length} of 64 tiles have a pattern`);
-    assert.ok(new Set(painted.map((t) => t.picture)).size >= painted.length - 4, 'the patterns differ from tile to tile');
-    console.log(`# the map of oliva-porphyria filled in ${seconds.toFixed(1)} s`);
-    const [x, y] = await page.evaluate(() => [document.getElementById('map-x').value, document.getElementById('map-y').value]);
-    const chosen = tiles[5 * 8 + 2];
-    await page.click(`#map-grid .tile:nth-child(${5 * 8 + 3})`);
-    await page.waitForFunction((h) => location.hash === h && document.body.dataset.state === 'growing', chosen.href);
-    assert.equal(await page.evaluate(() => document.body.dataset.map), '');
-    assert.ok(await page.isHidden('#map'));
-    for (const key of [x, y]) {
-      const shown = await page.inputValue(`[id="field-${key}"]`);
-      assert.ok(chosen.href.includes(`${key}=${shown}`), `${chosen.href} has ${key}=${shown}`);
-    }
-    assert.deepEqual(errors, []);
-  } finally {
-    await page.close();
-  }
-});
-
 test("a growing edge's planar view widens as a fan, and downloads as one", async () => {
   const { page } = await open(browser, `${base}#v=1&preset=stripes-growing-edge&growth.speed=200`);
   try {

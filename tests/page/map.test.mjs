@@ -1,0 +1,179 @@
+// The parameter map: over two parameters of the pattern model, a grid of patterns; over a
+// parameter of the form, a morphospace of whole shells drawn by the pool and the pictures'
+// viewer. Each tile is a link that opens its shell, the current shell is marked, the arrow keys
+// walk the grid, and tiles whose values cannot grow are hatched with the reason.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { open, session, waitForState } from './browser.mjs';
+
+const ROOT = new URL('../../', import.meta.url).pathname;
+const SHOTS = `${ROOT}tests/page/screenshots/`;
+mkdirSync(SHOTS, { recursive: true });
+/** A browser per backend: the map of shells is drawn by either. */
+const sessions = {};
+
+before(async () => {
+  sessions.WebGL2 = await session('WebGL2');
+  sessions.WebGPU = await session('WebGPU');
+});
+after(async () => {
+  for (const s of Object.values(sessions)) await s.close();
+});
+
+/** Opens `fragment` in a new page of the browser for `backend`. */
+function openOn(backend, fragment, viewport) {
+  const { browser, base } = sessions[backend];
+  return open(browser, `${base}#${fragment}`, viewport);
+}
+
+test('the parameter map fills a grid of patterns, and a chosen tile opens that shell with its two values', async () => {
+  const { page, errors } = await openOn('WebGL2', 'v=1&preset=oliva-porphyria');
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await page.click('#map-open');
+    const started = Date.now();
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 60_000 });
+    const seconds = (Date.now() - started) / 1000;
+    const tiles = await page.evaluate(() => [...document.querySelectorAll('#map-grid .tile')].map((a) => {
+      const c = a.querySelector('canvas');
+      return { href: a.getAttribute('href'), title: a.title, failed: a.classList.contains('failed'), width: c.width, picture: c.toDataURL() };
+    }));
+    await page.screenshot({ path: `${SHOTS}parameter-map.png` });
+    assert.equal(tiles.length, 64);
+    const painted = tiles.filter((t) => !t.failed && t.width === 100);
+    assert.ok(painted.length >= 56, `only ${painted.length} of 64 tiles have a pattern`);
+    assert.ok(new Set(painted.map((t) => t.picture)).size >= painted.length - 4, 'the patterns differ from tile to tile');
+    console.log(`# the map of oliva-porphyria filled in ${seconds.toFixed(1)} s`);
+    const [x, y] = await page.evaluate(() => [document.getElementById('map-x').value, document.getElementById('map-y').value]);
+    const chosen = tiles[5 * 8 + 2];
+    await page.click(`#map-grid .tile:nth-child(${5 * 8 + 3})`);
+    await page.waitForFunction((h) => location.hash === h && document.body.dataset.state === 'growing', chosen.href);
+    assert.equal(await page.evaluate(() => document.body.dataset.map), '');
+    assert.ok(await page.isHidden('#map'));
+    for (const key of [x, y]) {
+      const shown = await page.inputValue(`[id="field-${key}"]`);
+      assert.ok(chosen.href.includes(`${key}=${shown}`), `${chosen.href} has ${key}=${shown}`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+/**
+ * The map's tiles as drawn: each tile's link, title and classes, and for a drawn picture the
+ * box of its pixels that differ from its corner (the shell, not the background), and a digest
+ * of its pixels.
+ */
+async function shellTiles(page) {
+  // A picture is drawn in one frame and shown in its tile once the browser has read it.
+  await page.waitForFunction(() => [...document.querySelectorAll('#map-grid .tile')]
+    .every((a) => a.classList.contains('failed') || a.querySelector('img')?.src.startsWith('blob:')));
+  return page.$$eval('#map-grid .tile', (tiles) => Promise.all(tiles.map(async (a) => {
+    const img = a.querySelector('img');
+    const tile = { href: a.getAttribute('href'), title: a.title, classes: [...a.classList], drawn: false };
+    if (!img || !img.src.startsWith('blob:')) return tile;
+    await img.decode();
+    const { naturalWidth: w, naturalHeight: h } = img;
+    const c = new OffscreenCanvas(w, h);
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const { data } = g.getImageData(0, 0, w, h);
+    let [x0, y0, x1, y1, digest] = [w, h, -1, -1, 0];
+    for (let y = 0; y < h; y += 1) {
+      for (let x = 0; x < w; x += 1) {
+        const i = (y * w + x) * 4;
+        digest = (digest * 31 + data[i] + data[i + 1] * 7 + data[i + 2] * 13) >>> 0;
+        if (Math.abs(data[i] - data[0]) + Math.abs(data[i + 1] - data[1]) + Math.abs(data[i + 2] - data[2]) > 40) {
+          [x0, y0, x1, y1] = [Math.min(x0, x), Math.min(y0, y), Math.max(x1, x), Math.max(y1, y)];
+        }
+      }
+    }
+    return { ...tile, drawn: true, width: w, box: [x1 - x0 + 1, y1 - y0 + 1], digest };
+  })));
+}
+
+for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's parameters is a morphospace of whole shells, each tile its shell's link (${backend})`, async () => {
+  const { page, errors } = await openOn(backend, 'v=1&preset=turbinate', { width: 1100, height: 1000 });
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await page.click('#map-open');
+    const started = Date.now();
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 180_000 });
+    console.log(`# the morphospace of turbinate (64 shells) filled in ${((Date.now() - started) / 1000).toFixed(1)} s on ${backend}`);
+    assert.equal(await page.evaluate(() => document.body.dataset.backend), backend);
+    const [x, y, groups] = await page.evaluate(() => [
+      document.getElementById('map-x').value, document.getElementById('map-y').value,
+      [...document.querySelectorAll('#map-x optgroup')].map((g) => g.label),
+    ]);
+    assert.deepEqual([x, y], ['form.spiral.lambda_r', 'form.spiral.lambda_z'], "Raup's expansion across, translation down");
+    assert.ok(groups.includes('Shape') && groups.includes('Generating curve'), `parameters by section: ${groups}`);
+    const tiles = await shellTiles(page);
+    const clip = await page.evaluate(() => {
+      const [first, last] = [...document.querySelectorAll('#map-grid .tile')].filter((_, i, all) => i === 0 || i === all.length - 1).map((t) => t.getBoundingClientRect());
+      return { x: first.left - 4, y: first.top - 4, width: last.right - first.left + 8, height: last.bottom - first.top + 8 };
+    });
+    await page.screenshot({ path: `${SHOTS}shape-map-${backend}.png`, clip });
+    assert.equal(tiles.length, 64);
+    assert.ok(tiles.every((t) => t.drawn && t.width === 128), 'every tile is a drawn shell');
+    assert.ok(new Set(tiles.map((t) => t.digest)).size >= 60, 'the shells differ from tile to tile');
+    // Down a column λ_z grows: the shell is drawn out along its axis, from a flat coil to a tower.
+    const aspect = (t) => t.box[1] / t.box[0];
+    for (const column of [0, 7]) {
+      const [top, bottom] = [tiles[column], tiles[7 * 8 + column]];
+      assert.ok(aspect(bottom) > 2 * aspect(top), `column ${column}: ${top.box} above, ${bottom.box} below`);
+    }
+    const current = tiles.filter((t) => t.classes.includes('current'));
+    assert.equal(current.length, 1, 'the shell mapped is marked');
+    assert.match(current[0].title, /nearest this shell/);
+    // The arrows walk from the marked tile; Enter opens the tile reached.
+    const at = tiles.indexOf(current[0]);
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowDown');
+    const reached = tiles[at + 1 + 8] ?? tiles[at];
+    assert.equal(await page.evaluate(() => document.activeElement.getAttribute('href')), reached.href);
+    await page.keyboard.press('Enter');
+    await page.waitForFunction((h) => location.hash === h && document.body.dataset.map === '', reached.href);
+    assert.ok(await page.isHidden('#map'));
+    await waitForState(page, ['growing', 'grown']);
+    for (const key of [x, y]) {
+      const shown = await page.inputValue(`[id="field-${key}"]`);
+      assert.ok(reached.href.includes(`${key}=${shown}`), `${reached.href} has ${key}=${shown}`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test('tiles whose values cannot grow are hatched with the reason, and the others are drawn', async () => {
+  const { page, errors } = await openOn('WebGL2', 'v=1&preset=turbinate');
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await page.click('#map-open');
+    await page.waitForFunction(() => document.body.dataset.map !== '');
+    await page.selectOption('#map-y', 'form.spiral.whorls');
+    await page.fill('#map-x-from', '1.003');
+    await page.fill('#map-x-to', '1.05');
+    await page.fill('#map-y-from', '2');
+    await page.fill('#map-y-to', '30');
+    await page.click('#map-draw');
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 180_000 });
+    const tiles = await shellTiles(page);
+    const failed = tiles.filter((t) => t.classes.includes('failed'));
+    assert.ok(failed.length >= 8 && failed.length <= 56, `${failed.length} tiles cannot grow`);
+    for (const t of failed) {
+      assert.ok(!t.drawn, 'a hatched tile has no picture');
+      assert.match(t.title, /form\.spiral\.whorls: .* whorls at λᵣ/);
+    }
+    assert.ok(tiles.filter((t) => !t.classes.includes('failed')).every((t) => t.drawn));
+    await page.fill('#map-x-to', '9');
+    await page.click('#map-draw');
+    assert.match(await page.textContent('#map-status'), /runs from 0\.8 to 3/);
+    assert.equal(await page.evaluate(() => document.body.dataset.map), 'refused');
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
