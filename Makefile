@@ -129,8 +129,7 @@ bench: build deps-browser
 ## The README's pictures, taken by the page tests that check what they show.
 readme-pictures: build deps-browser
 	$(XVFB) node --test --test-name-pattern='morphospace.*WebGL2' tests/page/map.test.mjs
-	mkdir -p docs/images
-	cp tests/page/screenshots/shape-map-WebGL2.png docs/images/shape-map.png
+	cp tests/page/screenshots/shape-map-WebGL2.png www/img/shape-map.png
 
 ## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…' [TURN=20]
 

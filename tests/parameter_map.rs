@@ -3,10 +3,12 @@
 //! with tiles that cannot be integrated or grown refused with their reason while the others
 //! fill.
 
+use seashells_core::forms::sweep::raup::Raup;
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};
 use seashells_core::share::parameter_map::{Axis, ParameterMap, first_axes, parameters};
 use seashells_core::spec::fields::field;
+use seashells_core::spec::form::Form;
 
 fn value(spec: &seashells_core::spec::ShellSpec, key: &str) -> f64 {
     flatten(&serde_json::to_value(spec).unwrap())[key]
@@ -80,9 +82,9 @@ fn every_tile_is_the_pattern_of_its_own_link_and_the_map_is_the_same_every_time(
     assert!(names.contains(&"pattern.model.d_a") && names.contains(&"pattern.model.nu"));
     assert!(names.contains(&"form.spiral.lambda_r") && names.contains(&"form.curve.segments"));
     assert!(
-        names
+        names.iter().all(|k| ["pattern.model.", "form.", "raup."]
             .iter()
-            .all(|k| k.starts_with("pattern.model.") || k.starts_with("form.")),
+            .any(|p| k.starts_with(p))),
         "{names:?}"
     );
     let (x, y) = first_axes(&offered);
@@ -156,14 +158,10 @@ fn a_map_over_the_forms_parameters_is_a_grid_of_shells_each_reopened_by_its_link
     let plain = preset("turbinate").unwrap();
     let offered = parameters(&plain.spec);
     assert!(
-        offered.iter().all(|(f, _)| f.key.starts_with("form.")),
+        offered
+            .iter()
+            .all(|(f, _)| f.key.starts_with("form.") || f.key.starts_with("raup.")),
         "no pattern"
-    );
-    let (x, y) = first_axes(&offered);
-    assert_eq!(
-        (offered[x].0.key, offered[y].0.key),
-        ("form.spiral.lambda_r", "form.spiral.lambda_z"),
-        "Raup's expansion across, translation down"
     );
     let lambda_r = Axis::new("sweep", "form.spiral.lambda_r", 1.002, 1.02, 4).unwrap();
     let whorls = Axis::new("sweep", "form.spiral.whorls", 1.0, 6.0, 3).unwrap();
@@ -224,4 +222,63 @@ fn a_map_over_the_forms_parameters_is_a_grid_of_shells_each_reopened_by_its_link
         map.tile(1, 0).failure.as_deref(),
         Some("the curve leaves the axis")
     );
+}
+
+#[test]
+fn raups_map_spans_w_and_t_at_the_shells_d_each_tile_a_self_similar_shell() {
+    let plain = preset("turbinate").unwrap();
+    let offered = parameters(&plain.spec);
+    let (x, y) = first_axes(&offered);
+    assert_eq!(
+        (offered[x].0.key, offered[y].0.key),
+        ("raup.w", "raup.t"),
+        "Raup's expansion across, translation down"
+    );
+    let raup = |spec: &seashells_core::spec::ShellSpec| match &spec.form {
+        Form::Sweep(s) => Raup::of(s).unwrap(),
+        _ => unreachable!(),
+    };
+    let shell = raup(&plain.spec);
+    assert_eq!(offered[x].1, shell.w);
+    let map = ParameterMap::new(
+        plain,
+        &plain.spec,
+        Axis::new("sweep", "raup.w", 1.1, 3.0, 4).unwrap(),
+        Axis::new("sweep", "raup.t", 0.0, 3.0, 4).unwrap(),
+    );
+    assert!(map.shells());
+    assert_eq!(map.current, Some(2 * 4), "W 1.29 by 1.1, T 1.9 by 2");
+    for (j, &t) in map.y.values.iter().enumerate() {
+        for (i, &w) in map.x.values.iter().enumerate() {
+            let tile = map.tile(i, j);
+            assert_eq!(tile.failure, None, "W {w}, T {t}");
+            let got = raup(&tile.spec);
+            assert!((got.w - w).abs() < 1e-6 * w, "W {w}: {got:?}");
+            assert!((got.t - t).abs() < 1e-6, "T {t}: {got:?}");
+            assert!((got.d - shell.d).abs() < 1e-9, "D kept: {got:?}");
+            let lambda = |key| value(&tile.spec, key);
+            assert_eq!(
+                lambda("form.spiral.lambda_r"),
+                lambda("form.spiral.lambda_z")
+            );
+            assert_eq!(
+                lambda("form.spiral.lambda_r"),
+                lambda("form.curve.lambda_c")
+            );
+            assert_eq!(decode(&tile.link).spec, tile.spec, "its link reopens it");
+        }
+    }
+    let apart: Vec<bool> = map.tiles().iter().map(|t| t.apart).collect();
+    assert!(!apart[0], "W 1.1, T 0: whorls on whorls");
+    assert!(apart[15], "W 3, T 3: each whorl clear of the last");
+    // D near 1 leaves the curve thin and far out: r₀ passes its range, and the tile says so.
+    let far = ParameterMap::new(
+        plain,
+        &plain.spec,
+        Axis::new("sweep", "raup.d", 0.1, 0.95, 2).unwrap(),
+        Axis::new("sweep", "raup.t", 0.0, 1.0, 2).unwrap(),
+    );
+    assert_eq!(far.tile(0, 0).failure, None);
+    let why = far.tile(1, 0).failure.as_deref().unwrap();
+    assert!(why.contains("form.spiral.r0"), "{why}");
 }

@@ -394,12 +394,17 @@ pub fn decode(fragment: &str) -> Decoded {
 /// `spec` (a variant of `preset`) with one more `key=value`, read exactly as a link's would be:
 /// what the editing panel uses.
 pub fn with(preset: &'static Preset, spec: &ShellSpec, key: &str, value: &str) -> Decoded {
-    apply(
-        preset,
-        spec,
-        vec![(key.to_string(), value.to_string())],
-        Vec::new(),
-    )
+    with_all(preset, spec, vec![(key.to_string(), value.to_string())])
+}
+
+/// `spec` (a variant of `preset`) with several more `key=value`s at once, read exactly as a
+/// link's would be (repaired once, with all of them).
+pub fn with_all(
+    preset: &'static Preset,
+    spec: &ShellSpec,
+    pairs: Vec<(String, String)>,
+) -> Decoded {
+    apply(preset, spec, pairs, Vec::new())
 }
 
 /// Applies `key=value` pairs (the last of a repeated key wins) to `spec`, then repairs it

@@ -9,14 +9,18 @@
 //! pattern. Over a parameter of the form it is a morphospace, as Raup's cube of coiling
 //! parameters is: each tile is the whole shell, grown and drawn as a gallery picture is.
 
+use crate::forms::sweep::raup::{Coordinate, Raup, whorls_apart};
 use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
 use crate::share::link::{self, flatten};
 use crate::spec::Problem;
 use crate::spec::ShellSpec;
-use crate::spec::fields::{Field, Kind, display, fields};
+use crate::spec::fields::{Field, Kind, RAUP, display, fields};
+use crate::spec::form::Form;
 use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use std::collections::BTreeMap;
 
 /// Tiles along each side of the page's map (its style sheet lays out eight columns).
 pub const SIDE: usize = 8;
@@ -35,11 +39,9 @@ impl Axis {
     /// `from` to `to` (both within its range), in equal steps, or equal ratios on a logarithmic
     /// field; each rounded as the panel shows it (to a whole number on an integer field).
     pub fn new(kind: &str, key: &str, from: f64, to: f64, count: usize) -> Result<Self, String> {
-        let field = fields(kind)
-            .find(|f| f.key == key && mappable(f))
-            .ok_or_else(|| {
-                format!("'{key}' is not a parameter of a {kind} shell's form or pattern model")
-            })?;
+        let field = mappable(kind).find(|f| f.key == key).ok_or_else(|| {
+            format!("'{key}' is not a parameter of a {kind} shell's form or pattern model")
+        })?;
         let (min, max, log, integer) = match field.kind {
             Kind::Real { min, max, log } => (min, max, log, false),
             Kind::Integer { min, max } => (min as f64, max as f64, false, true),
@@ -104,7 +106,35 @@ impl Axis {
 
     /// Whether the tiles along this axis differ in shape, not in pattern only.
     pub fn shapes(&self) -> bool {
-        self.field.key.starts_with("form.")
+        !self.field.key.starts_with("pattern.")
+    }
+
+    /// The `key=value`s that set this axis's parameter of `spec` to `value`: the field itself,
+    /// or for one of Raup's coordinates the spiral's and the curve's values that give it.
+    fn pairs(&self, spec: &ShellSpec, value: f64) -> Result<Vec<(String, String)>, Problem> {
+        let Some(c) = Coordinate::of_key(self.field.key) else {
+            return Ok(vec![(self.field.key.to_string(), value.to_string())]);
+        };
+        let written = match &spec.form {
+            Form::Sweep(sweep) => Raup::written(sweep, c, value),
+            _ => None,
+        };
+        let refused = || {
+            Problem::new(
+                self.field.key,
+                format!(
+                    "{} = {} gives no shell of Raup's: its curve has no width or does not lie \
+                     off the axis",
+                    self.field.symbol,
+                    display(value)
+                ),
+            )
+        };
+        let pairs = written.ok_or_else(refused)?;
+        Ok(pairs
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect())
     }
 
     /// The default span of a parameter whose value is `value`, kept within the field's range:
@@ -143,34 +173,54 @@ impl Axis {
     }
 }
 
-/// Whether a map can span `field`: a number of the form (its shape) or of the pattern model.
-fn mappable(field: &Field) -> bool {
-    (field.key.starts_with("form.") || field.key.starts_with("pattern.model."))
-        && matches!(field.kind, Kind::Real { .. } | Kind::Integer { .. })
+/// What a map can span on a shell whose form is of `kind`: the numbers of the form (its shape)
+/// and of the pattern model, and for a swept shell Raup's coordinates.
+fn mappable(kind: &str) -> impl Iterator<Item = &'static Field> {
+    let raup = if kind == "sweep" { RAUP } else { &[] };
+    fields(kind)
+        .filter(|f| {
+            (f.key.starts_with("form.") || f.key.starts_with("pattern.model."))
+                && matches!(f.kind, Kind::Real { .. } | Kind::Integer { .. })
+        })
+        .chain(raup)
+}
+
+/// The value of `field` in `spec`, whose leaves are `leaves`: the spec's own, or one of Raup's
+/// coordinates read from it.
+fn value_of(spec: &ShellSpec, leaves: &BTreeMap<String, Value>, field: &Field) -> Option<f64> {
+    match (Coordinate::of_key(field.key), &spec.form) {
+        (Some(c), Form::Sweep(sweep)) => Some(Raup::of(sweep)?.get(c)),
+        (Some(_), _) => None,
+        (None, _) => leaves.get(field.key)?.as_f64(),
+    }
 }
 
 /// The numeric parameters of the form of `spec` and of its pattern model, in the panel's order,
-/// with their values: what a map can span.
+/// and Raup's coordinates of a swept shell, with their values: what a map can span.
 pub fn parameters(spec: &ShellSpec) -> Vec<(&'static Field, f64)> {
     let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
-    fields(spec.form.kind())
-        .filter(|f| mappable(f))
-        .filter_map(|f| Some((f, leaves.get(f.key)?.as_f64()?)))
+    mappable(spec.form.kind())
+        .filter_map(|f| Some((f, value_of(spec, &leaves, f)?)))
         .collect()
 }
 
 /// The two of `parameters` a map starts with: the activator's diffusion D_a across (it sets
 /// the spacing of stripes and the speed of waves), and down the next parameter of the equations
-/// (one with a symbol) after it. Without a pattern, the helico-spiral's radial growth λᵣ
-/// across and its axial growth λ_z down (how fast the whorls widen, and how far they are drawn
-/// out along the axis: Raup's whorl expansion and translation); the first two otherwise.
+/// (one with a symbol) after it. Without a pattern, Raup's whorl expansion W across and his
+/// translation T down (how fast the whorls widen, and how far they are drawn out along the
+/// axis), or where a swept shell has none the helico-spiral's λᵣ and λ_z; the first two
+/// otherwise.
 pub fn first_axes(parameters: &[(&'static Field, f64)]) -> (usize, usize) {
     let at = |key: &str| parameters.iter().position(|(f, _)| f.key == key);
     let Some(x) = at("pattern.model.d_a") else {
-        return match (at("form.spiral.lambda_r"), at("form.spiral.lambda_z")) {
-            (Some(x), Some(y)) => (x, y),
-            _ => (0, 1),
-        };
+        let pairs = [
+            ("raup.w", "raup.t"),
+            ("form.spiral.lambda_r", "form.spiral.lambda_z"),
+        ];
+        return pairs
+            .iter()
+            .find_map(|&(x, y)| at(x).zip(at(y)))
+            .unwrap_or((0, 1));
     };
     let y = (x + 1..parameters.len())
         .chain(0..x)
@@ -237,6 +287,9 @@ pub struct Tile {
     /// What else its link changed so that its values can grow (fewer whorls at a faster
     /// growth, say): it is drawn, and this is said beside it.
     pub note: Option<String>,
+    /// Whether its whorls lie apart (a swept shell's open coiling, which Raup found rare among
+    /// real shells: the empty side of his cube).
+    pub apart: bool,
 }
 
 impl Tile {
@@ -309,33 +362,46 @@ impl ParameterMap {
         let mut tiles = Vec::with_capacity(x.values.len() * y.values.len());
         for &vy in &y.values {
             for &vx in &x.values {
-                let across = link::with(preset, spec, x.field.key, &vx.to_string());
-                let tile = link::with(preset, &across.spec, y.field.key, &vy.to_string());
-                // A value of an axis the link could not keep leaves the tile empty; another
-                // value repaired for it is said, and the tile is drawn.
-                let (refused, repaired): (Vec<&Problem>, Vec<&Problem>) = across
-                    .problems
-                    .iter()
-                    .chain(&tile.problems)
-                    .partition(|p| p.key == x.field.key || p.key == y.field.key);
+                let (mut tile, mut problems) = ((preset, spec.clone()), Vec::new());
+                // The keys the axes set: a value of theirs the link could not keep leaves the
+                // tile empty; another value repaired for them is said, and the tile is drawn.
+                let mut set = Vec::new();
+                for (axis, value) in [(&x, vx), (&y, vy)] {
+                    match axis.pairs(&tile.1, value) {
+                        Ok(pairs) => {
+                            set.extend(pairs.iter().map(|(k, _)| k.clone()));
+                            let read = link::with_all(tile.0, &tile.1, pairs);
+                            problems.extend(read.problems);
+                            tile = (read.preset, read.spec);
+                        }
+                        Err(refused) => {
+                            set.push(refused.key.clone());
+                            problems.push(refused);
+                        }
+                    }
+                }
+                let (refused, repaired): (Vec<&Problem>, Vec<&Problem>) =
+                    problems.iter().partition(|p| set.contains(&p.key));
                 let words = |problems: Vec<&Problem>| {
                     let words: Vec<String> = problems.iter().map(ToString::to_string).collect();
                     (!words.is_empty()).then(|| words.join("; "))
                 };
+                let apart = matches!(&tile.1.form, Form::Sweep(s) if whorls_apart(s) == Some(true));
                 tiles.push(Tile {
                     values: (vx, vy),
-                    link: link::encode(tile.preset, &tile.spec),
-                    spec: tile.spec,
+                    link: link::encode(tile.0, &tile.1),
+                    spec: tile.1,
                     picture: None,
                     shown: false,
                     failure: words(refused),
                     note: words(repaired),
+                    apart,
                 });
             }
         }
         let rows = (spec.growth.rows as usize).min(spec.pattern.cells.max(1) as usize);
         let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
-        let at = |axis: &Axis| axis.nearest(leaves.get(axis.field.key)?.as_f64()?);
+        let at = |axis: &Axis| axis.nearest(value_of(spec, &leaves, axis.field)?);
         let current = at(&x).zip(at(&y)).map(|(i, j)| j * x.values.len() + i);
         Self {
             preset,

@@ -29,6 +29,8 @@ pub enum Section {
     Material,
     Growth,
     Seed,
+    /// Raup's coiling parameters: coordinates a parameter map may span, not keys of a spec.
+    Raup,
 }
 
 impl Section {
@@ -57,6 +59,7 @@ impl Section {
             Section::Material => "Material and light",
             Section::Growth => "Growth",
             Section::Seed => "Seed",
+            Section::Raup => "Raup's coiling parameters",
         }
     }
 }
@@ -417,6 +420,18 @@ pub const SHELL: &[Field] = &[
     f("growth.rows", Growth, "", "rows from apex to opening", int(2, 20_000)),
     f("growth.speed", Growth, "", "rows per frame", log(0.05, 200.0)),
     f("seed", Seed, "", "seed of the random choices", int(0, u64::MAX)),
+];
+
+/// Raup's coordinates of a swept shell (`forms::sweep::raup`): no keys of its spec, but what a
+/// parameter map may span, each written into the spiral's and the curve's values. W, the
+/// expansion per whorl, from barely growing to Raup's million; D, from a curve that touches the
+/// axis to one as thin as a twentieth of its distance; T, the height over the distance of the
+/// curve's centre, either way along the axis.
+#[rustfmt::skip]
+pub const RAUP: &[Field] = &[
+    f("raup.w", Raup, "W", "whorl expansion rate (growth per whorl)", log(1.01, 1e6)),
+    f("raup.d", Raup, "D", "distance from the axis (inner edge over outer edge)", real(0.0, 0.95)),
+    f("raup.t", Raup, "T", "translation along the axis (height over distance)", real(-20.0, 20.0)),
 ];
 
 /// Each form's own fields, by the form's kind; a new form adds its block here.

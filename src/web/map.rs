@@ -227,6 +227,12 @@ impl MapView {
                     symbol(map.y.field),
                     display(vy)
                 );
+                let label = if tile.apart {
+                    let _ = a.class_list().add_1("apart");
+                    format!("{label} (whorls apart: open coiling, rare among real shells)")
+                } else {
+                    label
+                };
                 let label = if map.current == Some(index as usize) {
                     let _ = a.class_list().add_1("current");
                     attr(&a, "aria-current", "true");

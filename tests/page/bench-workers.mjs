@@ -6,10 +6,11 @@
 // view drawn in the drawing worker and, as before it, on the page's thread (`view=page`; with
 // `workers=0` too, how the page worked before workers); the
 // Murex finished at 256³ with 1 and W workers; and every gallery picture on the page's thread
-// and with 1 and W workers. W is the pool this
+// and with 1 and W workers; the turbinate's map of 64 shells with 1 and W workers. W is the pool this
 // machine gets (`navigator.hardwareConcurrency − 1`, at least 1) and 2 besides, so that the
 // sharing shows even on a 2-core machine. Prints figures; asserts nothing.
 //
+// `node tests/page/bench-workers.mjs map` times the map of shells alone, with 1 and 2 workers.
 // `node tests/page/bench-workers.mjs gallery [BASELINE_WWW]` times the gallery alone, on the
 // page's thread, with 1 worker and with the default pool, beside the same on another build's
 // www (say main's) served alongside, alternately in the same run.
@@ -235,6 +236,22 @@ async function gallery(browser, base, workers) {
   return seconds;
 }
 
+/**
+ * Seconds from pressing Map on the turbinate shell to its 64 shells drawn (the morphospace over
+ * λᵣ and λ_z), with `workers` workers.
+ */
+async function shapeMap(browser, base, workers) {
+  const page = await browser.newPage({ viewport: { width: 1100, height: 1000 } });
+  await page.goto(`${base}?workers=${workers}#v=1&preset=turbinate`);
+  await waitForState(page, ['growing', 'grown']);
+  const start = Date.now();
+  await page.click('#map-open');
+  await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 600_000 });
+  const seconds = (Date.now() - start) / 1000;
+  await page.close();
+  return seconds;
+}
+
 export async function benchWorkers() {
   const { browser, base, close } = await session('WebGL2');
   try {
@@ -285,6 +302,11 @@ export async function benchWorkers() {
       pictures[workers] = await gallery(browser, base, workers);
       const ratio = workers === 0 ? '' : ` (× ${(pictures[0] / pictures[workers]).toFixed(2)} of the page's own thread)`;
       console.log(`all gallery pictures, workers=${workers}: ${pictures[workers].toFixed(2)} s${ratio}`);
+    }
+    const map = {};
+    for (const workers of sizes) {
+      map[workers] = await shapeMap(browser, base, workers);
+      console.log(`the turbinate's map of 64 shells, ${workers} worker(s): ${map[workers].toFixed(2)} s (× ${(map[1] / map[workers]).toFixed(2)} of one worker)`);
     }
   } finally {
     await close();
@@ -354,7 +376,16 @@ export async function benchFrames(roots, rounds = 2, least = 100, queries = ['wo
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {
-  if (process.argv[2] === 'gallery') {
+  if (process.argv[2] === 'map') {
+    const { browser, base, close } = await session('WebGL2');
+    try {
+      const one = await shapeMap(browser, base, 1);
+      const two = await shapeMap(browser, base, 2);
+      console.log(`the turbinate's map of 64 shells: 1 worker ${one.toFixed(2)} s, 2 workers ${two.toFixed(2)} s (× ${(one / two).toFixed(2)})`);
+    } finally {
+      await close();
+    }
+  } else if (process.argv[2] === 'gallery') {
     await benchGallery(process.argv[3]);
   } else if (process.argv[2] === 'frames') {
     const roots = process.argv.slice(3);

@@ -107,8 +107,8 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
       document.getElementById('map-x').value, document.getElementById('map-y').value,
       [...document.querySelectorAll('#map-x optgroup')].map((g) => g.label),
     ]);
-    assert.deepEqual([x, y], ['form.spiral.lambda_r', 'form.spiral.lambda_z'], "Raup's expansion across, translation down");
-    assert.ok(groups.includes('Shape') && groups.includes('Generating curve'), `parameters by section: ${groups}`);
+    assert.deepEqual([x, y], ['raup.w', 'raup.t'], "Raup's expansion across, translation down");
+    assert.ok(groups.includes('Shape') && groups.includes("Raup's coiling parameters"), `parameters by section: ${groups}`);
     const tiles = await shellTiles(page);
     const clip = await page.evaluate(() => {
       const [first, last] = [...document.querySelectorAll('#map-grid .tile')].filter((_, i, all) => i === 0 || i === all.length - 1).map((t) => t.getBoundingClientRect());
@@ -118,12 +118,19 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
     assert.equal(tiles.length, 64);
     assert.ok(tiles.every((t) => t.drawn && t.width === 128), 'every tile is a drawn shell');
     assert.ok(new Set(tiles.map((t) => t.digest)).size >= 60, 'the shells differ from tile to tile');
-    // Down a column λ_z grows: the shell is drawn out along its axis, from a flat coil to a tower.
+    // Down a column T grows: the shell is drawn out along its axis, from a low cone to a tower
+    // (barely, where W is near 1: a whorl then moves the shell along the axis by W − 1 of it).
     const aspect = (t) => t.box[1] / t.box[0];
-    for (const column of [0, 7]) {
+    for (const column of [4, 7]) {
       const [top, bottom] = [tiles[column], tiles[7 * 8 + column]];
       assert.ok(aspect(bottom) > 2 * aspect(top), `column ${column}: ${top.box} above, ${bottom.box} below`);
     }
+    // Where each whorl clears the last (open coiling), the tile says so: fast expansion raised
+    // far along the axis, not a slow one.
+    const apart = tiles.filter((t) => t.classes.includes('apart'));
+    assert.ok(apart.length >= 1 && apart.length < 64, `${apart.length} tiles with their whorls apart`);
+    assert.ok(apart.every((t) => /open coiling/.test(t.title)));
+    assert.ok(tiles[63].classes.includes('apart') && !tiles[0].classes.includes('apart'));
     const current = tiles.filter((t) => t.classes.includes('current'));
     assert.equal(current.length, 1, 'the shell mapped is marked');
     assert.match(current[0].title, /nearest this shell/);
@@ -137,7 +144,8 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
     await page.waitForFunction((h) => location.hash === h && document.body.dataset.map === '', reached.href);
     assert.ok(await page.isHidden('#map'));
     await waitForState(page, ['growing', 'grown']);
-    for (const key of [x, y]) {
+    // W and T are written into the spiral and the curve: one rate, and z₀ with r₀.
+    for (const key of ['form.spiral.lambda_r', 'form.spiral.lambda_z', 'form.curve.lambda_c', 'form.spiral.z0']) {
       const shown = await page.inputValue(`[id="field-${key}"]`);
       assert.ok(reached.href.includes(`${key}=${shown}`), `${reached.href} has ${key}=${shown}`);
     }
@@ -153,6 +161,7 @@ test('tiles whose values cannot grow are hatched with the reason, and the others
     await waitForState(page, ['growing', 'grown']);
     await page.click('#map-open');
     await page.waitForFunction(() => document.body.dataset.map !== '');
+    await page.selectOption('#map-x', 'form.spiral.lambda_r');
     await page.selectOption('#map-y', 'form.spiral.whorls');
     await page.fill('#map-x-from', '1.003');
     await page.fill('#map-x-to', '1.05');

@@ -6,6 +6,7 @@ pub(crate) mod arc_length;
 pub(crate) mod bezier_curve;
 pub mod frame;
 pub mod helico_spiral;
+pub mod raup;
 pub(crate) mod repair;
 pub(crate) mod sculpture;
 pub mod surface;
