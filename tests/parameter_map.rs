@@ -6,7 +6,7 @@
 use seashells_core::forms::sweep::raup::Raup;
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};
-use seashells_core::share::parameter_map::{Axis, ParameterMap, first_axes, parameters};
+use seashells_core::share::parameter_map::{Axis, ParameterMap, Tile, first_axes, parameters};
 use seashells_core::spec::fields::field;
 use seashells_core::spec::form::Form;
 
@@ -14,6 +14,18 @@ fn value(spec: &seashells_core::spec::ShellSpec, key: &str) -> f64 {
     flatten(&serde_json::to_value(spec).unwrap())[key]
         .as_f64()
         .unwrap()
+}
+
+/// Checks that `tile` can grow, has the values of its axes, and that its link reopens it as it
+/// is, with nothing to say.
+fn grown_and_reopened(tile: &Tile, values: [(&str, f64); 2]) {
+    assert_eq!(tile.failure, None);
+    for (key, v) in values {
+        assert_eq!(value(&tile.spec, key), v, "{key}");
+    }
+    let opened = decode(&tile.link);
+    assert!(opened.problems.is_empty(), "{:?}", opened.problems);
+    assert_eq!(opened.spec, tile.spec, "the link reopens the tile's shell");
 }
 
 fn filled(map: &mut ParameterMap) {
@@ -107,12 +119,7 @@ fn every_tile_is_the_pattern_of_its_own_link_and_the_map_is_the_same_every_time(
     for (j, &ny) in a.y.values.iter().enumerate() {
         for (i, &dx) in a.x.values.iter().enumerate() {
             let tile = a.tile(i, j);
-            assert_eq!(tile.failure, None);
-            assert_eq!(value(&tile.spec, "pattern.model.d_a"), dx);
-            assert_eq!(value(&tile.spec, "pattern.model.nu"), ny);
-            let opened = decode(&tile.link);
-            assert!(opened.problems.is_empty(), "{:?}", opened.problems);
-            assert_eq!(opened.spec, tile.spec, "the link reopens the tile's shell");
+            grown_and_reopened(tile, [("pattern.model.d_a", dx), ("pattern.model.nu", ny)]);
             let picture = tile.picture.as_ref().unwrap();
             assert_eq!(
                 (picture.width, picture.height),
@@ -176,12 +183,10 @@ fn a_map_over_the_forms_parameters_is_a_grid_of_shells_each_reopened_by_its_link
     for (j, &w) in map.y.values.clone().iter().enumerate() {
         for (i, &l) in map.x.values.clone().iter().enumerate() {
             let tile = map.tile(i, j);
-            assert_eq!(tile.failure, None);
-            assert_eq!(value(&tile.spec, "form.spiral.lambda_r"), l);
-            assert_eq!(value(&tile.spec, "form.spiral.whorls"), w);
-            let opened = decode(&tile.link);
-            assert!(opened.problems.is_empty(), "{:?}", opened.problems);
-            assert_eq!(opened.spec, tile.spec, "the link reopens the tile's shell");
+            grown_and_reopened(
+                tile,
+                [("form.spiral.lambda_r", l), ("form.spiral.whorls", w)],
+            );
         }
     }
     let around = ParameterMap::new(
