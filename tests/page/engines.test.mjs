@@ -99,6 +99,25 @@ for (const engine of ONLY) {
       }
     });
 
+    test("the parameter map over Raup's W and T draws its 64 shells", async () => {
+      const page = await open('#v=1&preset=turbinate');
+      try {
+        await page.waitForState(['growing', 'grown']);
+        await page.click('#map-open');
+        await page.waitFor(() => document.body.dataset.map === 'whole', null, 600_000, 'every tile drawn');
+        await page.waitFor(
+          () => [...document.querySelectorAll('#map-grid img')].every((img) => img.complete && img.naturalWidth === 128),
+          null, 60_000, 'every tile decoded');
+        assert.equal(await page.evaluate(() => document.querySelectorAll('#map-grid img').length), 64);
+        const png = await page.shot('#map-grid');
+        writeFileSync(`${SHOTS}${engine}-map.png`, png);
+        assertDrawn(png, 'the map of shells');
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+
     const fallbacks = [];
     for (const [form, id, extra] of SHELLS) {
       test(`${form} grows and is drawn in the viewer`, async () => {
