@@ -253,6 +253,44 @@ fn raups_map_spans_w_and_t_at_the_shells_d_each_tile_a_self_similar_shell() {
     );
     assert!(map.shells());
     assert_eq!(map.current, Some(2 * 4), "W 1.29 by 1.1, T 1.9 by 2");
+    // The gallery's swept shells stand where their own W and T fall.
+    assert!(
+        map.landmarks
+            .iter()
+            .any(|&(at, p)| (at, p.id) == (2 * 4, plain.id)),
+        "the shell among them"
+    );
+    assert!(map.landmarks.len() >= 3, "{}", map.landmarks.len());
+    for &(at, p) in &map.landmarks {
+        let theirs = raup(&p.spec);
+        let (i, j) = (at % 4, at / 4);
+        let nearest = |values: &[f64], v: f64, log: bool| {
+            let d = |a: f64| {
+                if log {
+                    (a / v).ln().abs()
+                } else {
+                    (a - v).abs()
+                }
+            };
+            (0..values.len())
+                .min_by(|&a, &b| d(values[a]).total_cmp(&d(values[b])))
+                .unwrap()
+        };
+        assert_eq!(
+            i,
+            nearest(&map.x.values, theirs.w, true),
+            "{}: W {}",
+            p.id,
+            theirs.w
+        );
+        assert_eq!(
+            j,
+            nearest(&map.y.values, theirs.t, false),
+            "{}: T {}",
+            p.id,
+            theirs.t
+        );
+    }
     for (j, &t) in map.y.values.iter().enumerate() {
         for (i, &w) in map.x.values.iter().enumerate() {
             let tile = map.tile(i, j);

@@ -12,7 +12,7 @@
 use crate::forms::sweep::raup::{Coordinate, Raup, whorls_apart};
 use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
-use crate::presets::Preset;
+use crate::presets::{Preset, presets};
 use crate::share::link::{self, flatten};
 use crate::spec::Problem;
 use crate::spec::ShellSpec;
@@ -344,6 +344,10 @@ pub struct ParameterMap {
     pub preset: &'static Preset,
     /// The tile nearest the shell mapped, when its values fall within the map.
     pub current: Option<usize>,
+    /// The presets of the same form whose values fall within the map, each by the tile nearest
+    /// them: where the shells of the gallery stand in this plane (Raup's cube with its real
+    /// shells).
+    pub landmarks: Vec<(usize, &'static Preset)>,
     pub x: Axis,
     pub y: Axis,
     /// Pattern rows computed for every tile.
@@ -400,12 +404,21 @@ impl ParameterMap {
             }
         }
         let rows = (spec.growth.rows as usize).min(spec.pattern.cells.max(1) as usize);
-        let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
-        let at = |axis: &Axis| axis.nearest(value_of(spec, &leaves, axis.field)?);
-        let current = at(&x).zip(at(&y)).map(|(i, j)| j * x.values.len() + i);
+        let tile_of = |spec: &ShellSpec| {
+            let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
+            let at = |axis: &Axis| axis.nearest(value_of(spec, &leaves, axis.field)?);
+            at(&x).zip(at(&y)).map(|(i, j)| j * x.values.len() + i)
+        };
+        let current = tile_of(spec);
+        let landmarks = presets()
+            .iter()
+            .filter(|p| p.spec.form.kind() == spec.form.kind())
+            .filter_map(|p| Some((tile_of(&p.spec)?, p)))
+            .collect();
         Self {
             preset,
             current,
+            landmarks,
             x,
             y,
             rows,

@@ -233,6 +233,19 @@ impl MapView {
                 } else {
                     label
                 };
+                let here: Vec<&str> = map
+                    .landmarks
+                    .iter()
+                    .filter(|(at, _)| *at == index as usize)
+                    .map(|(_, p)| p.name.as_str())
+                    .collect();
+                let label = if here.is_empty() {
+                    label
+                } else {
+                    let names = here.join(", ");
+                    append(&a, &[&create("span", "landmark", Some(&names))]);
+                    format!("{label} (here: {names})")
+                };
                 let label = if map.current == Some(index as usize) {
                     let _ = a.class_list().add_1("current");
                     attr(&a, "aria-current", "true");
@@ -242,13 +255,14 @@ impl MapView {
                 };
                 attr(&a, "title", &label);
                 attr(&a, "aria-label", &label);
-                if map.shells() {
+                let picture: Element = if map.shells() {
                     let img: HtmlImageElement = typed("img", "");
                     img.set_alt("");
-                    append(&a, &[&img]);
+                    img.into()
                 } else {
-                    append(&a, &[&create("canvas", "", None)]);
-                }
+                    create("canvas", "", None).into()
+                };
+                let _ = a.prepend_with_node_1(&picture);
                 append(&grid, &[&a]);
                 a.into()
             })

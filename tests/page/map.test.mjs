@@ -134,6 +134,10 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
     const current = tiles.filter((t) => t.classes.includes('current'));
     assert.equal(current.length, 1, 'the shell mapped is marked');
     assert.match(current[0].title, /nearest this shell/);
+    // The gallery's swept shells stand where their W and T fall, the shell mapped among them.
+    assert.match(current[0].title, /here: [^)]*Turbinate shell/);
+    const landmarks = await page.$$eval('#map-grid .tile .landmark', (spans) => spans.map((s) => s.textContent));
+    assert.ok(landmarks.length >= 2 && landmarks.some((l) => l.includes('Turbinate shell')), `${landmarks}`);
     // The arrows walk from the marked tile; Enter opens the tile reached.
     const at = tiles.indexOf(current[0]);
     await page.keyboard.press('ArrowRight');
