@@ -44,6 +44,13 @@ const SHELLS = [
   ['the BlobTree Murex', 'murex-cabritii', '&form.resolution=40'],
 ];
 
+/** Photographs `selector` of `page` into SHOTS as `name`.png and checks that it shows `what` drawn. */
+async function shotDrawn(page, selector, name, what) {
+  const png = await page.shot(selector);
+  writeFileSync(`${SHOTS}${name}.png`, png);
+  assertDrawn(png, what);
+}
+
 /** Asserts that `png` shows a lit shell: enough of it differs from the background, in shades. */
 function assertDrawn(png, what, share = 0.03) {
   const seen = measure(png);
@@ -89,9 +96,7 @@ for (const engine of ONLY) {
           () => [...document.querySelectorAll('a.card img')].every((img) => img.complete && img.naturalWidth > 0),
           null, 60_000, 'every card picture decoded');
         for (const id of ['diskoid', 'oliva-porphyria', 'kawaguchi-horn']) {
-          const png = await page.shot(`a.card[data-preset="${id}"] img`);
-          writeFileSync(`${SHOTS}${engine}-card-${id}.png`, png);
-          assertDrawn(png, `the card of ${id}`);
+          await shotDrawn(page, `a.card[data-preset="${id}"] img`, `${engine}-card-${id}`, `the card of ${id}`);
         }
         assert.deepEqual(await page.errors(), []);
       } finally {
@@ -109,9 +114,7 @@ for (const engine of ONLY) {
           () => [...document.querySelectorAll('#map-grid img')].every((img) => img.complete && img.naturalWidth === 128),
           null, 60_000, 'every tile decoded');
         assert.equal(await page.evaluate(() => document.querySelectorAll('#map-grid img').length), 64);
-        const png = await page.shot('#map-grid');
-        writeFileSync(`${SHOTS}${engine}-map.png`, png);
-        assertDrawn(png, 'the map of shells');
+        await shotDrawn(page, '#map-grid', `${engine}-map`, 'the map of shells');
         assert.deepEqual(await page.errors(), []);
       } finally {
         await page.close();
@@ -132,9 +135,7 @@ for (const engine of ONLY) {
           await page.click('#finish');
           const grown = await page.waitForState(['grown', 'error', 'stopped'], 600_000);
           assert.equal(grown.state, 'grown', await page.evaluate(() => document.getElementById('message').textContent));
-          const png = await page.shot('#shell');
-          writeFileSync(`${SHOTS}${engine}-${id}.png`, png);
-          assertDrawn(png, id);
+          await shotDrawn(page, '#shell', `${engine}-${id}`, id);
           assert.equal(await page.evaluate(() => document.getElementById('message').hidden), true);
           assert.deepEqual(await page.errors(), []);
         } finally {
@@ -212,9 +213,7 @@ for (const engine of ONLY) {
         const grown = await page.waitForState(['grown', 'error'], 600_000);
         assert.equal(grown.state, 'grown', await page.evaluate(() => document.getElementById('message').textContent));
         assert.match(await page.evaluate(() => document.getElementById('message').textContent), /opened again, with WebGL2/);
-        const png = await page.shot('#shell');
-        writeFileSync(`${SHOTS}${engine}-recovered.png`, png);
-        assertDrawn(png, 'the shell after the lost context');
+        await shotDrawn(page, '#shell', `${engine}-recovered`, 'the shell after the lost context');
         assert.deepEqual(await page.errors(), []);
       } finally {
         await page.close();
