@@ -24,6 +24,8 @@ use std::collections::BTreeMap;
 
 /// Tiles along each side of the page's map (its style sheet lays out eight columns).
 pub const SIDE: usize = 8;
+/// Tiles along each side of the map on a phone (the style sheet's narrow layout: five columns).
+pub const PHONE_SIDE: usize = 5;
 /// Widest picture of a tile, in pixels: wider patterns are averaged down to it.
 const PICTURE_WIDTH: usize = 100;
 

@@ -11,7 +11,7 @@ use super::panel::label;
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::share::parameter_map::{
-    Axis, ParameterMap, Picture, SIDE, Tile, first_axes, parameters,
+    Axis, PHONE_SIDE, ParameterMap, Picture, SIDE, Tile, first_axes, parameters,
 };
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
@@ -72,10 +72,11 @@ impl AxisControls {
         if let Some(axis) = parameters
             .iter()
             .find(|(f, _)| f.key == key)
-            .and_then(|&(f, v)| Axis::around(kind, f, v, SIDE).ok())
+            .and_then(|&(f, v)| Axis::around(kind, f, v, side()).ok())
         {
             self.from.set_value(&display(axis.values[0]));
-            self.to.set_value(&display(axis.values[SIDE - 1]));
+            self.to
+                .set_value(&display(axis.values[axis.values.len() - 1]));
         }
     }
 
@@ -93,7 +94,7 @@ impl AxisControls {
             &self.select.value(),
             number(&self.from)?,
             number(&self.to)?,
-            SIDE,
+            side(),
         )
     }
 }
@@ -111,6 +112,15 @@ pub struct MapView {
     /// The map drawn last: a tile's job number carries it, so that tiles of an older map
     /// are dropped.
     generation: u32,
+}
+
+/// Tiles along each side of the map: fewer on a phone, in the style sheet's narrow layout
+/// (the same width as its `@media (max-width: 56rem)`).
+fn side() -> usize {
+    let narrow = web_sys::window()
+        .and_then(|w| w.match_media("(max-width: 56rem)").ok().flatten())
+        .is_some_and(|m| m.matches());
+    if narrow { PHONE_SIDE } else { SIDE }
 }
 
 /// Tiles of one map (the low bits of a tile's job number; `SIDE × SIDE` fit).

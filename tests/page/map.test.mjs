@@ -159,6 +159,27 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
   }
 });
 
+test('on a phone the map has 5 × 5 tiles, every one a drawn shell', async () => {
+  const { page, errors } = await openOn('WebGL2', 'v=1&preset=turbinate', { width: 390, height: 844 });
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await page.click('#panel-toggle');
+    await page.click('#map-open');
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 180_000 });
+    const tiles = await shellTiles(page);
+    assert.equal(tiles.length, 25);
+    assert.ok(tiles.every((t) => t.drawn));
+    const columns = await page.evaluate(() => new Set([...document.querySelectorAll('#map-grid .tile')].map((t) => t.getBoundingClientRect().left)).size);
+    assert.equal(columns, 5);
+    const right = await page.evaluate(() => Math.max(...[...document.querySelectorAll('#map, #map *')].map((e) => e.getBoundingClientRect().right)));
+    assert.ok(right <= 390, `the map fits the screen's width: its right edge at ${right}`);
+    await page.screenshot({ path: `${SHOTS}shape-map-phone.png` });
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
 test('tiles whose values cannot grow are hatched with the reason, and the others are drawn', async () => {
   const { page, errors } = await openOn('WebGL2', 'v=1&preset=turbinate');
   try {
