@@ -289,8 +289,8 @@ pub struct Tile {
     /// What else its link changed so that its values can grow (fewer whorls at a faster
     /// growth, say): it is drawn, and this is said beside it.
     pub note: Option<String>,
-    /// Whether its whorls lie apart (a swept shell's open coiling, which Raup found rare among
-    /// real shells: the empty side of his cube).
+    /// Whether its whorls lie apart, on a map of shells (a swept shell's open coiling, which
+    /// Raup found rare among real shells: the empty side of his cube).
     pub apart: bool,
 }
 
@@ -392,7 +392,9 @@ impl ParameterMap {
                     let words: Vec<String> = problems.iter().map(ToString::to_string).collect();
                     (!words.is_empty()).then(|| words.join("; "))
                 };
-                let apart = matches!(&tile.1.form, Form::Sweep(s) if whorls_apart(s) == Some(true));
+                let shells = x.shapes() || y.shapes();
+                let apart = shells
+                    && matches!(&tile.1.form, Form::Sweep(s) if whorls_apart(s) == Some(true));
                 tiles.push(Tile {
                     values: (vx, vy),
                     link: link::encode(tile.0, &tile.1),
