@@ -92,7 +92,11 @@ impl Raup {
     /// The coordinates of `sweep`, or `None` where they mean nothing: a curve without extent
     /// across, or whose outer edge or centre is not off the axis.
     pub fn of(sweep: &SweepSpec) -> Option<Self> {
-        let e = Extent::of(sweep)?;
+        Self::read(sweep, &Extent::of(sweep)?)
+    }
+
+    /// The coordinates of `sweep`, whose curve's extent is `e`.
+    fn read(sweep: &SweepSpec, e: &Extent) -> Option<Self> {
         let s = &sweep.spiral;
         let (outer, centre) = (s.r0 - e.u1, s.r0 - e.uc);
         if !(e.u2 > e.u1 && outer > 0.0 && centre > 0.0) {
@@ -122,7 +126,8 @@ impl Raup {
         c: Coordinate,
         value: f64,
     ) -> Option<Vec<(&'static str, f64)>> {
-        let mut raup = Self::of(sweep)?;
+        let e = Extent::of(sweep)?;
+        let mut raup = Self::read(sweep, &e)?;
         match c {
             Coordinate::W => raup.w = value,
             Coordinate::D => raup.d = value,
@@ -131,7 +136,6 @@ impl Raup {
         if raup.d >= 1.0 {
             return None;
         }
-        let e = Extent::of(sweep)?;
         let lambda = raup.w.powf(sweep.spiral.delta_theta / 360.0);
         // D (r₀ − u₁) = r₀ − u₂, and T (r₀ − u_c) = z₀ + v_c.
         let r0 = (e.u2 - raup.d * e.u1) / (1.0 - raup.d);
