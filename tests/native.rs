@@ -8,6 +8,7 @@ mod common;
 mod any_link;
 mod automaton;
 mod branching;
+mod breeding;
 mod chambers;
 mod cli;
 mod drawing;

@@ -6,7 +6,8 @@
 use seashells_core::forms::sweep::raup::Raup;
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};
-use seashells_core::share::parameter_map::{Axis, ParameterMap, Tile, first_axes, parameters};
+use seashells_core::share::parameter_map::{Axis, ParameterMap, first_axes, parameters};
+use seashells_core::share::tile::Tile;
 use seashells_core::spec::fields::field;
 use seashells_core::spec::form::Form;
 

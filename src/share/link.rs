@@ -9,6 +9,7 @@
 //! built from what could be read. Numbers are written in their shortest exact form, so
 //! `decode(encode(spec))` gives back the very same spec.
 
+use super::lineage::{self, Lineage};
 use super::presentation::Presentation;
 use super::repair::repair;
 use super::retired::Retired;
@@ -44,6 +45,8 @@ pub struct Decoded {
     pub spec: ShellSpec,
     /// How the link asks the page to show the shell.
     pub presentation: Presentation,
+    /// The shells bred from this one, when the link shows a lineage (`breed=`).
+    pub lineage: Option<Lineage>,
     pub problems: Vec<Problem>,
 }
 
@@ -287,6 +290,7 @@ fn plain(preset: &'static Preset, problems: Vec<Problem>) -> Decoded {
         preset,
         spec: preset.spec.clone(),
         presentation: Presentation::default(),
+        lineage: None,
         problems,
     }
 }
@@ -376,6 +380,16 @@ pub fn decode(fragment: &str) -> Decoded {
     };
     let mut presentation = Presentation::default();
     pairs.retain(|(key, value)| !presentation.read(key, value, &mut problems));
+    let mut lineage = None;
+    pairs.retain(|(key, value)| {
+        if key != lineage::KEY {
+            return true;
+        }
+        let (read, said) = Lineage::parse(value);
+        problems.extend(said);
+        lineage = Some(read);
+        false
+    });
     let mut seen = std::collections::BTreeSet::new();
     for (key, _) in &pairs {
         if !seen.insert(key.clone()) {
@@ -387,6 +401,7 @@ pub fn decode(fragment: &str) -> Decoded {
     }
     Decoded {
         presentation,
+        lineage,
         ..apply(preset, &preset.spec, pairs, problems)
     }
 }
@@ -491,6 +506,7 @@ fn apply(
         preset,
         spec,
         presentation: Presentation::default(),
+        lineage: None,
         problems: merged(problems),
     }
 }

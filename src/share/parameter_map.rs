@@ -9,11 +9,12 @@
 //! pattern. Over a parameter of the form it is a morphospace, as Raup's cube of coiling
 //! parameters is: each tile is the whole shell, grown and drawn as a gallery picture is.
 
-use crate::forms::sweep::raup::{Coordinate, Raup, whorls_apart};
+use super::tile::{Tile, Variant};
+use crate::forms::sweep::raup::{Coordinate, Raup};
 use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
 use crate::presets::{Preset, presets};
-use crate::share::link::{self, flatten};
+use crate::share::link::flatten;
 use crate::spec::Problem;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, RAUP, display, fields};
@@ -273,33 +274,6 @@ impl Picture {
     }
 }
 
-/// One tile: its shell, its link, and its picture once computed (or why there is none).
-pub struct Tile {
-    /// The values of x and y.
-    pub values: (f64, f64),
-    pub spec: ShellSpec,
-    pub link: String,
-    /// The pattern's picture, on a map over the pattern model's parameters.
-    pub picture: Option<Picture>,
-    /// Whether its shell is drawn, on a map over the form's parameters (drawn by the page,
-    /// as a gallery picture is).
-    pub shown: bool,
-    /// Why it has no picture: its values cannot grow.
-    pub failure: Option<String>,
-    /// What else its link changed so that its values can grow (fewer whorls at a faster
-    /// growth, say): it is drawn, and this is said beside it.
-    pub note: Option<String>,
-    /// Whether its whorls lie apart, on a map of shells (a swept shell's open coiling, which
-    /// Raup found rare among real shells: the empty side of his cube).
-    pub apart: bool,
-}
-
-impl Tile {
-    fn done(&self) -> bool {
-        self.picture.is_some() || self.shown || self.failure.is_some()
-    }
-}
-
 /// One tile's pattern being computed, a row at a time: `rows` rows of a shell's pattern, kept
 /// as a picture once all are computed.
 pub struct TileWork {
@@ -342,8 +316,6 @@ impl TileWork {
 /// The map: `y.values.len()` rows of `x.values.len()` tiles, the first row at the first value
 /// of y, each row from the first value of x. Only the tile being computed holds its pattern.
 pub struct ParameterMap {
-    /// The preset the mapped shell is a variant of (each tile's too).
-    pub preset: &'static Preset,
     /// The tile nearest the shell mapped, when its values fall within the map.
     pub current: Option<usize>,
     /// The presets of the same form whose values fall within the map, each by the tile nearest
@@ -365,46 +337,16 @@ impl ParameterMap {
     /// The map of `spec` (a variant of `preset`) over the axes, with tiles of as many rows as
     /// the pattern has cells (a square of the planar view), fewer if the shell has fewer.
     pub fn new(preset: &'static Preset, spec: &ShellSpec, x: Axis, y: Axis) -> Self {
+        let shells = x.shapes() || y.shapes();
         let mut tiles = Vec::with_capacity(x.values.len() * y.values.len());
         for &vy in &y.values {
             for &vx in &x.values {
-                let (mut tile, mut problems) = ((preset, spec.clone()), Vec::new());
-                // The keys the axes set: a value of theirs the link could not keep leaves the
-                // tile empty; another value repaired for them is said, and the tile is drawn.
-                let mut set = Vec::new();
+                let mut variant = Variant::of(preset, spec);
                 for (axis, value) in [(&x, vx), (&y, vy)] {
-                    match axis.pairs(&tile.1, value) {
-                        Ok(pairs) => {
-                            set.extend(pairs.iter().map(|(k, _)| k.clone()));
-                            let read = link::with_all(tile.0, &tile.1, pairs);
-                            problems.extend(read.problems);
-                            tile = (read.preset, read.spec);
-                        }
-                        Err(refused) => {
-                            set.push(refused.key.clone());
-                            problems.push(refused);
-                        }
-                    }
+                    let pairs = axis.pairs(&variant.spec, value);
+                    variant.set(pairs);
                 }
-                let (refused, repaired): (Vec<&Problem>, Vec<&Problem>) =
-                    problems.iter().partition(|p| set.contains(&p.key));
-                let words = |problems: Vec<&Problem>| {
-                    let words: Vec<String> = problems.iter().map(ToString::to_string).collect();
-                    (!words.is_empty()).then(|| words.join("; "))
-                };
-                let shells = x.shapes() || y.shapes();
-                let apart = shells
-                    && matches!(&tile.1.form, Form::Sweep(s) if whorls_apart(s) == Some(true));
-                tiles.push(Tile {
-                    values: (vx, vy),
-                    link: link::encode(tile.0, &tile.1),
-                    spec: tile.1,
-                    picture: None,
-                    shown: false,
-                    failure: words(refused),
-                    note: words(repaired),
-                    apart,
-                });
+                tiles.push(variant.tile(shells));
             }
         }
         let rows = (spec.growth.rows as usize).min(spec.pattern.cells.max(1) as usize);
@@ -420,7 +362,6 @@ impl ParameterMap {
             .filter_map(|p| Some((tile_of(&p.spec)?, p)))
             .collect();
         Self {
-            preset,
             current,
             landmarks,
             x,
@@ -435,6 +376,12 @@ impl ParameterMap {
 
     pub fn tiles(&self) -> &[Tile] {
         &self.tiles
+    }
+
+    /// The values of x and y of tile `index`.
+    pub fn values(&self, index: usize) -> (f64, f64) {
+        let side = self.x.values.len();
+        (self.x.values[index % side], self.y.values[index / side])
     }
 
     /// The tile at column `i` (value i of x) of row `j` (value j of y).
@@ -463,20 +410,12 @@ impl ParameterMap {
 
     /// Keeps what computing tile `index` gave: its picture, or why it has none.
     pub fn place(&mut self, index: usize, result: Result<Picture, String>) {
-        let tile = &mut self.tiles[index];
-        match result {
-            Ok(picture) => tile.picture = Some(picture),
-            Err(why) => tile.failure = Some(why),
-        }
+        self.tiles[index].place(result);
     }
 
     /// Tile `index`'s shell was drawn, or could not be grown for the reason given.
     pub fn shown(&mut self, index: usize, result: Result<(), String>) {
-        let tile = &mut self.tiles[index];
-        match result {
-            Ok(()) => tile.shown = true,
-            Err(why) => tile.failure = Some(why),
-        }
+        self.tiles[index].shown(result);
     }
 
     /// Computes the patterns, row after row and tile after tile, while `more()` says so;

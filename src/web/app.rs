@@ -19,6 +19,7 @@
 //! (worker, page, nowhere: where the main view is drawn).
 
 use super::activity;
+use super::breed::BreedView;
 use super::clock::now;
 use super::debug::Loss;
 use super::dom;
@@ -39,6 +40,7 @@ use super::workers::Workers;
 use crate::export::Download;
 use crate::presets::Preset;
 use crate::render::Canvas;
+use crate::share::lineage::{self, Lineage};
 use crate::share::link::{self, Decoded};
 use crate::share::presentation::{Layout, Presentation};
 use crate::spec::ShellSpec;
@@ -86,6 +88,7 @@ pub struct App {
     workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
     map: MapView,
+    breed: BreedView,
     downloads: Downloads,
     current: Option<(&'static Preset, ShellSpec)>,
     /// How the link asks the page to show the shell: one view or four, the interface.
@@ -186,6 +189,7 @@ impl App {
             workers,
             pictures,
             map: MapView::default(),
+            breed: BreedView::default(),
             downloads: Downloads::default(),
             current: None,
             presentation: Presentation::default(),
@@ -226,13 +230,15 @@ impl App {
         self.current.is_some()
     }
 
-    /// Follows the URL fragment (closing the parameter map, whose tiles are links).
+    /// Follows the URL fragment (closing the parameter map, whose tiles are links): a shell,
+    /// or a lineage of shells bred from one, shown with its last parent behind it.
     pub fn route(&mut self) {
         self.map
             .close(&mut self.workers.borrow_mut(), &mut self.pictures);
         let fragment = location_hash();
         activity::set(format!("opening the link {fragment}"));
         if fragment.trim_start_matches('#').is_empty() {
+            self.close_breeding();
             self.stop_recording("you went back to the gallery");
             self.present(Presentation::default());
             self.show(true);
@@ -244,8 +250,27 @@ impl App {
             preset,
             spec,
             presentation,
-            problems,
+            lineage,
+            mut problems,
         } = link::decode(&fragment);
+        let (preset, spec) = match lineage {
+            Some(lineage) => {
+                self.stop_recording("you chose to breed shells");
+                let (parent, spec, said) = self.breed.open(
+                    preset,
+                    &spec,
+                    &lineage,
+                    &mut self.workers.borrow_mut(),
+                    &mut self.pictures,
+                );
+                problems.extend(said);
+                (parent, spec)
+            }
+            None => {
+                self.close_breeding();
+                (preset, spec)
+            }
+        };
         say(&problems);
         self.present(presentation);
         self.show(false);
@@ -366,6 +391,10 @@ impl App {
             problems,
             ..
         } = link::with(preset, spec, key, &value);
+        if change == Change::Set {
+            // The shell edited is no longer the parent of the offspring shown.
+            self.close_breeding();
+        }
         if change == Change::Moving {
             if previews(key) {
                 say(&problems);
@@ -394,10 +423,11 @@ impl App {
         self.url_due = Some(now() + URL_DELAY_MS);
     }
 
-    /// The link of what is shown, as it is shown.
+    /// The link of what is shown, as it is shown: the shell, or the lineage bred to it.
     fn fragment(&self) -> Option<String> {
-        self.current.as_ref().map(|(p, s)| {
-            let mut fragment = format!("#{}", link::encode(p, s));
+        let shell = || self.current.as_ref().map(|(p, s)| link::encode(p, s));
+        self.breed.link().or_else(shell).map(|link| {
+            let mut fragment = format!("#{link}");
             self.presentation.write(&mut fragment);
             fragment
         })
@@ -903,8 +933,9 @@ impl App {
             return Ok(());
         }
         self.take_replies();
-        // The map covers the shell, and the gallery hides it: growth waits meanwhile.
-        let held = self.recording.is_none() && (self.in_gallery || self.map.is_open());
+        // The map and breeding cover the shell, and the gallery hides it: growth waits
+        // meanwhile.
+        let held = self.recording.is_none() && (self.in_gallery || self.covered());
         if held != self.held {
             self.held = held;
             self.viewer.command(ViewCommand::Hold(held));
@@ -971,11 +1002,12 @@ impl App {
         if self.url_due.is_some_and(|due| now() >= due) {
             self.update_url();
         }
-        if self.map.is_open() {
+        if self.covered() {
             if let Some(tile) = self.pictures.work(&mut self.workers.borrow_mut()) {
                 self.map.shown(tile, Ok(()));
+                self.breed.shown(tile, Ok(()));
             }
-            activity::set("drawing the parameter map".to_string());
+            activity::set("drawing the parameter map or the offspring".to_string());
             return Ok(());
         }
         let Some(status) = status else {
@@ -1079,7 +1111,8 @@ impl App {
             match (request, reply) {
                 (Request::Whole { job, .. }, Reply::Grown { result, .. }) => {
                     if let Some((tile, why)) = self.pictures.take(job, result) {
-                        self.map.shown(tile, Err(why));
+                        self.map.shown(tile, Err(why.clone()));
+                        self.breed.shown(tile, Err(why));
                     }
                 }
                 (_, Reply::Tiled { job, result }) => self.map.take(job, result),
@@ -1113,6 +1146,7 @@ impl App {
     /// Shows the parameter map of the shell shown.
     pub fn open_map(&mut self) {
         self.stop_recording("the map covered the shell");
+        self.close_breeding();
         if let Some((preset, spec)) = &self.current {
             self.map.open(
                 preset,
@@ -1140,19 +1174,71 @@ impl App {
         self.map.chose(name);
     }
 
-    /// Whether the parameter map covers the shell.
-    pub fn map_open(&self) -> bool {
-        self.map.is_open()
-    }
-
-    /// Moves the focus across the map's tiles (arrow keys).
-    pub fn step_map(&self, dx: i32, dy: i32) {
-        self.map.step(dx, dy);
-    }
-
     pub fn close_map(&mut self) {
         self.map
             .close(&mut self.workers.borrow_mut(), &mut self.pictures);
+    }
+
+    /// Whether the map or breeding covers the shell.
+    pub fn covered(&self) -> bool {
+        self.map.is_open() || self.breed.is_open()
+    }
+
+    /// Breeds from the shell shown: it stands among its first eight offspring.
+    pub fn open_breeding(&mut self) {
+        if let Some((preset, spec)) = &self.current {
+            let lineage = Lineage::default();
+            let link = format!(
+                "{}&{}={}",
+                link::encode(preset, spec),
+                lineage::KEY,
+                lineage.write()
+            );
+            let _ = web_sys::window().map(|w| w.location().set_hash(&link));
+        }
+    }
+
+    /// Leaves breeding where the link stays: the shell shown is the last parent, and the link
+    /// becomes its own.
+    fn close_breeding(&mut self) {
+        if self.breed.is_open() {
+            self.breed
+                .close(&mut self.workers.borrow_mut(), &mut self.pictures);
+            self.url_due = Some(now());
+        }
+    }
+
+    /// The view over the shell closes (Escape): breeding leaves with its parent.
+    pub fn escape(&mut self) {
+        if self.breed.is_open() {
+            self.breed.keep();
+        } else {
+            self.close_map();
+        }
+    }
+
+    /// Moves the focus across the map's tiles or the offspring (arrow keys).
+    pub fn step_tiles(&self, dx: i32, dy: i32) {
+        if self.breed.is_open() {
+            self.breed.step(dx, dy);
+        } else {
+            self.map.step(dx, dy);
+        }
+    }
+
+    /// Back to the generation before.
+    pub fn breed_back(&mut self) {
+        self.breed.back();
+    }
+
+    /// Leaves breeding with the parent.
+    pub fn breed_keep(&mut self) {
+        self.breed.keep();
+    }
+
+    /// Breeds the generation shown again at `rate`.
+    pub fn breed_rate(&mut self, rate: f64) {
+        self.breed.set_rate(rate);
     }
 
     /// Follows a change of the page's light or dark theme.

@@ -18,7 +18,9 @@ use crate::view::picture::{CARD_PIXELS, TILE_PIXELS, picture_spec};
 use crate::work::message::{Request, WholeShell};
 use crate::work::view_command::ViewCommand;
 use crate::work::view_status::Device;
+use std::cell::RefCell;
 use std::collections::VecDeque;
+use std::rc::Rc;
 use web_sys::{Element, HtmlImageElement};
 
 /// Fills `container` with one section per group and one card per preset.
@@ -56,8 +58,8 @@ pub fn build(container: &Element) {
     }
 }
 
-/// Where a picture goes: a gallery card's, or a tile of the parameter map over a shape's
-/// parameters (by its job number in the map).
+/// Where a picture goes: a gallery card's, or a tile of a grid of shells (the parameter map
+/// over a shape's parameters, or breeding), by the tile's job number.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Place {
     Card,
@@ -85,14 +87,34 @@ struct Wanted {
     link: String,
 }
 
-impl Wanted {
-    /// The `img` the picture is shown in.
-    fn selector(&self) -> String {
-        match self.place {
-            Place::Card => format!("a.card[data-preset=\"{}\"] img", self.preset.id),
-            Place::Tile(job) => format!("#map-grid a.tile[data-job=\"{job}\"] img"),
+impl Place {
+    /// The `img` a picture of `preset` is shown in here.
+    fn selector(self, preset: &Preset) -> String {
+        match self {
+            Place::Card => format!("a.card[data-preset=\"{}\"] img", preset.id),
+            Place::Tile(job) => format!("a.tile[data-job=\"{job}\"] img"),
         }
     }
+}
+
+/// The `img` the selector finds on the page.
+fn image(selector: &str) -> Option<HtmlImageElement> {
+    super::page::document()
+        .query_selector(selector)
+        .ok()
+        .flatten()
+        .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok())
+}
+
+/// Keeps the address of a tile's picture by its link, letting the oldest go past [`KEPT`].
+fn keep(drawn: &mut VecDeque<(String, String)>, link: String, url: String) {
+    if drawn.len() >= KEPT
+        && let Some((_, old)) = drawn.pop_front()
+    {
+        // The address of a picture no longer kept; a tile showing it keeps its image.
+        let _ = web_sys::Url::revoke_object_url(&old);
+    }
+    drawn.push_back((link, url));
 }
 
 /// Draws the gallery's and the shape map's pictures: each shell is grown whole by a worker of
@@ -111,7 +133,14 @@ pub struct Pictures {
     lately: VecDeque<(Wanted, f64)>,
     /// The job number of the next picture asked.
     next_job: u32,
+    /// The addresses of tiles' pictures drawn lately, by the link they were grown from: a tile
+    /// asked again (a parent that was an offspring, a generation gone back to, a map drawn
+    /// again) is shown at once.
+    drawn: Rc<RefCell<VecDeque<(String, String)>>>,
 }
+
+/// Tiles' pictures kept by [`Pictures::drawn`] (the oldest are let go).
+const KEPT: usize = 256;
 
 /// Milliseconds within which the browser is taken to report a lost device.
 const LOSS_NOTICE_MS: f64 = 2000.0;
@@ -126,6 +155,7 @@ impl Pictures {
             waiting: Vec::new(),
             lately: VecDeque::new(),
             next_job: 0,
+            drawn: Rc::default(),
         };
         if pictures.draws() {
             for preset in presets() {
@@ -169,20 +199,34 @@ impl Pictures {
         }
     }
 
-    /// Asks the pool for the picture of tile `job` of the shape map, the shell `spec`.
+    /// Asks the pool for the picture of tile `job`, the shell `spec`; true if it was drawn
+    /// lately, and is shown at once instead.
     pub fn ask_tile(
         &mut self,
         job: u32,
         preset: &'static Preset,
         spec: &ShellSpec,
         workers: &mut Workers,
-    ) {
+    ) -> bool {
+        let link = link::encode(preset, &picture_spec(spec, TILE_PIXELS));
+        let drawn = self.drawn.borrow();
+        if let Some((_, url)) = drawn.iter().find(|(l, _)| *l == link)
+            && let Some(img) = image(&Place::Tile(job).selector(preset))
+        {
+            img.set_src(url);
+            return true;
+        }
+        drop(drawn);
         let wanted = self.want(Place::Tile(job), preset, spec);
         Self::submit(workers, wanted);
+        false
     }
 
     /// Asks the pool again for a picture that may have been drawn blank by a lost device.
     fn ask_again(&mut self, wanted: Wanted, workers: &mut Workers) {
+        self.drawn
+            .borrow_mut()
+            .retain(|(link, _)| *link != wanted.link);
         let again = self.want(wanted.place, wanted.preset, &wanted.spec);
         Self::submit(workers, again);
     }
@@ -251,31 +295,27 @@ impl Pictures {
         // One picture a frame: reading a picture back waits for the GPU to draw it, and the
         // page answers the user between two.
         let (wanted, whole) = self.waiting.pop()?;
-        let t0 = now();
         self.viewer.show_whole(wanted.preset, &wanted.spec, whole);
-        let t1 = now();
         let picture = self.viewer.picture_at(wanted.place.pixels());
-        web_sys::console::log_1(
-            &format!("ZZ show {:.0} picture {:.0}", t1 - t0, now() - t1).into(),
-        );
         if self.viewer.survive() != Device::Ready {
             // Lost while drawing: the picture may be blank; it is drawn on the next device.
             self.ask_again(wanted, workers);
             return None;
         }
         let blob = picture.ok()?;
-        let image = super::page::document()
-            .query_selector(&wanted.selector())
-            .ok()
-            .flatten()
-            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok());
+        let img = image(&wanted.place.selector(wanted.preset));
         let place = wanted.place;
+        let kept =
+            matches!(place, Place::Tile(_)).then(|| (wanted.link.clone(), Rc::clone(&self.drawn)));
         self.lately.push_back((wanted, now()));
-        if let Some(img) = image {
+        if let Some(img) = img {
             wasm_bindgen_futures::spawn_local(async move {
                 // A picture the browser could not read leaves the card as it was.
                 if let Ok(url) = object_url(blob).await {
                     img.set_src(&url);
+                    if let Some((link, drawn)) = kept {
+                        keep(&mut drawn.borrow_mut(), link, url);
+                    }
                 }
             });
         }

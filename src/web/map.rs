@@ -8,19 +8,17 @@ use super::dom::{append, attr, clear, create, typed};
 use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
 use super::panel::label;
+use super::tile_grid::{Shows, TileGrid};
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::share::parameter_map::{
-    Axis, PHONE_SIDE, ParameterMap, Picture, SIDE, Tile, first_axes, parameters,
+    Axis, PHONE_SIDE, ParameterMap, Picture, SIDE, first_axes, parameters,
 };
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
 use crate::work::message::Request;
-use wasm_bindgen::{Clamped, JsCast};
-use web_sys::{
-    CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlImageElement, HtmlInputElement,
-    HtmlOptionElement, HtmlSelectElement, ImageData,
-};
+use wasm_bindgen::JsCast;
+use web_sys::{Element, HtmlInputElement, HtmlOptionElement, HtmlSelectElement};
 
 /// The controls of one axis: the parameter, and its range.
 struct AxisControls {
@@ -100,18 +98,26 @@ impl AxisControls {
 }
 
 /// The map over the view: its controls, its tiles, and the map being filled.
-#[derive(Default)]
 pub struct MapView {
     /// Whether the map is shown (over the shell, which waits meanwhile).
     open: bool,
     map: Option<ParameterMap>,
-    tiles: Vec<Element>,
+    grid: TileGrid,
     parameters: Vec<(&'static Field, f64)>,
     /// The kind of form of the shell mapped.
     kind: &'static str,
-    /// The map drawn last: a tile's job number carries it, so that tiles of an older map
-    /// are dropped.
-    generation: u32,
+}
+
+impl Default for MapView {
+    fn default() -> Self {
+        Self {
+            open: false,
+            map: None,
+            grid: TileGrid::new("map-grid"),
+            parameters: Vec::new(),
+            kind: "",
+        }
+    }
 }
 
 /// Tiles along each side of the map: fewer on a phone, in the style sheet's narrow layout
@@ -122,9 +128,6 @@ fn side() -> usize {
         .is_some_and(|m| m.matches());
     if narrow { PHONE_SIDE } else { SIDE }
 }
-
-/// Tiles of one map (the low bits of a tile's job number; `SIDE × SIDE` fit).
-const TILES_PER_MAP: u32 = 256;
 
 impl MapView {
     /// Whether the map is shown.
@@ -153,7 +156,7 @@ impl MapView {
         self.kind = spec.form.kind();
         if self.parameters.len() < 2 {
             self.map = None;
-            clear_grid();
+            self.grid.clear();
             set_text(
                 "map-status",
                 "This shell has fewer than two parameters to map.",
@@ -193,11 +196,7 @@ impl MapView {
         workers: &mut Workers,
         pictures: &mut Pictures,
     ) {
-        let (Some(x), Some(y), Some(grid)) = (
-            AxisControls::find("x"),
-            AxisControls::find("y"),
-            element("map-grid"),
-        ) else {
+        let (Some(x), Some(y)) = (AxisControls::find("x"), AxisControls::find("y")) else {
             return;
         };
         let axes = x.axis(self.kind).and_then(|x| Ok((x, y.axis(self.kind)?)));
@@ -208,7 +207,7 @@ impl MapView {
             Ok(axes) => axes,
             Err(e) => return self.refuse(&format!("{e}.")),
         };
-        let map = ParameterMap::new(preset, spec, x, y);
+        let mut map = ParameterMap::new(preset, spec, x, y);
         if map.shells() && !pictures.draws() {
             return self.refuse(
                 "This browser draws no 3D here, so the map shows patterns only: choose two \
@@ -216,67 +215,50 @@ impl MapView {
             );
         }
         self.stop(workers, pictures);
-        clear(&grid);
-        self.tiles = map
-            .tiles()
-            .iter()
-            .zip(0..)
-            .map(|(tile, index)| {
-                let a = create("a", "tile", None);
-                attr(&a, "href", &format!("#{}", tile.link));
-                attr(
-                    &a,
-                    "data-job",
-                    &(self.generation * TILES_PER_MAP + index).to_string(),
-                );
-                let (vx, vy) = tile.values;
-                let label = format!(
-                    "{} = {}, {} = {}",
-                    symbol(map.x.field),
-                    display(vx),
-                    symbol(map.y.field),
-                    display(vy)
-                );
-                let label = if tile.apart {
-                    let _ = a.class_list().add_1("apart");
-                    format!("{label} (whorls apart: open coiling, rare among real shells)")
-                } else {
-                    label
-                };
-                let here: Vec<&str> = map
-                    .landmarks
-                    .iter()
-                    .filter(|(at, _)| *at == index as usize)
-                    .map(|(_, p)| p.name.as_str())
-                    .collect();
-                let label = if here.is_empty() {
-                    label
-                } else {
-                    let names = here.join(", ");
-                    append(&a, &[&create("span", "landmark", Some(&names))]);
-                    format!("{label} (here: {names})")
-                };
-                let label = if map.current == Some(index as usize) {
-                    let _ = a.class_list().add_1("current");
-                    attr(&a, "aria-current", "true");
-                    format!("{label} (nearest this shell)")
-                } else {
-                    label
-                };
-                attr(&a, "title", &label);
-                attr(&a, "aria-label", &label);
-                let picture: Element = if map.shells() {
-                    let img: HtmlImageElement = typed("img", "");
-                    img.set_alt("");
-                    img.into()
-                } else {
-                    create("canvas", "", None).into()
-                };
-                let _ = a.prepend_with_node_1(&picture);
-                append(&grid, &[&a]);
-                a.into()
-            })
-            .collect();
+        let shows = if map.shells() {
+            Shows::Shell
+        } else {
+            Shows::Pattern
+        };
+        for (index, tile) in map.tiles().iter().enumerate() {
+            let (vx, vy) = map.values(index);
+            let mut label = format!(
+                "{} = {}, {} = {}",
+                symbol(map.x.field),
+                display(vx),
+                symbol(map.y.field),
+                display(vy)
+            );
+            let mut classes = Vec::new();
+            if tile.apart {
+                classes.push("apart");
+                label.push_str(" (whorls apart: open coiling, rare among real shells)");
+            }
+            let here: Vec<&str> = map
+                .landmarks
+                .iter()
+                .filter(|(at, _)| *at == index)
+                .map(|(_, p)| p.name.as_str())
+                .collect();
+            let names = here.join(", ");
+            if !here.is_empty() {
+                label.push_str(&format!(" (here: {names})"));
+            }
+            let current = map.current == Some(index);
+            if current {
+                classes.push("current");
+                label.push_str(" (nearest this shell)");
+            }
+            let a = self
+                .grid
+                .add(Some(&format!("#{}", tile.link)), &label, &classes, shows);
+            if current {
+                attr(&a, "aria-current", "true");
+            }
+            if !here.is_empty() {
+                append(&a, &[&create("span", "landmark", Some(&names))]);
+            }
+        }
         let each = if map.shells() {
             "each the whole shell".to_string()
         } else {
@@ -291,10 +273,12 @@ impl MapView {
             ),
         );
         for index in map.to_compute() {
-            let job = self.generation * TILES_PER_MAP + index as u32;
+            let job = self.grid.job(index);
             let tile = &map.tiles()[index];
             if map.shells() {
-                pictures.ask_tile(job, map.preset, &tile.spec, workers);
+                if pictures.ask_tile(job, tile.preset, &tile.spec, workers) {
+                    map.shown(index, Ok(()));
+                }
             } else {
                 workers.submit(Request::Tile {
                     job,
@@ -305,7 +289,7 @@ impl MapView {
         }
         for (index, tile) in map.tiles().iter().enumerate() {
             if tile.failure.is_some() || tile.note.is_some() {
-                show_tile(&self.tiles[index], tile);
+                self.grid.show(index, tile);
             }
         }
         signal("map", if map.finished() { "whole" } else { "filling" });
@@ -315,28 +299,8 @@ impl MapView {
     /// Moves the keyboard's focus `dx` tiles across and `dy` down (from the focused tile, or the
     /// one nearest the shell, or the first); Enter then opens that shell.
     pub fn step(&self, dx: i32, dy: i32) {
-        let Some(map) = &self.map else { return };
-        let side = map.x.values.len() as i32;
-        let focused = super::page::document().active_element();
-        let from = self
-            .tiles
-            .iter()
-            .position(|t| Some(t) == focused.as_ref())
-            .or(map.current);
-        let to = match from {
-            Some(at) => {
-                let (i, j) = (at as i32 % side, at as i32 / side);
-                let rows = self.tiles.len() as i32 / side;
-                ((j + dy).clamp(0, rows - 1) * side + (i + dx).clamp(0, side - 1)) as usize
-            }
-            None => 0,
-        };
-        if let Some(tile) = self
-            .tiles
-            .get(to)
-            .and_then(|t| t.dyn_ref::<web_sys::HtmlElement>())
-        {
-            let _ = tile.focus();
+        if let Some(map) = &self.map {
+            self.grid.step(dx, dy, map.x.values.len(), map.current);
         }
     }
 
@@ -344,12 +308,12 @@ impl MapView {
     fn stop(&mut self, workers: &mut Workers, pictures: &mut Pictures) {
         workers.cancel(|r| matches!(r, Request::Tile { .. }));
         pictures.drop_tiles(workers);
-        self.generation = (self.generation + 1) % (u32::MAX / TILES_PER_MAP);
+        self.grid.clear();
     }
 
     fn refuse(&mut self, message: &str) {
         self.map = None;
-        clear_grid();
+        self.grid.clear();
         set_text("map-status", message);
         signal("map", "refused");
     }
@@ -367,37 +331,12 @@ impl MapView {
 
     /// Applies `change` to tile `job` of the map shown, and shows the tile.
     fn update(&mut self, job: u32, change: impl FnOnce(&mut ParameterMap, usize)) {
-        let Some(map) = &mut self.map else { return };
-        if job / TILES_PER_MAP != self.generation {
+        let (Some(map), Some(index)) = (&mut self.map, self.grid.index(job)) else {
             return;
-        }
-        let index = (job % TILES_PER_MAP) as usize;
-        if index >= map.tiles().len() {
-            return;
-        }
+        };
         change(map, index);
-        show_tile(&self.tiles[index], &map.tiles()[index]);
+        self.grid.show(index, &map.tiles()[index]);
         signal("map", if map.finished() { "whole" } else { "filling" });
-    }
-}
-
-/// Draws a tile's picture, or hatches it and says why it has none; a tile whose link repaired
-/// another value is marked, and says what.
-fn show_tile(element: &Element, tile: &Tile) {
-    let title = element.get_attribute("title").unwrap_or_default();
-    match (&tile.picture, &tile.failure) {
-        (_, Some(why)) => {
-            let _ = element.class_list().add_1("failed");
-            attr(element, "title", &format!("{title}: {why}"));
-        }
-        (Some(picture), None) => paint(element, picture),
-        (None, None) => {}
-    }
-    if let (Some(note), None) = (&tile.note, &tile.failure)
-        && !element.class_list().contains("repaired")
-    {
-        let _ = element.class_list().add_1("repaired");
-        attr(element, "title", &format!("{title} (repaired: {note})"));
     }
 }
 
@@ -406,39 +345,5 @@ fn symbol(field: &Field) -> &'static str {
         field.name
     } else {
         field.symbol
-    }
-}
-
-fn clear_grid() {
-    if let Some(grid) = element("map-grid") {
-        clear(&grid);
-    }
-}
-
-/// Draws a tile's picture into its canvas.
-fn paint(tile: &Element, picture: &Picture) {
-    let Some(canvas) = tile
-        .first_element_child()
-        .and_then(|c| c.dyn_into::<HtmlCanvasElement>().ok())
-    else {
-        return;
-    };
-    canvas.set_width(picture.width as u32);
-    canvas.set_height(picture.height as u32);
-    let context = canvas
-        .get_context("2d")
-        .ok()
-        .flatten()
-        .and_then(|c| c.dyn_into::<CanvasRenderingContext2d>().ok());
-    if let (Some(context), Ok(image)) = (
-        context,
-        ImageData::new_with_u8_clamped_array_and_sh(
-            Clamped(&picture.rgba),
-            picture.width as u32,
-            picture.height as u32,
-        ),
-    ) {
-        // Drawing into our own canvas cannot fail for in-range coordinates.
-        let _ = context.put_image_data(&image, 0.0, 0.0);
     }
 }

@@ -3,6 +3,7 @@
 
 mod activity;
 mod app;
+mod breed;
 mod clock;
 mod debug;
 mod dom;
@@ -17,6 +18,7 @@ mod recovery;
 mod scope;
 mod share_panel;
 mod shown_size;
+mod tile_grid;
 mod view_canvas;
 mod view_worker;
 mod viewer;
@@ -393,6 +395,28 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("map-open", app, App::open_map)?;
     on_click("map-draw", app, App::draw_map)?;
     on_click("map-close", app, App::close_map)?;
+    on_click("breed-open", app, App::open_breeding)?;
+    on_click("breed-back", app, App::breed_back)?;
+    on_click("breed-keep", app, App::breed_keep)?;
+    if let Some(rate) = page::element("breed-rate") {
+        on(&rate.clone().into(), "input", app, |_, e: Event| {
+            if let Some(input) = e
+                .target()
+                .and_then(|t| t.dyn_into::<HtmlInputElement>().ok())
+            {
+                page::set_text("breed-rate-value", &input.value());
+            }
+        })?;
+        on(&rate.into(), "change", app, |a, e: Event| {
+            let value = e
+                .target()
+                .and_then(|t| t.dyn_into::<HtmlInputElement>().ok())
+                .and_then(|i| i.value().parse::<f64>().ok());
+            if let Some(rate) = value {
+                a.breed_rate(rate);
+            }
+        })?;
+    }
     for name in ["x", "y"] {
         if let Some(select) = page::element(&format!("map-{name}")) {
             on(&select.into(), "change", app, move |a, _: Event| {
@@ -440,9 +464,16 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             "ArrowDown" => Some((0, 1)),
             _ => None,
         };
-        // Over the map, the arrows move among its tiles (links), but not in its fields.
-        if let Some((dx, dy)) = arrow.filter(|_| a.map_open() && !editing(&e)) {
-            a.step_map(dx, dy);
+        // Over the map or the offspring, the arrows move among the tiles (links), but not in
+        // the fields.
+        if let Some((dx, dy)) = arrow.filter(|_| a.covered() && !editing(&e)) {
+            a.step_tiles(dx, dy);
+            e.prevent_default();
+            return;
+        }
+        // Escape leaves the map or breeding from any of their controls.
+        if key == "Escape" && a.covered() {
+            a.escape();
             e.prevent_default();
             return;
         }
@@ -450,7 +481,6 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
             return;
         }
         match key.as_str() {
-            "Escape" => a.close_map(),
             " " => a.toggle_playing(),
             "r" => a.restart(),
             "s" | "ArrowRight" => a.step(),

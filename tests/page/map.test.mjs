@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { open, session, waitForState } from './browser.mjs';
+import { open, session, shellTiles, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -60,39 +60,6 @@ test('the parameter map fills a grid of patterns, and a chosen tile opens that s
     await page.close();
   }
 });
-
-/**
- * The map's tiles as drawn: each tile's link, title and classes, and for a drawn picture the
- * box of its pixels that differ from its corner (the shell, not the background), and a digest
- * of its pixels.
- */
-async function shellTiles(page) {
-  // A picture is drawn in one frame and shown in its tile once the browser has read it.
-  await page.waitForFunction(() => [...document.querySelectorAll('#map-grid .tile')]
-    .every((a) => a.classList.contains('failed') || a.querySelector('img')?.src.startsWith('blob:')));
-  return page.$$eval('#map-grid .tile', (tiles) => Promise.all(tiles.map(async (a) => {
-    const img = a.querySelector('img');
-    const tile = { href: a.getAttribute('href'), title: a.title, classes: [...a.classList], drawn: false };
-    if (!img || !img.src.startsWith('blob:')) return tile;
-    await img.decode();
-    const { naturalWidth: w, naturalHeight: h } = img;
-    const c = new OffscreenCanvas(w, h);
-    const g = c.getContext('2d');
-    g.drawImage(img, 0, 0);
-    const { data } = g.getImageData(0, 0, w, h);
-    let [x0, y0, x1, y1, digest] = [w, h, -1, -1, 0];
-    for (let y = 0; y < h; y += 1) {
-      for (let x = 0; x < w; x += 1) {
-        const i = (y * w + x) * 4;
-        digest = (digest * 31 + data[i] + data[i + 1] * 7 + data[i + 2] * 13) >>> 0;
-        if (Math.abs(data[i] - data[0]) + Math.abs(data[i + 1] - data[1]) + Math.abs(data[i + 2] - data[2]) > 40) {
-          [x0, y0, x1, y1] = [Math.min(x0, x), Math.min(y0, y), Math.max(x1, x), Math.max(y1, y)];
-        }
-      }
-    }
-    return { ...tile, drawn: true, width: w, box: [x1 - x0 + 1, y1 - y0 + 1], digest };
-  })));
-}
 
 for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's parameters is a morphospace of whole shells, each tile its shell's link (${backend})`, async () => {
   const { page, errors } = await openOn(backend, 'v=1&preset=turbinate', { width: 1100, height: 1000 });

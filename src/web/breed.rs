@@ -1,0 +1,228 @@
+//! Breeding on the page: over the shell's view, the current shell among its eight offspring
+//! (the core's `Breeding`), each grown by the pool and drawn by the pictures' viewer as the
+//! map's shells are. Choosing an offspring follows its link, the lineage with that choice, so
+//! the browser's history steps through the generations and a shared link replays them; Back,
+//! the mutation rate and leaving with the parent are links too.
+
+use super::dom::attr;
+use super::gallery::Pictures;
+use super::page::{element, set_text, signal};
+use super::tile_grid::{Shows, TileGrid};
+use super::workers::Workers;
+use crate::presets::Preset;
+use crate::share::breeding::{Breeding, PARENT};
+use crate::share::lineage::Lineage;
+use crate::spec::{Problem, ShellSpec};
+use wasm_bindgen::JsCast;
+use web_sys::HtmlInputElement;
+
+/// Tiles along each side of the breeding grid: the parent in the middle of its offspring.
+const SIDE: usize = 3;
+
+/// The breeding view: the generation shown and its tiles.
+pub struct BreedView {
+    breeding: Option<Breeding>,
+    grid: TileGrid,
+}
+
+impl Default for BreedView {
+    fn default() -> Self {
+        Self {
+            breeding: None,
+            grid: TileGrid::new("breed-grid"),
+        }
+    }
+}
+
+/// Follows a link of this page (`#…`): with `replace`, in place of the page's current entry
+/// of the history, as a change of the rate is.
+fn go(fragment: &str, replace: bool) {
+    let Some(location) = web_sys::window().map(|w| w.location()) else {
+        return;
+    };
+    let _ = if replace {
+        location.replace(&format!("#{fragment}"))
+    } else {
+        location.set_hash(fragment)
+    };
+}
+
+impl BreedView {
+    /// Whether the breeding view is shown.
+    pub fn is_open(&self) -> bool {
+        self.breeding.is_some()
+    }
+
+    /// Shows the generation that `lineage` leads to from `spec` (a variant of `preset`) and
+    /// starts drawing it; returns its parent, the shell shown behind it, and what of the lineage
+    /// could not be followed.
+    pub fn open(
+        &mut self,
+        preset: &'static Preset,
+        spec: &ShellSpec,
+        lineage: &Lineage,
+        workers: &mut Workers,
+        pictures: &mut Pictures,
+    ) -> (&'static Preset, ShellSpec, Vec<Problem>) {
+        self.stop(workers, pictures);
+        let (mut breeding, problems) = Breeding::new(preset, spec, lineage);
+        let parent = breeding.parent();
+        let shell = (parent.preset, parent.spec.clone());
+        if let Some(section) = element("breed") {
+            section.set_hidden(false);
+        }
+        if let Some(rate) =
+            element("breed-rate").and_then(|e| e.dyn_into::<HtmlInputElement>().ok())
+        {
+            rate.set_value(&breeding.lineage.rate.to_string());
+        }
+        set_text("breed-rate-value", &breeding.lineage.rate.to_string());
+        if let Some(back) = element("breed-back") {
+            back.toggle_attribute_with_force("disabled", breeding.lineage.back().is_none())
+                .ok();
+        }
+        if !pictures.draws() {
+            set_text(
+                "breed-status",
+                "This browser draws no 3D here, so there are no shells to choose among.",
+            );
+            signal("breed", "refused");
+            self.breeding = Some(breeding);
+            return (shell.0, shell.1, problems);
+        }
+        let mut drawn = Vec::new();
+        for (index, tile) in breeding.tiles().iter().enumerate() {
+            let (label, href, classes) = match Breeding::child(index) {
+                None => (
+                    format!(
+                        "The parent, generation {}: open it to keep it",
+                        breeding.generation()
+                    ),
+                    Some(tile.link.clone()),
+                    vec!["parent"],
+                ),
+                Some(child) => {
+                    let changes: Vec<String> = breeding
+                        .changes(index)
+                        .iter()
+                        .map(ToString::to_string)
+                        .collect();
+                    let href = tile
+                        .failure
+                        .is_none()
+                        .then(|| breeding.link(&breeding.lineage.choose(child)));
+                    (
+                        format!("Offspring {child}: {}", changes.join("; ")),
+                        href,
+                        Vec::new(),
+                    )
+                }
+            };
+            let href = href.map(|h| format!("#{h}"));
+            let a = self
+                .grid
+                .add(href.as_deref(), &label, &classes, Shows::Shell);
+            if index == PARENT {
+                attr(&a, "aria-current", "true");
+            }
+            if tile.failure.is_some() || tile.note.is_some() {
+                self.grid.show(index, tile);
+            }
+            if tile.failure.is_none()
+                && pictures.ask_tile(self.grid.job(index), tile.preset, &tile.spec, workers)
+            {
+                drawn.push(index);
+            }
+        }
+        for index in drawn {
+            breeding.shown(index, Ok(()));
+        }
+        set_text(
+            "breed-status",
+            &format!(
+                "Generation {}. Choose an offspring to breed from it; the parent is in the \
+                 middle.",
+                breeding.generation()
+            ),
+        );
+        signal(
+            "breed",
+            if breeding.finished() {
+                "whole"
+            } else {
+                "filling"
+            },
+        );
+        self.breeding = Some(breeding);
+        (shell.0, shell.1, problems)
+    }
+
+    /// Hides the view and stops drawing its tiles.
+    pub fn close(&mut self, workers: &mut Workers, pictures: &mut Pictures) {
+        if self.breeding.is_none() {
+            return;
+        }
+        self.stop(workers, pictures);
+        self.breeding = None;
+        if let Some(section) = element("breed") {
+            section.set_hidden(true);
+        }
+        signal("breed", "");
+    }
+
+    fn stop(&mut self, workers: &mut Workers, pictures: &mut Pictures) {
+        pictures.drop_tiles(workers);
+        self.grid.clear();
+    }
+
+    /// The link of the lineage shown (without '#').
+    pub fn link(&self) -> Option<String> {
+        let breeding = self.breeding.as_ref()?;
+        Some(breeding.link(&breeding.lineage))
+    }
+
+    /// Goes to the generation before.
+    pub fn back(&self) {
+        if let Some(breeding) = &self.breeding
+            && let Some(before) = breeding.lineage.back()
+        {
+            go(&breeding.link(&before), false);
+        }
+    }
+
+    /// Leaves breeding with the parent: the shell shown, by its own link.
+    pub fn keep(&self) {
+        if let Some(breeding) = &self.breeding {
+            go(&breeding.parent().link, false);
+        }
+    }
+
+    /// Breeds the generation shown again at `rate`.
+    pub fn set_rate(&self, rate: f64) {
+        if let Some(breeding) = &self.breeding {
+            go(&breeding.link(&breeding.lineage.at_rate(rate)), true);
+        }
+    }
+
+    /// Moves the keyboard's focus among the tiles (from the parent).
+    pub fn step(&self, dx: i32, dy: i32) {
+        self.grid.step(dx, dy, SIDE, Some(PARENT));
+    }
+
+    /// The shell of tile `job` was drawn as a picture, or could not be grown.
+    pub fn shown(&mut self, job: u32, result: Result<(), String>) {
+        let (Some(breeding), Some(index)) = (&mut self.breeding, self.grid.index(job)) else {
+            return;
+        };
+        breeding.shown(index, result);
+        self.grid.show(index, &breeding.tiles()[index]);
+        signal(
+            "breed",
+            if breeding.finished() {
+                "whole"
+            } else {
+                "filling"
+            },
+        );
+    }
+}

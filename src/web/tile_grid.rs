@@ -1,0 +1,183 @@
+//! A grid of tiles on the page, as the parameter map and breeding lay them out: each tile a
+//! link with its picture, drawn as the pool's answers come. Every set of tiles takes a fresh
+//! range of job numbers shared by all grids, so that a picture of an older set, or of another
+//! grid, finds no tile here.
+
+use super::dom::{append, attr, clear, create, typed};
+use super::page::element;
+use crate::share::parameter_map::Picture;
+use crate::share::tile::Tile;
+use std::cell::Cell;
+use wasm_bindgen::{Clamped, JsCast};
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlImageElement, ImageData};
+
+/// Tiles of one set (the low bits of a tile's job number; a map's `SIDE × SIDE` fit).
+const TILES_PER_SET: u32 = 256;
+
+thread_local! {
+    /// The number of the next set of tiles, over all grids of the page.
+    static NEXT_SET: Cell<u32> = const { Cell::new(0) };
+}
+
+/// What a tile shows: the shell, as a picture drawn by the page; or a pattern, painted into a
+/// canvas from its pixels.
+#[derive(Clone, Copy, PartialEq)]
+pub enum Shows {
+    Shell,
+    Pattern,
+}
+
+/// The tiles of one grid element of the page, and the set they belong to.
+pub struct TileGrid {
+    id: &'static str,
+    tiles: Vec<Element>,
+    set: u32,
+}
+
+impl TileGrid {
+    /// The grid in the element of this id.
+    pub fn new(id: &'static str) -> Self {
+        Self {
+            id,
+            tiles: Vec::new(),
+            set: u32::MAX,
+        }
+    }
+
+    /// Removes the tiles, and starts a new set: pictures of the old ones are dropped.
+    pub fn clear(&mut self) {
+        if let Some(grid) = element(self.id) {
+            clear(&grid);
+        }
+        self.tiles.clear();
+        self.set = NEXT_SET.with(|next| {
+            let set = next.get();
+            next.set((set + 1) % (u32::MAX / TILES_PER_SET));
+            set
+        });
+    }
+
+    /// Adds a tile that links to `href` (none: it cannot be chosen), named by `label`, with the
+    /// classes given; returns it, for what else it shows.
+    pub fn add(
+        &mut self,
+        href: Option<&str>,
+        label: &str,
+        classes: &[&str],
+        shows: Shows,
+    ) -> Element {
+        let a = create("a", "tile", None);
+        if let Some(href) = href {
+            attr(&a, "href", href);
+        }
+        attr(&a, "data-job", &self.job(self.tiles.len()).to_string());
+        for class in classes {
+            let _ = a.class_list().add_1(class);
+        }
+        attr(&a, "title", label);
+        attr(&a, "aria-label", label);
+        let picture: Element = match shows {
+            Shows::Shell => {
+                let img: HtmlImageElement = typed("img", "");
+                img.set_alt("");
+                img.into()
+            }
+            Shows::Pattern => create("canvas", "", None).into(),
+        };
+        append(&a, &[&picture]);
+        if let Some(grid) = element(self.id) {
+            append(&grid, &[&a]);
+        }
+        self.tiles.push(a.clone().into());
+        a.into()
+    }
+
+    /// The job number of tile `index` of this set.
+    pub fn job(&self, index: usize) -> u32 {
+        self.set * TILES_PER_SET + index as u32
+    }
+
+    /// The tile of this set a job number is for.
+    pub fn index(&self, job: u32) -> Option<usize> {
+        let index = (job % TILES_PER_SET) as usize;
+        (job / TILES_PER_SET == self.set && index < self.tiles.len()).then_some(index)
+    }
+
+    /// Draws tile `index`'s picture, or hatches it and says why it has none; a tile whose
+    /// link repaired another value is marked, and says what.
+    pub fn show(&self, index: usize, tile: &Tile) {
+        let Some(element) = self.tiles.get(index) else {
+            return;
+        };
+        let title = element.get_attribute("title").unwrap_or_default();
+        match (&tile.picture, &tile.failure) {
+            (_, Some(why)) => {
+                let _ = element.class_list().add_1("failed");
+                attr(element, "title", &format!("{title}: {why}"));
+            }
+            (Some(picture), None) => paint(element, picture),
+            (None, None) => {}
+        }
+        if let (Some(note), None) = (&tile.note, &tile.failure)
+            && !element.class_list().contains("repaired")
+        {
+            let _ = element.class_list().add_1("repaired");
+            attr(element, "title", &format!("{title} (repaired: {note})"));
+        }
+    }
+
+    /// Moves the keyboard's focus `dx` tiles across and `dy` down a grid `side` tiles wide
+    /// (from the focused tile, or from `from`, or the first); Enter then follows that tile.
+    pub fn step(&self, dx: i32, dy: i32, side: usize, from: Option<usize>) {
+        let side = side as i32;
+        let focused = super::page::document().active_element();
+        let from = self
+            .tiles
+            .iter()
+            .position(|t| Some(t) == focused.as_ref())
+            .or(from);
+        let to = match from {
+            Some(at) => {
+                let (i, j) = (at as i32 % side, at as i32 / side);
+                let rows = self.tiles.len().div_ceil(side as usize) as i32;
+                ((j + dy).clamp(0, rows - 1) * side + (i + dx).clamp(0, side - 1)) as usize
+            }
+            None => 0,
+        };
+        if let Some(tile) = self
+            .tiles
+            .get(to)
+            .and_then(|t| t.dyn_ref::<web_sys::HtmlElement>())
+        {
+            let _ = tile.focus();
+        }
+    }
+}
+
+/// Draws a pattern's picture into its tile's canvas.
+fn paint(tile: &Element, picture: &Picture) {
+    let Some(canvas) = tile
+        .first_element_child()
+        .and_then(|c| c.dyn_into::<HtmlCanvasElement>().ok())
+    else {
+        return;
+    };
+    canvas.set_width(picture.width as u32);
+    canvas.set_height(picture.height as u32);
+    let context = canvas
+        .get_context("2d")
+        .ok()
+        .flatten()
+        .and_then(|c| c.dyn_into::<CanvasRenderingContext2d>().ok());
+    if let (Some(context), Ok(image)) = (
+        context,
+        ImageData::new_with_u8_clamped_array_and_sh(
+            Clamped(&picture.rgba),
+            picture.width as u32,
+            picture.height as u32,
+        ),
+    ) {
+        // Drawing into our own canvas cannot fail for in-range coordinates.
+        let _ = context.put_image_data(&image, 0.0, 0.0);
+    }
+}

@@ -1,0 +1,152 @@
+// Breeding: the shell among eight offspring drawn by the pool and the pictures' viewer; choosing
+// one makes it the parent of the next eight, Back returns to the generation before, the rate
+// breeds the generation again, the lineage is one link that replays it, and keeping the parent
+// opens its own shell. Every form breeds; a lineage that cannot be followed says why.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { open, session, shellTiles, waitForState } from './browser.mjs';
+
+const ROOT = new URL('../../', import.meta.url).pathname;
+const SHOTS = `${ROOT}tests/page/screenshots/`;
+mkdirSync(SHOTS, { recursive: true });
+const sessions = {};
+
+before(async () => {
+  sessions.WebGL2 = await session('WebGL2');
+  sessions.WebGPU = await session('WebGPU');
+});
+after(async () => {
+  for (const s of Object.values(sessions)) await s.close();
+});
+
+function openOn(backend, fragment, viewport = { width: 1000, height: 900 }) {
+  const { browser, base } = sessions[backend];
+  return open(browser, `${base}#${fragment}`, viewport);
+}
+
+/** Waits for every tile of the generation shown, and reads them. */
+async function generation(page) {
+  await page.waitForFunction(() => document.body.dataset.breed === 'whole', null, { timeout: 180_000 });
+  return shellTiles(page, '#breed-grid');
+}
+
+/** The grid as the README shows it. */
+async function shot(page, file) {
+  const clip = await page.evaluate(() => {
+    const tiles = [...document.querySelectorAll('#breed-grid .tile')].map((t) => t.getBoundingClientRect());
+    const [first, last] = [tiles[0], tiles[tiles.length - 1]];
+    return { x: first.left - 4, y: first.top - 4, width: last.right - first.left + 8, height: last.bottom - first.top + 8 };
+  });
+  await page.screenshot({ path: `${SHOTS}${file}`, clip });
+}
+
+for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring becomes the parent of eight more, Back returns, and the lineage is one link (${backend})`, async () => {
+  const { page, errors } = await openOn(backend, 'v=1&preset=turbinate');
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await page.click('#breed-open');
+    const first = await generation(page);
+    assert.match(await page.evaluate(() => location.hash), /&breed=0\.4$/);
+    assert.equal(first.length, 9);
+    assert.ok(first.every((t) => t.drawn && t.width === 128), 'the parent and its offspring are drawn shells');
+    assert.ok(first[4].classes.includes('parent') && /generation 1/.test(first[4].title));
+    assert.equal(new Set(first.map((t) => t.digest)).size, 9, 'nine different shells');
+    const offspring = first.filter((_, i) => i !== 4);
+    assert.ok(offspring.every((t) => /^Offspring \d: .+ → /.test(t.title)), offspring.map((t) => t.title).join('\n'));
+    await shot(page, `breed-1-${backend}.png`);
+
+    // The third offspring is chosen: it stands in the middle, its picture the same.
+    await page.click('#breed-grid .tile:nth-child(3)');
+    const second = await generation(page);
+    assert.match(await page.evaluate(() => location.hash), /&breed=0\.4\/3,0\.4$/);
+    assert.equal(second[4].digest, first[2].digest, 'offspring 3 is the parent now');
+    assert.match(second[4].title, /generation 2/);
+    assert.match(await page.textContent('#breed-status'), /Generation 2/);
+    await shot(page, `breed-2-${backend}.png`);
+    await page.click('#breed-grid .tile:nth-child(8)');
+    const third = await generation(page);
+    assert.equal(third[4].digest, second[7].digest);
+    await shot(page, `breed-3-${backend}.png`);
+    const lineage = await page.evaluate(() => location.hash);
+    assert.match(lineage, /&breed=0\.4\/3,0\.4\/7,0\.4$/);
+
+    // Back: the generation before, drawn as it was.
+    await page.click('#breed-back');
+    const again = await generation(page);
+    assert.deepEqual(again.map((t) => t.href), second.map((t) => t.href));
+    assert.deepEqual(again.map((t) => t.digest), second.map((t) => t.digest));
+
+    // The lineage's link, opened afresh, replays the same generation.
+    const { page: other, errors: otherErrors } = await openOn(backend, lineage.slice(1));
+    try {
+      const replayed = await generation(other);
+      assert.deepEqual(replayed.map((t) => t.href), third.map((t) => t.href));
+      assert.deepEqual(otherErrors, []);
+    } finally {
+      await other.close();
+    }
+
+    // A higher rate breeds the generation again, further from the parent.
+    await page.$eval('#breed-rate', (input) => {
+      input.value = '1';
+      input.dispatchEvent(new Event('change', { bubbles: true }));
+    });
+    const wilder = await generation(page);
+    assert.match(await page.evaluate(() => location.hash), /&breed=0\.4\/3,1$/);
+    assert.equal(wilder[4].href, second[4].href, 'the same parent');
+    assert.ok(wilder.filter((t, i) => i !== 4 && t.href !== second[i].href).length >= 7);
+
+    // Keeping the parent opens its own shell, its values in the panel.
+    const parent = wilder[4].href;
+    await page.keyboard.press('Escape');
+    await page.waitForFunction((h) => location.hash === h && document.body.dataset.breed === '', parent);
+    assert.ok(await page.isHidden('#breed'));
+    await waitForState(page, ['growing', 'grown']);
+    const changed = [...parent.matchAll(/&([a-z_.0-9]+)=([^&]+)/g)].filter(([, k]) => k.startsWith('form.'));
+    assert.ok(changed.length >= 1, parent);
+    for (const [, key, value] of changed) {
+      if (await page.$(`[id="field-${key}"]`)) {
+        assert.equal(await page.inputValue(`[id="field-${key}"]`), decodeURIComponent(value), key);
+      }
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test('every form breeds: chambers, branching and the Murex stand among drawn offspring', async () => {
+  for (const preset of ['kawaguchi-ammonite', 'kawaguchi-coral', 'murex-cabritii']) {
+    const { page, errors } = await openOn('WebGL2', `v=1&preset=${preset}&breed=0.4`);
+    try {
+      const tiles = await generation(page);
+      assert.equal(tiles.length, 9, preset);
+      const drawn = tiles.filter((t) => t.drawn);
+      assert.ok(drawn.length >= 6, `${preset}: ${drawn.length} of 9 drawn`);
+      for (const t of tiles.filter((t) => !t.drawn)) {
+        assert.ok(t.classes.includes('failed') && /: ./.test(t.title), `${preset}: an offspring not drawn says why`);
+      }
+      assert.ok(new Set(drawn.map((t) => t.digest)).size >= drawn.length - 1, `${preset}: the offspring differ`);
+      await shot(page, `breed-${preset}.png`);
+      assert.deepEqual(errors, []);
+    } finally {
+      await page.close();
+    }
+  }
+});
+
+test('a lineage that cannot be followed is read as far as it goes, and says why', async () => {
+  const { page, errors } = await openOn('WebGL2', 'v=1&preset=turbinate&breed=0.4/2,0.4/12,3');
+  try {
+    const tiles = await generation(page);
+    assert.equal(tiles.length, 9);
+    assert.match(await page.textContent('#breed-status'), /Generation 2/);
+    const message = await page.textContent('#message');
+    assert.match(message, /'12' is not an offspring/);
+    assert.equal(await page.evaluate(() => document.getElementById('breed-back').disabled), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
