@@ -130,6 +130,8 @@ bench: build deps-browser
 readme-pictures: build deps-browser
 	$(XVFB) node --test --test-name-pattern='morphospace.*WebGL2' tests/page/map.test.mjs
 	cp tests/page/screenshots/shape-map-WebGL2.png www/img/shape-map.png
+	$(XVFB) node --test --test-name-pattern='breeding: the chosen.*WebGL2' tests/page/breed.test.mjs
+	cp tests/page/screenshots/breed-generations-WebGL2.png www/img/breeding.png
 
 ## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…' [TURN=20]
 

@@ -4,8 +4,8 @@
 // opens its own shell. Every form breeds; a lineage that cannot be followed says why.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync } from 'node:fs';
-import { open, session, shellTiles, waitForState } from './browser.mjs';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { composeSheet, open, session, shellTiles, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -31,14 +31,21 @@ async function generation(page) {
   return shellTiles(page, '#breed-grid');
 }
 
-/** The grid as the README shows it. */
+/** The grid as the README shows it: written to `file`, and returned as PNG bytes. */
 async function shot(page, file) {
+  // No pointer or focus on a tile (the one clicked last), and the pictures painted: decoded is
+  // not yet painted, two frames later it is.
+  await page.mouse.move(0, 0);
+  await page.evaluate(() => {
+    document.activeElement?.blur();
+    return new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+  });
   const clip = await page.evaluate(() => {
     const tiles = [...document.querySelectorAll('#breed-grid .tile')].map((t) => t.getBoundingClientRect());
     const [first, last] = [tiles[0], tiles[tiles.length - 1]];
     return { x: first.left - 4, y: first.top - 4, width: last.right - first.left + 8, height: last.bottom - first.top + 8 };
   });
-  await page.screenshot({ path: `${SHOTS}${file}`, clip });
+  return [...await page.screenshot({ path: `${SHOTS}${file}`, clip })];
 }
 
 for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring becomes the parent of eight more, Back returns, and the lineage is one link (${backend})`, async () => {
@@ -54,7 +61,7 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring
     assert.equal(new Set(first.map((t) => t.digest)).size, 9, 'nine different shells');
     const offspring = first.filter((_, i) => i !== 4);
     assert.ok(offspring.every((t) => /^Offspring \d: .+ → /.test(t.title)), offspring.map((t) => t.title).join('\n'));
-    await shot(page, `breed-1-${backend}.png`);
+    const shots = [{ caption: 'Generation 1', png: await shot(page, `breed-1-${backend}.png`) }];
 
     // The third offspring is chosen: it stands in the middle, its picture the same.
     await page.click('#breed-grid .tile:nth-child(3)');
@@ -63,11 +70,13 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring
     assert.equal(second[4].digest, first[2].digest, 'offspring 3 is the parent now');
     assert.match(second[4].title, /generation 2/);
     assert.match(await page.textContent('#breed-status'), /Generation 2/);
-    await shot(page, `breed-2-${backend}.png`);
+    shots.push({ caption: 'Generation 2: the third chosen', png: await shot(page, `breed-2-${backend}.png`) });
     await page.click('#breed-grid .tile:nth-child(8)');
     const third = await generation(page);
     assert.equal(third[4].digest, second[7].digest);
-    await shot(page, `breed-3-${backend}.png`);
+    assert.ok(new Set(third.map((t) => t.digest)).size >= 8, 'the third generation is drawn, each shell its own');
+    shots.push({ caption: 'Generation 3: then the seventh', png: await shot(page, `breed-3-${backend}.png`) });
+    writeFileSync(`${SHOTS}breed-generations-${backend}.png`, await composeSheet(sessions[backend].browser, shots, 3));
     const lineage = await page.evaluate(() => location.hash);
     assert.match(lineage, /&breed=0\.4\/3,0\.4\/7,0\.4$/);
 

@@ -196,3 +196,36 @@ export async function shellTiles(page, grid = '#map-grid') {
     return { ...tile, drawn: true, width: w, box: [x1 - x0 + 1, y1 - y0 + 1], digest };
   })));
 }
+
+/**
+ * Pictures laid out on one sheet, `columns` to a row, each with its caption under it: PNG bytes.
+ * `pictures` are `{ caption, png }`, the PNG as an array of bytes.
+ */
+export async function composeSheet(browser, pictures, columns) {
+  const page = await browser.newPage();
+  try {
+    const sheet = await page.evaluate(async ({ pictures, columns }) => {
+      const bitmaps = await Promise.all(pictures.map((p) => createImageBitmap(new Blob([new Uint8Array(p.png)], { type: 'image/png' }))));
+      const [w, h] = [Math.max(...bitmaps.map((b) => b.width)), Math.max(...bitmaps.map((b) => b.height))];
+      const label = pictures.some((p) => p.caption) ? 28 : 0;
+      const rows = Math.ceil(bitmaps.length / columns);
+      const c = new OffscreenCanvas(w * Math.min(columns, bitmaps.length), (h + label) * rows);
+      const g = c.getContext('2d');
+      g.fillStyle = '#f4f1ea';
+      g.fillRect(0, 0, c.width, c.height);
+      g.fillStyle = '#2b2824';
+      g.font = '15px sans-serif';
+      g.textAlign = 'center';
+      bitmaps.forEach((b, i) => {
+        const [x, y] = [(i % columns) * w, Math.floor(i / columns) * (h + label)];
+        g.drawImage(b, x, y);
+        g.fillText(pictures[i].caption, x + w / 2, y + h + 19);
+      });
+      const blob = await c.convertToBlob({ type: 'image/png' });
+      return [...new Uint8Array(await blob.arrayBuffer())];
+    }, { pictures, columns });
+    return Buffer.from(sheet);
+  } finally {
+    await page.close();
+  }
+}

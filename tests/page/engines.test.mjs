@@ -121,6 +121,24 @@ for (const engine of ONLY) {
       }
     });
 
+    test('breeding draws the parent among its eight offspring, and a choice breeds the next', async () => {
+      const page = await open('#v=1&preset=turbinate&breed=0.4');
+      const drawn = () => [...document.querySelectorAll('#breed-grid img')].every((img) => img.complete && img.naturalWidth === 128);
+      try {
+        await page.waitFor(() => document.body.dataset.breed === 'whole', null, 600_000, 'every offspring drawn');
+        await page.waitFor(drawn, null, 60_000, 'every offspring decoded');
+        assert.equal(await page.evaluate(() => document.querySelectorAll('#breed-grid img').length), 9);
+        await shotDrawn(page, '#breed-grid', `${engine}-breed`, 'the offspring');
+        await page.click('#breed-grid .tile:nth-child(1)');
+        await page.waitFor(() => /breed=0\.4\/1,0\.4$/.test(location.hash) && document.body.dataset.breed === 'whole', null, 600_000, 'the next generation drawn');
+        await page.waitFor(drawn, null, 60_000, 'the next generation decoded');
+        assert.match(await page.evaluate(() => document.getElementById('breed-status').textContent), /Generation 2/);
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
+
     const fallbacks = [];
     for (const [form, id, extra] of SHELLS) {
       test(`${form} grows and is drawn in the viewer`, async () => {
