@@ -40,13 +40,13 @@ fn filled(map: &mut ParameterMap) {
 }
 
 #[test]
-fn axes_step_evenly_or_by_equal_ratios_and_refuse_what_cannot_span_a_map() {
+fn axes_step_evenly_or_by_equal_ratios_clamp_to_their_range_and_refuse_what_cannot_span_a_map() {
     let linear = Axis::new("sweep", "pattern.model.d_a", 0.01, 0.03, 5).unwrap();
     assert_eq!(linear.values, [0.01, 0.015, 0.02, 0.025, 0.03]);
     let ratios = Axis::new("sweep", "pattern.model.sigma", 0.0001, 0.01, 3).unwrap();
     assert_eq!(ratios.values, [0.0001, 0.001, 0.01]);
     for (key, from, to, count, why) in [
-        ("pattern.model.d_a", 0.01, 0.9, 8, "leaves that range"),
+        ("pattern.model.d_a", 0.9, 1.5, 8, "lies beyond it"),
         ("pattern.model.d_a", 0.01, 0.01, 8, "two different numbers"),
         ("pattern.cells", 10.0, 20.0, 8, "not a parameter"),
         (
@@ -57,12 +57,20 @@ fn axes_step_evenly_or_by_equal_ratios_and_refuse_what_cannot_span_a_map() {
             "not a parameter of a sweep",
         ),
         ("form.curve.closed", 0.0, 1.0, 8, "not a parameter"),
-        ("form.spiral.whorls", 1.0, 40.0, 8, "leaves that range"),
         ("pattern.model.d_a", 0.01, 0.02, 1, "at least two values"),
     ] {
         let e = Axis::new("sweep", key, from, to, count).unwrap_err();
         assert!(e.contains(why), "{key}: {e}");
     }
+    // A range beyond the field's is spread within it, and says so.
+    let whorls = Axis::new("sweep", "form.spiral.whorls", 1.0, 40.0, 3).unwrap();
+    assert_eq!(whorls.values, [1.0, 15.5, 30.0]);
+    let note = whorls.note.unwrap();
+    assert!(
+        note.contains("runs from 0.05 to 30") && note.contains("1 to 40 was clamped to 1 to 30"),
+        "{note}"
+    );
+    assert_eq!(linear.note, None);
     let d_a = field("sweep", "pattern.model.d_a").unwrap();
     assert_eq!(
         Axis::around("sweep", d_a, 0.015, 3).unwrap().values,

@@ -35,12 +35,15 @@ const PICTURE_WIDTH: usize = 100;
 pub struct Axis {
     pub field: &'static Field,
     pub values: Vec<f64>,
+    /// What was clamped: a range asked beyond the field's limits is spread within them.
+    pub note: Option<String>,
 }
 
 impl Axis {
     /// `count` values of the numeric field `key` of a shell whose form is of `kind`, from
-    /// `from` to `to` (both within its range), in equal steps, or equal ratios on a logarithmic
-    /// field; each rounded as the panel shows it (to a whole number on an integer field).
+    /// `from` to `to` (clamped to its range, and said in [`Self::note`]), in equal steps, or
+    /// equal ratios on a logarithmic field; each rounded as the panel shows it (to a whole
+    /// number on an integer field).
     pub fn new(kind: &str, key: &str, from: f64, to: f64, count: usize) -> Result<Self, String> {
         let field = mappable(kind).find(|f| f.key == key).ok_or_else(|| {
             format!("'{key}' is not a parameter of a {kind} shell's form or pattern model")
@@ -53,15 +56,25 @@ impl Axis {
         if !(from.is_finite() && to.is_finite()) || from == to {
             return Err(format!("{key} needs two different numbers to span a map"));
         }
-        if [from, to].iter().any(|v| !(min..=max).contains(v)) {
+        let (asked_from, asked_to) = (from, to);
+        let (from, to) = (from.clamp(min, max), to.clamp(min, max));
+        let range = format!("{key} runs from {} to {}", display(min), display(max));
+        if from == to {
             return Err(format!(
-                "{key} runs from {} to {}, and {} to {} leaves that range",
-                display(min),
-                display(max),
-                display(from),
-                display(to)
+                "{range}, and {} to {} lies beyond it",
+                display(asked_from),
+                display(asked_to)
             ));
         }
+        let note = (from != asked_from || to != asked_to).then(|| {
+            format!(
+                "{range}: {} to {} was clamped to {} to {}",
+                display(asked_from),
+                display(asked_to),
+                display(from),
+                display(to)
+            )
+        });
         if log && from.min(to) <= 0.0 {
             return Err(format!("{key} is spread by ratios and needs positive ends"));
         }
@@ -83,7 +96,11 @@ impl Axis {
                 }
             })
             .collect();
-        Ok(Self { field, values })
+        Ok(Self {
+            field,
+            values,
+            note,
+        })
     }
 
     /// The value nearest `value`, by ratios on a logarithmic field, if `value` lies within the

@@ -264,12 +264,18 @@ impl MapView {
         } else {
             format!("{} rows each", map.rows)
         };
+        let clamped: Vec<String> = [&map.x.note, &map.y.note]
+            .into_iter()
+            .flatten()
+            .map(|note| format!(" {note}."))
+            .collect();
         set_text(
             "map-status",
             &format!(
-                "{} across, {} down; {each}. Choose a tile to open that shell.",
+                "{} across, {} down; {each}. Choose a tile to open that shell.{}",
                 symbol(map.x.field),
                 symbol(map.y.field),
+                clamped.concat()
             ),
         );
         for index in map.to_compute() {

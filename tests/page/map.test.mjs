@@ -169,9 +169,14 @@ test('tiles whose values cannot grow are hatched with the reason, and the others
       assert.match(t.title, /form\.spiral\.whorls: .* whorls at λᵣ/);
     }
     assert.ok(tiles.filter((t) => !t.classes.includes('failed')).every((t) => t.drawn));
+    // A range beyond the field's is clamped to it, and says so; one wholly beyond is refused.
     await page.fill('#map-x-to', '9');
     await page.click('#map-draw');
-    assert.match(await page.textContent('#map-status'), /runs from 0\.8 to 3/);
+    assert.match(await page.textContent('#map-status'), /runs from 0\.8 to 3: 1\.003 to 9 was clamped to 1\.003 to 3/);
+    assert.notEqual(await page.evaluate(() => document.body.dataset.map), 'refused');
+    await page.fill('#map-x-from', '5');
+    await page.click('#map-draw');
+    assert.match(await page.textContent('#map-status'), /runs from 0\.8 to 3, and 5 to 9 lies beyond it/);
     assert.equal(await page.evaluate(() => document.body.dataset.map), 'refused');
     assert.deepEqual(errors, []);
   } finally {
