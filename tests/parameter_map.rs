@@ -6,7 +6,9 @@
 use seashells_core::forms::sweep::raup::Raup;
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};
-use seashells_core::share::parameter_map::{Axis, ParameterMap, first_axes, parameters};
+use seashells_core::share::parameter_map::{
+    Axis, PATIENCE_S, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
+};
 use seashells_core::share::tile::Tile;
 use seashells_core::spec::fields::field;
 use seashells_core::spec::form::Form;
@@ -333,4 +335,24 @@ fn raups_map_spans_w_and_t_at_the_shells_d_each_tile_a_self_similar_shell() {
     assert_eq!(far.tile(0, 0).failure, None);
     let why = far.tile(1, 0).failure.as_deref().unwrap();
     assert!(why.contains("form.spiral.r0"), "{why}");
+}
+
+#[test]
+fn a_machine_that_draws_shells_slowly_gets_fewer_tiles_within_the_patience() {
+    assert_eq!(side_for(None, SIDE), SIDE, "nothing measured yet");
+    assert_eq!(side_for(Some(0.18), SIDE), SIDE, "64 shells in 12 s");
+    assert_eq!(side_for(Some(0.5), SIDE), 6, "36 shells in 18 s");
+    assert_eq!(
+        side_for(Some(3.0), SIDE),
+        PHONE_SIDE,
+        "never fewer than a phone's"
+    );
+    assert_eq!(side_for(Some(3.0), PHONE_SIDE), PHONE_SIDE);
+    for s in [0.05, 0.3, 0.4, 0.6, 0.8] {
+        let side = side_for(Some(s), SIDE);
+        assert!(
+            side == PHONE_SIDE || (side * side) as f64 * s <= PATIENCE_S,
+            "{s} s a shell: {side} × {side}"
+        );
+    }
 }

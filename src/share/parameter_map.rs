@@ -27,6 +27,22 @@ use std::collections::BTreeMap;
 pub const SIDE: usize = 8;
 /// Tiles along each side of the map on a phone (the style sheet's narrow layout: five columns).
 pub const PHONE_SIDE: usize = 5;
+/// Longest a map of shells should take to fill, in seconds: on a machine that draws shells
+/// slowly the next map has fewer tiles.
+pub const PATIENCE_S: f64 = 20.0;
+
+/// Tiles along each side of a map of shells on a machine that drew the last map's shells at
+/// `seconds_per_shell` each: `widest`, or fewer (down to [`PHONE_SIDE`]) so that the map fills
+/// within [`PATIENCE_S`].
+pub fn side_for(seconds_per_shell: Option<f64>, widest: usize) -> usize {
+    match seconds_per_shell {
+        Some(s) if s > 0.0 => {
+            ((PATIENCE_S / s).sqrt().floor() as usize).clamp(PHONE_SIDE.min(widest), widest)
+        }
+        _ => widest,
+    }
+}
+
 /// Widest picture of a tile, in pixels: wider patterns are averaged down to it.
 const PICTURE_WIDTH: usize = 100;
 

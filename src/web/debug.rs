@@ -1,7 +1,7 @@
 //! Test-only hooks, exported from the wasm module for the page tests
-//! (`tests/page/survive.test.mjs`, `tests/page/workers.test.mjs`) to force what a user's
-//! machine does rarely: a destroyed graphics device, a lost WebGL context, a panic, a worker
-//! that throws. They are
+//! (`tests/page/survive.test.mjs`, `tests/page/workers.test.mjs`, `tests/page/map.test.mjs`) to
+//! force what a user's machine does rarely: a destroyed graphics device, a lost WebGL context, a
+//! panic, a worker that throws, shells drawn slowly. They are
 //! not part of the page's interface; calling one does to the page what the event itself would,
 //! and the page must survive it.
 
@@ -30,6 +30,7 @@ thread_local! {
     static FORWARD: RefCell<Option<Forward>> = const { RefCell::new(None) };
     static PANIC_WHILE_GROWING: Cell<bool> = const { Cell::new(false) };
     static CRASH_ON_FILL: Cell<bool> = const { Cell::new(false) };
+    static PACE: Cell<Option<f64>> = const { Cell::new(None) };
 }
 
 /// Remembers how to reach the page's devices, for [`debug_destroy_device`] and
@@ -121,4 +122,16 @@ pub fn debug_crash_worker_on_fill() {
 /// Whether a test asked with [`debug_crash_worker_on_fill`] (once).
 pub fn crash_on_fill_asked() -> bool {
     CRASH_ON_FILL.with(|c| c.replace(false))
+}
+
+/// Test-only: the next map of shells is drawn as if this machine had drawn the last map's
+/// shells at `seconds` each, as a slow machine would (`tests/page/map.test.mjs`).
+#[wasm_bindgen]
+pub fn debug_pace_of_shells(seconds: f64) {
+    PACE.with(|p| p.set(Some(seconds)));
+}
+
+/// The pace a test asked for with [`debug_pace_of_shells`] (once).
+pub fn forced_pace() -> Option<f64> {
+    PACE.with(Cell::take)
 }

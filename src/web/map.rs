@@ -4,6 +4,8 @@
 //! shell. Over two parameters of the pattern model a tile is the planar pattern; over one of the
 //! form it is the whole shell, grown and drawn as a gallery card's picture is.
 
+use super::clock::now;
+use super::debug;
 use super::dom::{append, attr, clear, create, typed};
 use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
@@ -12,7 +14,7 @@ use super::tile_grid::{Shows, TileGrid};
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::share::parameter_map::{
-    Axis, PHONE_SIDE, ParameterMap, Picture, SIDE, first_axes, parameters,
+    Axis, PHONE_SIDE, ParameterMap, Picture, SIDE, first_axes, parameters, side_for,
 };
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
@@ -78,8 +80,9 @@ impl AxisControls {
         }
     }
 
-    /// The axis the controls describe, for a shell whose form is of `kind`.
-    fn axis(&self, kind: &str) -> Result<Axis, String> {
+    /// The axis the controls describe, `count` values of it, for a shell whose form is of
+    /// `kind`.
+    fn axis(&self, kind: &str, count: usize) -> Result<Axis, String> {
         let number = |input: &HtmlInputElement| {
             input
                 .value()
@@ -92,7 +95,7 @@ impl AxisControls {
             &self.select.value(),
             number(&self.from)?,
             number(&self.to)?,
-            side(),
+            count,
         )
     }
 }
@@ -106,6 +109,11 @@ pub struct MapView {
     parameters: Vec<(&'static Field, f64)>,
     /// The kind of form of the shell mapped.
     kind: &'static str,
+    /// When the map of shells being filled was started, and how many shells the pool was asked
+    /// for: how fast this machine draws them is measured once it is whole.
+    filling_since: Option<(f64, usize)>,
+    /// Seconds a shell took to be grown and drawn, over the last map of shells filled.
+    pace: Option<f64>,
 }
 
 impl Default for MapView {
@@ -116,6 +124,8 @@ impl Default for MapView {
             grid: TileGrid::new("map-grid"),
             parameters: Vec::new(),
             kind: "",
+            filling_since: None,
+            pace: None,
         }
     }
 }
@@ -199,13 +209,26 @@ impl MapView {
         let (Some(x), Some(y)) = (AxisControls::find("x"), AxisControls::find("y")) else {
             return;
         };
-        let axes = x.axis(self.kind).and_then(|x| Ok((x, y.axis(self.kind)?)));
-        let (x, y) = match axes {
+        let axes = |count| {
+            x.axis(self.kind, count)
+                .and_then(|x| Ok((x, y.axis(self.kind, count)?)))
+        };
+        let (x, y) = match axes(side()) {
             Ok((x, y)) if x.field.key == y.field.key => {
                 return self.refuse("Choose two different parameters.");
             }
             Ok(axes) => axes,
             Err(e) => return self.refuse(&format!("{e}.")),
+        };
+        // A machine that drew the last map's shells slowly gets fewer of them.
+        if let Some(pace) = debug::forced_pace() {
+            self.pace = Some(pace);
+        }
+        let count = side_for(self.pace, side());
+        let fewer = (x.shapes() || y.shapes()) && count < side();
+        let (x, y) = match fewer.then(|| axes(count)) {
+            Some(Ok(axes)) => axes,
+            _ => (x, y),
         };
         let mut map = ParameterMap::new(preset, spec, x, y);
         if map.shells() && !pictures.draws() {
@@ -269,16 +292,25 @@ impl MapView {
             .flatten()
             .map(|note| format!(" {note}."))
             .collect();
+        let slow = match self.pace {
+            Some(pace) if fewer => format!(
+                " {count} × {count} tiles: this machine drew the last map's shells at {pace:.1} s \
+                 each."
+            ),
+            _ => String::new(),
+        };
         set_text(
             "map-status",
             &format!(
-                "{} across, {} down; {each}. Choose a tile to open that shell.{}",
+                "{} across, {} down; {each}. Choose a tile to open that shell.{}{slow}",
                 symbol(map.x.field),
                 symbol(map.y.field),
                 clamped.concat()
             ),
         );
-        for index in map.to_compute() {
+        let asked = map.to_compute();
+        self.filling_since = map.shells().then(|| (now(), asked.len()));
+        for index in asked {
             let job = self.grid.job(index);
             let tile = &map.tiles()[index];
             if map.shells() {
@@ -342,6 +374,12 @@ impl MapView {
         };
         change(map, index);
         self.grid.show(index, &map.tiles()[index]);
+        if map.finished()
+            && let Some((since, asked)) = self.filling_since.take()
+            && asked > 0
+        {
+            self.pace = Some((now() - since) / 1000.0 / asked as f64);
+        }
         signal("map", if map.finished() { "whole" } else { "filling" });
     }
 }

@@ -229,3 +229,11 @@ export async function composeSheet(browser, pictures, columns) {
     await page.close();
   }
 }
+
+/** Calls one of the wasm module's test-only hooks (src/web/debug.rs) in the page. */
+export function hook(page, name, ...args) {
+  return page.evaluate(async ([name, args]) => {
+    const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
+    module[name](...args);
+  }, [name, args]);
+}

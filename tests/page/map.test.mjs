@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { open, session, shellTiles, waitForState } from './browser.mjs';
+import { hook, open, session, shellTiles, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -141,6 +141,28 @@ test('on a phone the map has 5 × 5 tiles, every one a drawn shell', async () =>
     const right = await page.evaluate(() => Math.max(...[...document.querySelectorAll('#map, #map *')].map((e) => e.getBoundingClientRect().right)));
     assert.ok(right <= 390, `the map fits the screen's width: its right edge at ${right}`);
     await page.screenshot({ path: `${SHOTS}shape-map-phone.png` });
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test('a machine that draws shells slowly gets fewer of them: 5 × 5 at a second a shell', async () => {
+  const { page, errors } = await openOn('WebGL2', 'v=1&preset=turbinate');
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await hook(page, 'debug_pace_of_shells', 1.0);
+    await page.click('#map-open');
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 180_000 });
+    const tiles = await shellTiles(page);
+    assert.equal(tiles.length, 25);
+    assert.ok(tiles.every((t) => t.drawn));
+    assert.match(await page.textContent('#map-status'), /5 × 5 tiles: this machine drew the last map's shells at 1\.0 s each/);
+    // Its own pace, measured as the map filled, is this machine's: 64 shells again.
+    await page.click('#map-draw');
+    await page.waitForFunction(() => document.body.dataset.map === 'whole', null, { timeout: 180_000 });
+    assert.equal((await shellTiles(page)).length, 64);
+    assert.doesNotMatch(await page.textContent('#map-status'), /tiles: this machine/);
     assert.deepEqual(errors, []);
   } finally {
     await page.close();

@@ -13,7 +13,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { finishGrowth, session, open, waitForState, measureCanvas, measurePng, differing, cardPictures } from './browser.mjs';
+import { finishGrowth, session, open, waitForState, measureCanvas, measurePng, differing, cardPictures, hook } from './browser.mjs';
 import { nativeMesh, nativePattern } from './native.mjs';
 
 const SHOTS = new URL('./screenshots/', import.meta.url).pathname;
@@ -22,14 +22,6 @@ mkdirSync(SHOTS, { recursive: true });
 // on the way.
 const LINK = '#v=1&preset=stripes&growth.speed=8';
 const PAUSE_AT = 150;
-
-/** Calls one of the wasm module's test-only hooks (src/web/debug.rs) in the page. */
-function hook(page, name, ...args) {
-  return page.evaluate(async ([name, args]) => {
-    const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
-    module[name](...args);
-  }, [name, args]);
-}
 
 /** The page's hashes of the finished shell. */
 async function finished(page) {
