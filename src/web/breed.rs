@@ -7,7 +7,7 @@
 use super::dom::attr;
 use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
-use super::tile_grid::{Shows, TileGrid};
+use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::share::breeding::{Breeding, PARENT};
@@ -145,14 +145,7 @@ impl BreedView {
                 breeding.generation()
             ),
         );
-        signal(
-            "breed",
-            if breeding.finished() {
-                "whole"
-            } else {
-                "filling"
-            },
-        );
+        signal_filled("breed", breeding.finished());
         self.breeding = Some(breeding);
         (shell.0, shell.1, problems)
     }
@@ -216,13 +209,6 @@ impl BreedView {
         };
         breeding.shown(index, result);
         self.grid.show(index, &breeding.tiles()[index]);
-        signal(
-            "breed",
-            if breeding.finished() {
-                "whole"
-            } else {
-                "filling"
-            },
-        );
+        signal_filled("breed", breeding.finished());
     }
 }

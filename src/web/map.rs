@@ -10,7 +10,7 @@ use super::dom::{append, attr, clear, create, typed};
 use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
 use super::panel::label;
-use super::tile_grid::{Shows, TileGrid};
+use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::share::parameter_map::{
@@ -330,7 +330,7 @@ impl MapView {
                 self.grid.show(index, tile);
             }
         }
-        signal("map", if map.finished() { "whole" } else { "filling" });
+        signal_filled("map", map.finished());
         self.map = Some(map);
     }
 
@@ -380,7 +380,7 @@ impl MapView {
         {
             self.pace = Some((now() - since) / 1000.0 / asked as f64);
         }
-        signal("map", if map.finished() { "whole" } else { "filling" });
+        signal_filled("map", map.finished());
     }
 }
 

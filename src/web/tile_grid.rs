@@ -4,7 +4,7 @@
 //! grid, finds no tile here.
 
 use super::dom::{append, attr, clear, create, typed};
-use super::page::element;
+use super::page::{element, signal};
 use crate::share::parameter_map::Picture;
 use crate::share::tile::Tile;
 use std::cell::Cell;
@@ -152,6 +152,12 @@ impl TileGrid {
             let _ = tile.focus();
         }
     }
+}
+
+/// Tells the page tests whether the tiles of a grid are all drawn (`data-<key>`: whole, or
+/// filling).
+pub fn signal_filled(key: &str, finished: bool) {
+    signal(key, if finished { "whole" } else { "filling" });
 }
 
 /// Draws a pattern's picture into its tile's canvas.

@@ -2,28 +2,16 @@
 // one makes it the parent of the next eight, Back returns to the generation before, the rate
 // breeds the generation again, the lineage is one link that replays it, and keeping the parent
 // opens its own shell. Every form breeds; a lineage that cannot be followed says why.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { composeSheet, open, session, shellTiles, waitForState } from './browser.mjs';
+import { browsers, composeSheet, shellTiles, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
-const sessions = {};
-
-before(async () => {
-  sessions.WebGL2 = await session('WebGL2');
-  sessions.WebGPU = await session('WebGPU');
-});
-after(async () => {
-  for (const s of Object.values(sessions)) await s.close();
-});
-
-function openOn(backend, fragment, viewport = { width: 1000, height: 900 }) {
-  const { browser, base } = sessions[backend];
-  return open(browser, `${base}#${fragment}`, viewport);
-}
+const { sessions, openOn: openAt } = browsers(['WebGL2', 'WebGPU']);
+const openOn = (backend, fragment) => openAt(backend, fragment, { width: 1000, height: 900 });
 
 /** Waits for every tile of the generation shown, and reads them. */
 async function generation(page) {

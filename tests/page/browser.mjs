@@ -2,6 +2,7 @@
 // graphics backend on these machines (see ../shared/TOOLCHAIN.md), and helpers that read the
 // page's own signals and its pixels.
 import { readdirSync } from 'node:fs';
+import { after, before } from 'node:test';
 import { PNG } from 'pngjs';
 import { chromium } from 'playwright-core';
 import { serve } from './serve.mjs';
@@ -236,4 +237,23 @@ export function hook(page, name, ...args) {
     const module = await import(new URL('pkg/seashells.js', document.baseURI).href);
     module[name](...args);
   }, [name, args]);
+}
+
+/**
+ * A browser for each backend, opened before a file's tests and closed after them: `sessions`
+ * by backend, and `openOn(backend, fragment, viewport)`, which opens the page at `#fragment`.
+ */
+export function browsers(backends) {
+  const sessions = {};
+  before(async () => {
+    for (const backend of backends) sessions[backend] = await session(backend);
+  });
+  after(async () => {
+    for (const s of Object.values(sessions)) await s.close();
+  });
+  const openOn = (backend, fragment, viewport) => {
+    const { browser, base } = sessions[backend];
+    return open(browser, `${base}#${fragment}`, viewport);
+  };
+  return { sessions, openOn };
 }

@@ -2,30 +2,16 @@
 // parameter of the form, a morphospace of whole shells drawn by the pool and the pictures'
 // viewer. Each tile is a link that opens its shell, the current shell is marked, the arrow keys
 // walk the grid, and tiles whose values cannot grow are hatched with the reason.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { hook, open, session, shellTiles, waitForState } from './browser.mjs';
+import { browsers, hook, shellTiles, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
 /** A browser per backend: the map of shells is drawn by either. */
-const sessions = {};
-
-before(async () => {
-  sessions.WebGL2 = await session('WebGL2');
-  sessions.WebGPU = await session('WebGPU');
-});
-after(async () => {
-  for (const s of Object.values(sessions)) await s.close();
-});
-
-/** Opens `fragment` in a new page of the browser for `backend`. */
-function openOn(backend, fragment, viewport) {
-  const { browser, base } = sessions[backend];
-  return open(browser, `${base}#${fragment}`, viewport);
-}
+const { openOn } = browsers(['WebGL2', 'WebGPU']);
 
 test('the parameter map fills a grid of patterns, and a chosen tile opens that shell with its two values', async () => {
   const { page, errors } = await openOn('WebGL2', 'v=1&preset=oliva-porphyria');
