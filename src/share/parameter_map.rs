@@ -9,7 +9,7 @@
 //! pattern. Over a parameter of the form it is a morphospace, as Raup's cube of coiling
 //! parameters is: each tile is the whole shell, grown and drawn as a gallery picture is.
 
-use super::tile::{Tile, Variant};
+use super::tile::{Picture, Tile, Variant};
 use crate::forms::sweep::raup::{Coordinate, Raup};
 use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
@@ -19,7 +19,6 @@ use crate::spec::Problem;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, RAUP, display, fields};
 use crate::spec::form::Form;
-use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
 
@@ -263,48 +262,6 @@ pub fn first_axes(parameters: &[(&'static Field, f64)]) -> (usize, usize) {
         .find(|&i| !parameters[i].0.symbol.is_empty())
         .unwrap_or(usize::from(x == 0));
     (x, y)
-}
-
-/// A tile's picture: RGBA pixels, each the mean of a block of cells and rows.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Picture {
-    pub width: usize,
-    pub height: usize,
-    #[serde(with = "crate::pod_bytes")]
-    pub rgba: Vec<u8>,
-}
-
-impl Picture {
-    /// The pattern of `run` as the planar view shows it, averaged over blocks of `block` ×
-    /// `block` cells and rows.
-    fn of(run: &PatternRun, block: usize) -> Self {
-        let (cells, rows, rgba) = (run.cells(), run.rows(), run.planar());
-        let (width, height) = (cells.div_ceil(block), rows.div_ceil(block));
-        let mut out = vec![0u8; width * height * 4];
-        for (py, line) in out.chunks_exact_mut(width * 4).enumerate() {
-            for (px, pixel) in line.chunks_exact_mut(4).enumerate() {
-                let mut sum = [0u32; 4];
-                let mut count = 0;
-                for r in py * block..((py + 1) * block).min(rows) {
-                    for c in px * block..((px + 1) * block).min(cells) {
-                        let at = (r * cells + c) * 4;
-                        for (s, &v) in sum.iter_mut().zip(&rgba[at..at + 4]) {
-                            *s += u32::from(v);
-                        }
-                        count += 1;
-                    }
-                }
-                for (p, s) in pixel.iter_mut().zip(sum) {
-                    *p = ((s + count / 2) / count) as u8;
-                }
-            }
-        }
-        Self {
-            width,
-            height,
-            rgba: out,
-        }
-    }
 }
 
 /// One tile's pattern being computed, a row at a time: `rows` rows of a shell's pattern, kept

@@ -3,11 +3,12 @@
 //! picture once computed, and what became of the values that made it.
 
 use super::link;
-use super::parameter_map::Picture;
 use crate::forms::sweep::raup::whorls_apart;
+use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
 use crate::spec::form::Form;
 use crate::spec::{Problem, ShellSpec};
+use serde::{Deserialize, Serialize};
 
 /// One tile: its shell, its link, and its picture once computed (or why there is none).
 pub struct Tile {
@@ -114,6 +115,48 @@ impl Variant {
             picture: None,
             shown: false,
             apart,
+        }
+    }
+}
+
+/// A tile's picture: RGBA pixels, each the mean of a block of cells and rows.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Picture {
+    pub width: usize,
+    pub height: usize,
+    #[serde(with = "crate::pod_bytes")]
+    pub rgba: Vec<u8>,
+}
+
+impl Picture {
+    /// The pattern of `run` as the planar view shows it, averaged over blocks of `block` ×
+    /// `block` cells and rows.
+    pub(crate) fn of(run: &PatternRun, block: usize) -> Self {
+        let (cells, rows, rgba) = (run.cells(), run.rows(), run.planar());
+        let (width, height) = (cells.div_ceil(block), rows.div_ceil(block));
+        let mut out = vec![0u8; width * height * 4];
+        for (py, line) in out.chunks_exact_mut(width * 4).enumerate() {
+            for (px, pixel) in line.chunks_exact_mut(4).enumerate() {
+                let mut sum = [0u32; 4];
+                let mut count = 0;
+                for r in py * block..((py + 1) * block).min(rows) {
+                    for c in px * block..((px + 1) * block).min(cells) {
+                        let at = (r * cells + c) * 4;
+                        for (s, &v) in sum.iter_mut().zip(&rgba[at..at + 4]) {
+                            *s += u32::from(v);
+                        }
+                        count += 1;
+                    }
+                }
+                for (p, s) in pixel.iter_mut().zip(sum) {
+                    *p = ((s + count / 2) / count) as u8;
+                }
+            }
+        }
+        Self {
+            width,
+            height,
+            rgba: out,
         }
     }
 }

@@ -14,8 +14,9 @@ use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::share::parameter_map::{
-    Axis, PHONE_SIDE, ParameterMap, Picture, SIDE, first_axes, parameters, side_for,
+    Axis, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
 };
+use crate::share::tile::Picture;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
 use crate::work::message::Request;

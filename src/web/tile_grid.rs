@@ -5,7 +5,7 @@
 
 use super::dom::{append, attr, clear, create, typed};
 use super::page::{element, signal};
-use crate::share::parameter_map::Picture;
+use crate::share::tile::Picture;
 use crate::share::tile::Tile;
 use std::cell::Cell;
 use wasm_bindgen::{Clamped, JsCast};
