@@ -6,7 +6,7 @@
 use seashells_core::generator::Generator;
 use seashells_core::presets::{preset, presets};
 use seashells_core::share::breeding::{Breeding, PARENT};
-use seashells_core::share::lineage::{Lineage, OFFSPRING, RATES};
+use seashells_core::share::lineage::{Lineage, MAX_CHOICES, OFFSPRING, RATES};
 use seashells_core::share::link::{decode, flatten};
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::Kind;
@@ -145,6 +145,17 @@ fn a_bad_lineage_is_read_as_far_as_it_goes_and_says_why() {
             .to_string()
             .contains("'fast' is not a mutation rate")
     );
+    // A lineage too long to replay at once is followed as far as the cap.
+    let long = vec!["0.4/1"; MAX_CHOICES + 50].join(",") + ",0.4";
+    let (read, problems) = Lineage::parse(&long);
+    assert_eq!(read.chosen.len(), MAX_CHOICES);
+    assert!(
+        problems[0].to_string().contains("more than 100 choices"),
+        "{problems:?}"
+    );
+    let turbinate = preset("turbinate").unwrap();
+    let (far, _) = Breeding::new(turbinate, &turbinate.spec, &read);
+    assert_eq!(far.generation(), MAX_CHOICES + 1);
     let opened = decode("v=1&preset=turbinate&breed=0.4/x");
     assert_eq!(opened.lineage.unwrap().chosen, []);
     assert_eq!(opened.problems.len(), 1, "{:?}", opened.problems);

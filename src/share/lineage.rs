@@ -14,6 +14,8 @@ pub const OFFSPRING: usize = 8;
 /// deviation of a step, in halves of the span the parameter map gives the value.
 pub const RATE: f64 = 0.4;
 pub const RATES: (f64, f64) = (0.05, 1.0);
+/// Most choices a lineage follows: each is replayed on the page's thread when its link opens.
+pub const MAX_CHOICES: usize = 100;
 /// The choices made from a first shell: each the rate a generation was bred at and the
 /// offspring chosen from it (1 to [`OFFSPRING`]); and the rate of the generation shown.
 #[derive(Clone, Debug, PartialEq)]
@@ -65,6 +67,13 @@ impl Lineage {
         let items: Vec<&str> = text.split(',').collect();
         for (i, item) in items.iter().enumerate() {
             let last = i + 1 == items.len();
+            if lineage.chosen.len() == MAX_CHOICES && !last {
+                problems.push(Problem::new(
+                    KEY,
+                    format!("the lineage has more than {MAX_CHOICES} choices; followed the first {MAX_CHOICES}"),
+                ));
+                break;
+            }
             match item.split_once('/') {
                 Some((r, child)) => {
                     let Some(r) = rate(r, &mut problems) else {
