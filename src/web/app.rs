@@ -633,6 +633,7 @@ impl App {
             return;
         };
         self.close_map();
+        self.close_breeding();
         let rows = spec.growth.rows.max(2) as usize;
         let speed = spec.growth.speed;
         self.load(preset, spec, false);
