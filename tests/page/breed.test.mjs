@@ -13,9 +13,15 @@ mkdirSync(SHOTS, { recursive: true });
 const { sessions, openOn: openAt } = browsers(['WebGL2', 'WebGPU']);
 const openOn = (backend, fragment) => openAt(backend, fragment, { width: 1000, height: 900 });
 
-/** Waits for every tile of the generation shown, and reads them. */
-async function generation(page) {
-  await page.waitForFunction(() => document.body.dataset.breed === 'whole', null, { timeout: 180_000 });
+/**
+ * Waits for every tile of generation `n` (any, without `n`), the first offspring's link ending
+ * with `ending` if given, and reads the tiles.
+ */
+async function generation(page, n, ending = '') {
+  await page.waitForFunction(([n, ending]) => document.body.dataset.breed === 'whole'
+    && (n === null || document.querySelector('#breed-grid .parent')?.title.includes(`generation ${n}:`))
+    && (ending === '' || document.querySelector('#breed-grid .tile')?.getAttribute('href')?.endsWith(ending)),
+  [n ?? null, ending], { timeout: 180_000 });
   return shellTiles(page, '#breed-grid');
 }
 
@@ -41,7 +47,7 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring
   try {
     await waitForState(page, ['growing', 'grown']);
     await page.click('#breed-open');
-    const first = await generation(page);
+    const first = await generation(page, 1);
     assert.match(await page.evaluate(() => location.hash), /&breed=0\.4$/);
     assert.equal(first.length, 9);
     assert.ok(first.every((t) => t.drawn && t.width === 128), 'the parent and its offspring are drawn shells');
@@ -53,14 +59,14 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring
 
     // The third offspring is chosen: it stands in the middle, its picture the same.
     await page.click('#breed-grid .tile:nth-child(3)');
-    const second = await generation(page);
+    const second = await generation(page, 2);
     assert.match(await page.evaluate(() => location.hash), /&breed=0\.4\/3,0\.4$/);
     assert.equal(second[4].digest, first[2].digest, 'offspring 3 is the parent now');
     assert.match(second[4].title, /generation 2/);
     assert.match(await page.textContent('#breed-status'), /Generation 2/);
     shots.push({ caption: 'Generation 2: the third chosen', png: await shot(page, `breed-2-${backend}.png`) });
     await page.click('#breed-grid .tile:nth-child(8)');
-    const third = await generation(page);
+    const third = await generation(page, 3);
     assert.equal(third[4].digest, second[7].digest);
     assert.ok(new Set(third.map((t) => t.digest)).size >= 8, 'the third generation is drawn, each shell its own');
     shots.push({ caption: 'Generation 3: then the seventh', png: await shot(page, `breed-3-${backend}.png`) });
@@ -70,14 +76,24 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring
 
     // Back: the generation before, drawn as it was.
     await page.click('#breed-back');
-    const again = await generation(page);
+    const again = await generation(page, 2);
     assert.deepEqual(again.map((t) => t.href), second.map((t) => t.href));
     assert.deepEqual(again.map((t) => t.digest), second.map((t) => t.digest));
+
+    // The arrow keys walk from the parent, Enter chooses; the browser's Back returns.
+    await page.keyboard.press('ArrowLeft');
+    assert.equal(await page.evaluate(() => document.activeElement.getAttribute('href')), second[3].href);
+    await page.keyboard.press('Enter');
+    await page.waitForFunction(() => /&breed=0\.4\/3,0\.4\/4,0\.4$/.test(location.hash));
+    assert.equal((await generation(page, 3))[4].digest, second[3].digest);
+    await page.goBack();
+    await page.waitForFunction(() => /&breed=0\.4\/3,0\.4$/.test(location.hash));
+    assert.deepEqual((await generation(page, 2)).map((t) => t.href), second.map((t) => t.href));
 
     // The lineage's link, opened afresh, replays the same generation.
     const { page: other, errors: otherErrors } = await openOn(backend, lineage.slice(1));
     try {
-      const replayed = await generation(other);
+      const replayed = await generation(other, 3);
       assert.deepEqual(replayed.map((t) => t.href), third.map((t) => t.href));
       assert.deepEqual(otherErrors, []);
     } finally {
@@ -89,7 +105,7 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`breeding: the chosen offspring
       input.value = '1';
       input.dispatchEvent(new Event('change', { bubbles: true }));
     });
-    const wilder = await generation(page);
+    const wilder = await generation(page, 2, ',1/1,1');
     assert.match(await page.evaluate(() => location.hash), /&breed=0\.4\/3,1$/);
     assert.equal(wilder[4].href, second[4].href, 'the same parent');
     assert.ok(wilder.filter((t, i) => i !== 4 && t.href !== second[i].href).length >= 7);
