@@ -189,20 +189,20 @@ fn seed_of(spec: &ShellSpec, link: &str) -> u64 {
     spec.seed ^ hash.value()
 }
 
-/// Offspring `child` (1 to 8) of `parent` (a variant of `preset`) at `rate`: one to three of its
-/// genes, chosen at random (a section, then a gene in it), each moved a normal step times
-/// `rate` (with what hides it); drawn again, up to [`TRIES`] times, while the link refuses the
-/// values or its repair undoes them. With the changes it made.
+/// Offspring `child` (1 to 8) of `parent` (a variant of `preset`, whose [`genes`] are `genes`)
+/// at `rate`: one to three of its genes, chosen at random (a section, then a gene in it), each
+/// moved a normal step times `rate` (with what hides it); drawn again, up to [`TRIES`] times,
+/// while the link refuses the values or its repair undoes them. With the changes it made.
 fn offspring(
     preset: &'static Preset,
     parent: &ShellSpec,
+    genes: &[(&'static Field, f64)],
     seed: u64,
     child: usize,
     rate: f64,
 ) -> (Tile, Vec<Change>) {
-    let genes = genes(parent);
     let mut sections: Vec<Section> = Vec::new();
-    for (field, _) in &genes {
+    for (field, _) in genes {
         if !sections.contains(&field.section) {
             sections.push(field.section);
         }
@@ -222,7 +222,7 @@ fn offspring(
             let &(field, value) = within[noise.below(within.len())];
             let shift = noise.normal(0.0, rate);
             // What hides this gene moves too, at least a whole step, so that the change shows.
-            let woken = hidden_by(&genes, field)
+            let woken = hidden_by(genes, field)
                 .into_iter()
                 .map(|(other, v)| (other, v, 1.0 + shift.abs()));
             for (field, value, shift) in std::iter::once((field, value, shift)).chain(woken) {
@@ -296,7 +296,8 @@ impl Breeding {
         };
         for (generation, &(rate, child)) in lineage.chosen.iter().enumerate() {
             let seed = seed_of(&parent.spec, &parent.link);
-            let (tile, _) = offspring(parent.preset, &parent.spec, seed, child, rate);
+            let genes = genes(&parent.spec);
+            let (tile, _) = offspring(parent.preset, &parent.spec, &genes, seed, child, rate);
             if let Some(why) = tile.failure {
                 problems.push(Problem::new(
                     KEY,
@@ -313,8 +314,18 @@ impl Breeding {
             parent = tile;
         }
         let seed = seed_of(&parent.spec, &parent.link);
+        let genes = genes(&parent.spec);
         let (mut tiles, mut changes): (Vec<Tile>, Vec<Vec<Change>>) = (1..=OFFSPRING)
-            .map(|child| offspring(parent.preset, &parent.spec, seed, child, followed.rate))
+            .map(|child| {
+                offspring(
+                    parent.preset,
+                    &parent.spec,
+                    &genes,
+                    seed,
+                    child,
+                    followed.rate,
+                )
+            })
             .unzip();
         tiles.insert(PARENT, parent);
         changes.insert(PARENT, Vec::new());

@@ -169,11 +169,24 @@ impl Pictures {
     /// a picture shows; returns it to be asked of the pool.
     fn want(&mut self, place: Place, preset: &'static Preset, spec: &ShellSpec) -> &Wanted {
         let spec = picture_spec(spec, place.pixels());
+        let link = link::encode(preset, &spec);
+        self.push(place, preset, spec, link)
+    }
+
+    /// Adds a picture to draw of `spec`, already as fine as a picture shows, whose link is
+    /// `link`.
+    fn push(
+        &mut self,
+        place: Place,
+        preset: &'static Preset,
+        spec: ShellSpec,
+        link: String,
+    ) -> &Wanted {
         let wanted = Wanted {
             job: self.next_job,
             place,
             preset,
-            link: link::encode(preset, &spec),
+            link,
             spec,
         };
         self.next_job = self.next_job.wrapping_add(1);
@@ -208,7 +221,8 @@ impl Pictures {
         spec: &ShellSpec,
         workers: &mut Workers,
     ) -> bool {
-        let link = link::encode(preset, &picture_spec(spec, TILE_PIXELS));
+        let spec = picture_spec(spec, TILE_PIXELS);
+        let link = link::encode(preset, &spec);
         let drawn = self.drawn.borrow();
         if let Some((_, url)) = drawn.iter().find(|(l, _)| *l == link)
             && let Some(img) = image(&Place::Tile(job).selector(preset))
@@ -217,7 +231,7 @@ impl Pictures {
             return true;
         }
         drop(drawn);
-        let wanted = self.want(Place::Tile(job), preset, spec);
+        let wanted = self.push(Place::Tile(job), preset, spec, link);
         Self::submit(workers, wanted);
         false
     }
