@@ -146,6 +146,10 @@ pub struct Renderer {
     stride: u64,
     blank: PatternTexture,
     targets: Targets,
+    /// Samples a pixel now takes: the device's MSAA samples, or 1 ([`Self::multisample`]).
+    samples: u32,
+    /// The pipelines of the other sample count, once built, by their samples.
+    other: Option<(u32, Pipelines)>,
     shell: Option<Shell>,
     background: wgpu::Color,
     background_linear: [f32; 3],
@@ -200,6 +204,7 @@ impl Renderer {
         });
         let blank = PatternTexture::new(device, TextureLayout::new(1, 1).expect("1×1 fits"));
         let targets = create_targets(device, &gpu.config, gpu.samples);
+        let samples = gpu.samples;
         Ok(Self {
             encode_srgb: !gpu.config.format.is_srgb(),
             gpu,
@@ -209,6 +214,8 @@ impl Renderer {
             stride,
             blank,
             targets,
+            samples,
+            other: None,
             shell: None,
             background: wgpu::Color::BLACK,
             background_linear: [0.0; 3],
@@ -286,8 +293,28 @@ impl Renderer {
             self.gpu
                 .surface
                 .configure(&self.gpu.device, &self.gpu.config);
-            self.targets = create_targets(&self.gpu.device, &self.gpu.config, self.gpu.samples);
+            self.targets = create_targets(&self.gpu.device, &self.gpu.config, self.samples);
         }
+    }
+
+    /// Draws with the device's MSAA samples, or with one sample a pixel: a picture shown
+    /// smaller than drawn is smoothed as much by the browser's downscaling, at a third of the
+    /// cost on a software rasterizer. A change builds the targets anew, and the pipelines the
+    /// first time (their shaders take most of a second to compile on one).
+    pub fn multisample(&mut self, on: bool) {
+        let samples = if on { self.gpu.samples } else { 1 };
+        if samples == self.samples {
+            return;
+        }
+        let (device, format) = (&self.gpu.device, self.gpu.config.format);
+        let pipelines = match self.other.take() {
+            Some((built, pipelines)) if built == samples => pipelines,
+            _ => pipeline::pipelines(device, &self.layout, format, samples),
+        };
+        let before = std::mem::replace(&mut self.pipelines, pipelines);
+        self.other = Some((self.samples, before));
+        self.samples = samples;
+        self.targets = create_targets(device, &self.gpu.config, samples);
     }
 
     /// Allocates the buffers of a new shell at its final size; `pattern` is its texture layout

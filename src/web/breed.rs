@@ -129,7 +129,13 @@ impl BreedView {
                 self.grid.show(index, tile);
             }
             if tile.failure.is_none()
-                && pictures.ask_tile(self.grid.job(index), tile.preset, &tile.spec, workers)
+                && pictures.ask_tile(
+                    self.grid.job(index),
+                    false,
+                    tile.preset,
+                    &tile.spec,
+                    workers,
+                )
             {
                 drawn.push(index);
             }

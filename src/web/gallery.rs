@@ -63,7 +63,12 @@ pub fn build(container: &Element) {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Place {
     Card,
-    Tile(u32),
+    /// A tile by its job number, `small` where the grid shows many (the map's 64) rather
+    /// than a few large (breeding's nine).
+    Tile {
+        job: u32,
+        small: bool,
+    },
 }
 
 impl Place {
@@ -71,8 +76,16 @@ impl Place {
     fn pixels(self) -> u32 {
         match self {
             Place::Card => CARD_PIXELS,
-            Place::Tile(_) => TILE_PIXELS,
+            Place::Tile { .. } => TILE_PIXELS,
         }
+    }
+
+    /// Whether the picture is drawn multisampled. A small tile is not: drawn at 128 pixels
+    /// and shown at about 100 among 63 others, it is smoothed about as much by the browser's
+    /// scaling, and one sample a pixel draws it in a third of the time on a software
+    /// rasterizer. Breeding's tiles are shown larger than drawn, and multisampled.
+    fn multisampled(self) -> bool {
+        !matches!(self, Place::Tile { small: true, .. })
     }
 }
 
@@ -92,7 +105,7 @@ impl Place {
     fn selector(self, preset: &Preset) -> String {
         match self {
             Place::Card => format!("a.card[data-preset=\"{}\"] img", preset.id),
-            Place::Tile(job) => format!("a.tile[data-job=\"{job}\"] img"),
+            Place::Tile { job, .. } => format!("a.tile[data-job=\"{job}\"] img"),
         }
     }
 }
@@ -212,11 +225,12 @@ impl Pictures {
         }
     }
 
-    /// Asks the pool for the picture of tile `job`, the shell `spec`; true if it was drawn
-    /// lately, and is shown at once instead.
+    /// Asks the pool for the picture of tile `job` (`small`: one of many, [`Place::Tile`]),
+    /// the shell `spec`; true if it was drawn lately, and is shown at once instead.
     pub fn ask_tile(
         &mut self,
         job: u32,
+        small: bool,
         preset: &'static Preset,
         spec: &ShellSpec,
         workers: &mut Workers,
@@ -225,13 +239,13 @@ impl Pictures {
         let link = link::encode(preset, &spec);
         let drawn = self.drawn.borrow();
         if let Some((_, url)) = drawn.iter().find(|(l, _)| *l == link)
-            && let Some(img) = image(&Place::Tile(job).selector(preset))
+            && let Some(img) = image(&Place::Tile { job, small }.selector(preset))
         {
             img.set_src(url);
             return true;
         }
         drop(drawn);
-        let wanted = self.push(Place::Tile(job), preset, spec, link);
+        let wanted = self.push(Place::Tile { job, small }, preset, spec, link);
         Self::submit(workers, wanted);
         false
     }
@@ -261,7 +275,7 @@ impl Pictures {
 
     /// The shape map was closed or drawn anew: its tiles' pictures are drawn no more.
     pub fn drop_tiles(&mut self, workers: &mut Workers) {
-        let tile = |p: Place| matches!(p, Place::Tile(_));
+        let tile = |p: Place| matches!(p, Place::Tile { .. });
         workers.cancel(|r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, tile)));
         self.left.retain(|w| !tile(w.place));
         self.waiting.retain(|(w, _)| !tile(w.place));
@@ -278,7 +292,7 @@ impl Pictures {
                 self.waiting.push((wanted, whole));
                 None
             }
-            (Err(why), Place::Tile(tile)) => Some((tile, why)),
+            (Err(why), Place::Tile { job, .. }) => Some((job, why)),
             (Err(_), Place::Card) => None,
         }
     }
@@ -310,7 +324,8 @@ impl Pictures {
         // page answers the user between two.
         let (wanted, whole) = self.waiting.pop()?;
         self.viewer.show_whole(wanted.preset, &wanted.spec, whole);
-        let picture = self.viewer.picture_at(wanted.place.pixels());
+        let place = wanted.place;
+        let picture = self.viewer.picture_at(place.pixels(), place.multisampled());
         if self.viewer.survive() != Device::Ready {
             // Lost while drawing: the picture may be blank; it is drawn on the next device.
             self.ask_again(wanted, workers);
@@ -318,9 +333,8 @@ impl Pictures {
         }
         let blob = picture.ok()?;
         let img = image(&wanted.place.selector(wanted.preset));
-        let place = wanted.place;
-        let kept =
-            matches!(place, Place::Tile(_)).then(|| (wanted.link.clone(), Rc::clone(&self.drawn)));
+        let kept = matches!(place, Place::Tile { .. })
+            .then(|| (wanted.link.clone(), Rc::clone(&self.drawn)));
         self.lately.push_back((wanted, now()));
         if let Some(img) = img {
             wasm_bindgen_futures::spawn_local(async move {
@@ -334,7 +348,7 @@ impl Pictures {
             });
         }
         match place {
-            Place::Tile(tile) => Some(tile),
+            Place::Tile { job, .. } => Some(job),
             Place::Card => None,
         }
     }

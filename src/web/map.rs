@@ -315,7 +315,7 @@ impl MapView {
             let job = self.grid.job(index);
             let tile = &map.tiles()[index];
             if map.shells() {
-                if pictures.ask_tile(job, tile.preset, &tile.spec, workers) {
+                if pictures.ask_tile(job, true, tile.preset, &tile.spec, workers) {
                     map.shown(index, Ok(()));
                 }
             } else {

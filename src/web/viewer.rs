@@ -933,14 +933,19 @@ impl Viewer {
         }
     }
 
-    /// [`Self::picture`], drawn on a canvas of `pixels` × `pixels` (a viewer of pictures only,
-    /// whose canvas is not laid out on the page).
-    pub fn picture_at(&mut self, pixels: u32) -> Result<js_sys::Promise, String> {
-        if let Some(d) = &mut self.drawing
-            && d.canvas.size() != (pixels, pixels)
-        {
-            d.canvas.set_size((pixels, pixels));
-            d.renderer.resize(pixels, pixels);
+    /// [`Self::picture`], drawn on a canvas of `pixels` × `pixels`, `multisampled` or with one
+    /// sample a pixel (a viewer of pictures only, whose canvas is not laid out on the page).
+    pub fn picture_at(
+        &mut self,
+        pixels: u32,
+        multisampled: bool,
+    ) -> Result<js_sys::Promise, String> {
+        if let Some(d) = &mut self.drawing {
+            if d.canvas.size() != (pixels, pixels) {
+                d.canvas.set_size((pixels, pixels));
+                d.renderer.resize(pixels, pixels);
+            }
+            d.renderer.multisample(multisampled);
         }
         self.picture()
     }
