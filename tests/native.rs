@@ -28,5 +28,5 @@ mod parameter_map;
 mod pattern;
 mod species;
 mod textures;
-mod view_message;
+mod viewer_message;
 mod workers;

@@ -1,5 +1,5 @@
 // The worker that draws the page's main view: loads the same WebAssembly module as the page,
-// and hands its messages to the module's drawing worker (web/view_worker.rs), which is given
+// and hands its messages to the module's drawing worker (web/drawing_worker.rs), which is given
 // the page's canvas as an OffscreenCanvas and runs the viewer and its own pool of workers.
 // Messages that come while the module loads wait for it.
 //

@@ -20,6 +20,7 @@
 
 use super::activity;
 use super::breed::BreedView;
+use super::canvases::replace;
 use super::clock::now;
 use super::debug::Loss;
 use super::dom;
@@ -32,7 +33,6 @@ use super::planar::PlanarView;
 use super::record::{self, Recording, Step, Support};
 use super::share_panel;
 use super::shown_size::ShownSize;
-use super::view_canvas::replace;
 use super::viewer::Viewer;
 use super::viewer_handle::{Taken, ViewerHandle};
 use super::webcodecs::VideoFrame;
@@ -49,9 +49,9 @@ use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
-use crate::work::view_command::{PresetSpec, ViewCommand};
-use crate::work::view_message::PoolNews;
-use crate::work::view_status::{Device, ViewStatus};
+use crate::work::viewer_command::{PresetSpec, ViewCommand};
+use crate::work::viewer_message::PoolNews;
+use crate::work::viewer_status::{Device, ViewStatus};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;

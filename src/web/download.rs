@@ -13,8 +13,8 @@ use crate::export::Download;
 use crate::export::estimate::{Counts, Size};
 use crate::export::print_size::PrintSize;
 use crate::work::file_writer::{Body, FileStage};
-use crate::work::view_command::ViewCommand;
-use crate::work::view_status::ShellStatus;
+use crate::work::viewer_command::ViewCommand;
+use crate::work::viewer_status::ShellStatus;
 use wasm_bindgen::JsCast;
 use web_sys::{
     Blob, BlobPropertyBag, HtmlAnchorElement, HtmlButtonElement, HtmlInputElement,

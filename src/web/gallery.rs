@@ -4,10 +4,10 @@
 //! shells are grown whole by the pool of workers and drawn by a second viewer on a small canvas
 //! laid out off the screen as they come, each card's picture a PNG read back from it.
 
+use super::canvases::{object_url, replace};
 use super::clock::now;
 use super::debug::Loss;
 use super::dom::{append, attr, create, typed};
-use super::view_canvas::{object_url, replace};
 use super::viewer::Viewer;
 use super::workers::Workers;
 use crate::presets::{Preset, presets};
@@ -16,8 +16,8 @@ use crate::share::link;
 use crate::spec::ShellSpec;
 use crate::view::picture::{CARD_PIXELS, TILE_PIXELS, picture_spec};
 use crate::work::message::{Request, WholeShell};
-use crate::work::view_command::ViewCommand;
-use crate::work::view_status::Device;
+use crate::work::viewer_command::ViewCommand;
+use crate::work::viewer_status::Device;
 use std::cell::RefCell;
 use std::collections::VecDeque;
 use std::rc::Rc;

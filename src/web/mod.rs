@@ -4,10 +4,12 @@
 mod activity;
 mod app;
 mod breed;
+mod canvases;
 mod clock;
 mod debug;
 mod dom;
 mod download;
+mod drawing_worker;
 mod gallery;
 mod map;
 mod page;
@@ -19,8 +21,6 @@ mod scope;
 mod share_panel;
 mod shown_size;
 mod tile_grid;
-mod view_canvas;
-mod view_worker;
 mod viewer;
 mod viewer_handle;
 mod webcodecs;
@@ -29,7 +29,7 @@ mod workers;
 
 use crate::export::Download;
 use crate::render::Canvas;
-use crate::work::view_command::{PointerChange, ViewCommand};
+use crate::work::viewer_command::{PointerChange, ViewCommand};
 use app::App;
 use record::Support;
 use std::cell::RefCell;
@@ -170,7 +170,7 @@ async fn main_viewer(
     workers: Rc<RefCell<workers::Workers>>,
 ) -> Result<ViewerHandle, String> {
     let (element, note) = if viewer_handle::in_worker() {
-        let started = match view_canvas::hand_over(&element) {
+        let started = match canvases::hand_over(&element) {
             Ok(offscreen) => ViewWorker::start(offscreen, true, background).await,
             Err(e) => Err(e),
         };
@@ -184,7 +184,7 @@ async fn main_viewer(
                     "{} Drawn on the page's thread: this browser cannot draw in a worker.",
                     workers.borrow().status()
                 );
-                (view_canvas::replace("shell")?, Some(note))
+                (canvases::replace("shell")?, Some(note))
             }
         }
     } else {

@@ -1,7 +1,7 @@
 //! A viewer: one canvas (a canvas element of the page, or an `OffscreenCanvas` one handed its
 //! drawing to) and its renderer, a shell growing on it, what its planar pattern shows, and the
 //! camera the pointer turns. It touches nothing of the page, so that it runs in the worker that
-//! draws the main view (`view_worker.rs`) as well as on the page's thread (`viewer_handle.rs`).
+//! draws the main view (`drawing_worker.rs`) as well as on the page's thread (`viewer_handle.rs`).
 //! Loading another spec restarts growth without reloading the page. The page's main view is one
 //! viewer, whose camera follows the growing shell; the gallery's pictures are drawn by another,
 //! framed on the whole shell. While a pattern slider is dragged, the planar view previews the
@@ -12,10 +12,10 @@
 //! finishing says so, for the page to move it where it can draw.
 
 use super::activity;
+use super::canvases::{lose_context, object_url, png};
 use super::clock::now;
 use super::debug::{self, Loss};
 use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
-use super::view_canvas::{lose_context, object_url, png};
 use super::webcodecs::{self, VideoFrame};
 use super::workers::Workers;
 use crate::export::Download;
@@ -42,8 +42,8 @@ use crate::work::growth_session::{GrowthSession, Took};
 use crate::work::message::{Reply, Request, ShellInfo, WholeShell};
 use crate::work::planar_update::PlanarUpdate;
 use crate::work::replica::Replica;
-use crate::work::view_command::{PointerChange, ViewCommand};
-use crate::work::view_status::{Device, FrameReport, ShellStatus, ViewStatus};
+use crate::work::viewer_command::{PointerChange, ViewCommand};
+use crate::work::viewer_status::{Device, FrameReport, ShellStatus, ViewStatus};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::rc::Rc;

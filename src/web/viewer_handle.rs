@@ -1,21 +1,21 @@
 //! The page's main viewer, wherever it runs: in a worker that draws on the canvas the page
-//! handed over (`view_worker.rs`), so that the page's thread only handles input and the page,
+//! handed over (`drawing_worker.rs`), so that the page's thread only handles input and the page,
 //! or, where a module worker cannot draw (no `OffscreenCanvas`, no WebGL2 on one, as in WebKit
 //! before Safari 17; `view=page` in the address's query), the same [`Viewer`] on the page's own
 //! thread, drawing on the canvas element itself. The page talks to both the same way: commands
 //! in, the device's state and each frame's report out.
 
+use super::canvases::hand_over;
 use super::clock::now;
 use super::debug::Loss;
 use super::scope;
-use super::view_canvas::hand_over;
 use super::viewer::{ViewFrame, Viewer};
 use super::webcodecs::VideoFrame;
 use crate::render::Canvas;
 use crate::work::message::{Reply, Request};
-use crate::work::view_command::ViewCommand;
-use crate::work::view_message::{PoolNews, ViewerNews, decode_news, encode_command};
-use crate::work::view_status::Device;
+use crate::work::viewer_command::ViewCommand;
+use crate::work::viewer_message::{PoolNews, ViewerNews, decode_news, encode_command};
+use crate::work::viewer_status::Device;
 use js_sys::{Array, Promise, Reflect, Uint8Array};
 use std::cell::RefCell;
 use std::collections::VecDeque;
@@ -63,7 +63,7 @@ pub struct ViewWorker {
     ticked: bool,
     /// Loads sent to it ([`FrameReport::loads`]).
     ///
-    /// [`FrameReport::loads`]: crate::work::view_status::FrameReport::loads
+    /// [`FrameReport::loads`]: crate::work::viewer_status::FrameReport::loads
     loads: u32,
     _on_message: Closure<dyn FnMut(MessageEvent)>,
     _on_error: Closure<dyn FnMut(ErrorEvent)>,

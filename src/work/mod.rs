@@ -7,7 +7,7 @@
 //! cannot change a bit, and shares jobs out among its workers with a [`pool::Pool`], which
 //! also knows what to do again when a worker dies or hangs. A file of the shell is written
 //! where that copy is ([`file_writer::FileWriter`]); what the page asks of a viewer and what it
-//! reads of it are plain data ([`view_command::ViewCommand`], [`view_status::ViewStatus`],
+//! reads of it are plain data ([`viewer_command::ViewCommand`], [`viewer_status::ViewStatus`],
 //! [`planar_update::PlanarUpdate`]).
 
 pub(crate) mod edge_slots;
@@ -19,7 +19,7 @@ pub mod planar_update;
 pub mod pool;
 pub mod replica;
 pub mod slotted_edge;
-pub mod view_command;
-pub mod view_message;
-pub mod view_status;
+pub mod viewer_command;
+pub mod viewer_message;
+pub mod viewer_status;
 pub mod wire;

@@ -1,9 +1,9 @@
 //! What the page asks of its viewer: every change the page makes to what is grown and how it
 //! is shown, as plain data. The page sends these and reads back a [`ViewStatus`]
-//! (`view_status.rs`), so that the viewer can run where the page's thread is not (a worker
+//! (`viewer_status.rs`), so that the viewer can run where the page's thread is not (a worker
 //! holding the canvas) and be driven exactly as it is on the page's own thread.
 //!
-//! [`ViewStatus`]: super::view_status::ViewStatus
+//! [`ViewStatus`]: super::viewer_status::ViewStatus
 
 use crate::export::Download;
 use crate::export::print_size::PrintSize;

@@ -110,7 +110,7 @@ pub struct FrameReport {
     /// reaches it: the page takes status and drawing only from a frame that counts every load
     /// it sent, or it would show the shell it left as the one it asked for.
     ///
-    /// [`ViewCommand::Load`]: super::view_command::ViewCommand::Load
+    /// [`ViewCommand::Load`]: super::viewer_command::ViewCommand::Load
     pub loads: u32,
     /// Where the file asked for stands (`None`: none is asked for).
     pub file: Option<FileStage>,

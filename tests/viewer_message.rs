@@ -1,4 +1,4 @@
-//! The messages between the page and a viewer drawing in a worker (`work::view_message`): every
+//! The messages between the page and a viewer drawing in a worker (`work::viewer_message`): every
 //! command and every kind of news reads back as it was written, a spec (sent as its link) bit
 //! for bit; bytes that are cut short, have a stray byte after them, name an unknown preset,
 //! carry a link with a problem or a size out of range are refused, never read as something
@@ -14,11 +14,11 @@ use seashells_core::view::preview::PreviewState;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::file_writer::{Body, File, FileStage};
 use seashells_core::work::planar_update::PlanarUpdate;
-use seashells_core::work::view_command::{PointerChange, PresetSpec, ViewCommand};
-use seashells_core::work::view_message::{
+use seashells_core::work::viewer_command::{PointerChange, PresetSpec, ViewCommand};
+use seashells_core::work::viewer_message::{
     PoolNews, ViewerNews, decode_command, decode_news, encode_command, encode_news,
 };
-use seashells_core::work::view_status::{Device, FrameReport, ShellStatus, ViewStatus};
+use seashells_core::work::viewer_status::{Device, FrameReport, ShellStatus, ViewStatus};
 use seashells_core::work::wire;
 
 /// Every kind of command, with values that are not their defaults.

@@ -4,8 +4,8 @@
 //! (a recording's `VideoFrame`, a fresh `OffscreenCanvas`) crosses beside the bytes,
 //! transferred.
 
-use super::view_command::ViewCommand;
-use super::view_status::{Device, FrameReport};
+use super::viewer_command::ViewCommand;
+use super::viewer_status::{Device, FrameReport};
 use super::wire::{self, WireError};
 use serde::{Deserialize, Serialize};
 

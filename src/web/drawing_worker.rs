@@ -2,7 +2,7 @@
 //! same module): handed the page's canvas as an `OffscreenCanvas`, it runs the [`Viewer`] and a
 //! pool of workers of its own for the sessions, and does what the page's commands ask. Each of
 //! the page's animation frames ends with a tick, on which the worker keeps the device, takes in
-//! its pool's replies, runs the viewer's frame and posts the news (`work::view_message`), a
+//! its pool's replies, runs the viewer's frame and posts the news (`work::viewer_message`), a
 //! recording's `VideoFrame` transferred beside it: the page's thread only reads the news, the
 //! growing shell's bytes never reach it. (Driven by its own `requestAnimationFrame`, the worker
 //! was seen to stop drawing after a lost context's canvas was replaced; the page's frames go
@@ -17,9 +17,9 @@ use super::viewer::Viewer;
 use super::workers::Workers;
 use crate::generator::GROWTH_BUDGET_MS;
 use crate::render::Canvas;
-use crate::work::view_command::ViewCommand;
-use crate::work::view_message::{PoolNews, ViewerNews, decode_command, encode_news};
-use crate::work::view_status::Device;
+use crate::work::viewer_command::ViewCommand;
+use crate::work::viewer_message::{PoolNews, ViewerNews, decode_command, encode_news};
+use crate::work::viewer_status::Device;
 use js_sys::{Array, Reflect, Uint8Array};
 use std::cell::RefCell;
 use std::rc::Rc;
