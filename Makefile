@@ -113,8 +113,6 @@ test:
 	  if [ $$status != 0 ]; then printf '\nmake test: %s FAILED; the phases run:%s\n' $$phase "$$report"; exit $$status; fi; \
 	done; printf '\nmake test: every phase passed, in %d s:%s\n' $$SECONDS "$$report"
 
-## Benchmarks print figures; they assert nothing.
-
 ## A long run of the property test over the field table (tests/any_link.rs): FUZZ_CASES links
 ## drawn over every field's whole range from a random seed; FUZZ_SEED=N repeats a run.
 FUZZ_CASES ?= 1000
@@ -122,7 +120,10 @@ fuzz: deps-build
 	SEASHELLS_FUZZ_CASES=$(FUZZ_CASES) $(if $(FUZZ_SEED),SEASHELLS_FUZZ_SEED=$(FUZZ_SEED)) \
 	  cargo test --test native any_link:: -- --nocapture
 
+## Benchmarks print figures; they assert nothing. Before them, the one check too long for make
+## test: every Murex preset at its own resolution against 384³ (make test compares it with 256³).
 bench: build deps-browser
+	cargo test --test native -- --ignored murex_resolutions::
 	cargo build --release --bin seashells
 	node tests/page/bench.mjs
 
