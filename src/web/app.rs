@@ -49,6 +49,8 @@ use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
+use crate::work::shell_change::{ShellChange, Shown};
+use crate::work::status_readout::{Readout, Say};
 use crate::work::viewer_command::{PresetSpec, ViewCommand};
 use crate::work::viewer_message::PoolNews;
 use crate::work::viewer_status::{Device, ViewStatus};
@@ -59,10 +61,6 @@ use web_sys::{HtmlCanvasElement, HtmlInputElement, HtmlProgressElement};
 
 /// Quiet time after an edit before the address bar is updated.
 const URL_DELAY_MS: f64 = 300.0;
-/// Least time between two updates of the progress bar and its text while the shell grows: a
-/// bar that moves ten times a second looks as smooth as one moved every frame, without an
-/// element written and laid out in each of the frames between.
-const PROGRESS_EVERY_MS: f64 = 100.0;
 
 pub struct App {
     viewer: ViewerHandle,
@@ -81,9 +79,8 @@ pub struct App {
     /// What the viewer said of itself after the last frame (and nothing of a shell just
     /// loaded until it has).
     status: ViewStatus,
-    /// The session whose stop was said: said once, so that a message said since (a refused
-    /// download) stays.
-    stop_said: Option<u32>,
+    /// What the page last showed of that status.
+    readout: Readout,
     /// Where shells, pictures and pieces grow.
     workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
@@ -97,17 +94,12 @@ pub struct App {
     on_change: Option<OnChange>,
     in_gallery: bool,
     url_due: Option<f64>,
-    /// How many times the main viewer's graphics device was lost and opened again.
-    recoveries: u32,
     /// Whether growth advances each frame (Play or Pause).
     playing: bool,
     /// What the browser can record video with (found out after the start).
     support: Rc<RefCell<Support>>,
     /// A video being recorded.
     recording: Option<Recording>,
-    /// The rows done and in all that the progress bar and its text show, and when they were
-    /// shown.
-    progress_shown: (usize, usize, f64),
     /// A viewer being opened on the page's thread, on a fresh canvas, after the drawing worker
     /// failed.
     moving: Option<Moving>,
@@ -185,7 +177,7 @@ impl App {
             replaced_canvas: None,
             planar,
             status: ViewStatus::default(),
-            stop_said: None,
+            readout: Readout::default(),
             workers,
             pictures,
             map: MapView::default(),
@@ -197,9 +189,7 @@ impl App {
             on_change: None,
             in_gallery: false,
             url_due: None,
-            recoveries: 0,
             playing: false,
-            progress_shown: (0, 0, f64::NEG_INFINITY),
             support: Rc::new(RefCell::new(Support::Unasked)),
             recording: None,
             moving: None,
@@ -274,34 +264,31 @@ impl App {
         say(&problems);
         self.present(presentation);
         self.show(false);
-        let same = self
-            .current
-            .as_ref()
-            .is_some_and(|(p, s)| p.id == preset.id && *s == spec);
-        if same {
-            return;
-        }
-        if self.restyles(preset, &spec) {
-            self.restyle(preset, spec);
-            return;
-        }
         // An embed for a reader who asked for less motion: the grown shell, still.
         let still = presentation.ui.embedded() && share_panel::reduced_motion();
-        self.load(preset, spec, still);
-        if still {
-            self.set_playing(false);
+        match self.change_to(preset, &spec, still) {
+            ShellChange::Same => {}
+            ShellChange::Restyle => self.restyle(preset, spec),
+            ShellChange::Grow { finish } => {
+                self.load(preset, spec, finish);
+                if still {
+                    self.set_playing(false);
+                }
+            }
         }
     }
 
-    /// Whether `spec` of `preset` is the shell shown in another material: drawn again, not
-    /// grown again.
-    fn restyles(&self, preset: &Preset, spec: &ShellSpec) -> bool {
-        self.current
-            .as_ref()
-            .is_some_and(|(p, s)| p.id == preset.id && s.grows_like(spec))
+    /// What asking for `spec` of `preset` does to the shell shown.
+    fn change_to(&self, preset: &Preset, spec: &ShellSpec, finish: bool) -> ShellChange {
+        let shown = self.current.as_ref().map(|(preset, spec)| Shown {
+            preset,
+            spec,
+            grown_whole: self.status.shell.as_ref().is_some_and(|s| s.done),
+        });
+        ShellChange::of(shown, preset, spec, finish)
     }
 
-    /// Shows the shell shown in the material of `spec` (see [`Self::restyles`]): its growth,
+    /// Shows the shell shown in the material of `spec` ([`ShellChange::Restyle`]): its growth,
     /// its recording and its status go on.
     fn restyle(&mut self, preset: &'static Preset, spec: ShellSpec) {
         self.viewer
@@ -337,23 +324,16 @@ impl App {
         page::document().set_title(&title);
     }
 
-    /// Shows `spec`, grown from its apex (with `finish`, to its end at once); an implicit shell
-    /// that was grown whole when one of its values changed is remeshed whole at once instead,
-    /// its chunks shared by the pool.
+    /// Shows `spec`, grown from its apex (with `finish`, to its end at once: see
+    /// [`ShellChange`] for when).
     fn load(&mut self, preset: &'static Preset, spec: ShellSpec, finish: bool) {
         self.stop_recording("the shell was changed");
         signal("state", "loading");
         signal("patternHash", "");
         signal("mesh", "");
-        let remesh = crate::forms::meshed_in_pieces(&spec.form)
-            && self
-                .current
-                .as_ref()
-                .is_some_and(|(p, _)| p.id == preset.id)
-            && self.status.shell.as_ref().is_some_and(|s| s.done);
         self.viewer.command(ViewCommand::Load {
             shell: PresetSpec::new(preset, spec.clone()),
-            finish: finish || remesh,
+            finish,
         });
         self.status = ViewStatus::default();
         set_text("title", &preset.name);
@@ -400,7 +380,7 @@ impl App {
                 say(&problems);
                 self.viewer
                     .command(ViewCommand::Preview(link::encode(preset, &next)));
-            } else if self.restyles(preset, &next) {
+            } else if self.change_to(preset, &next, false) == ShellChange::Restyle {
                 // A material slider dragged: the grown shell follows it.
                 self.viewer
                     .command(ViewCommand::Restyle(PresetSpec::new(preset, next)));
@@ -409,16 +389,15 @@ impl App {
         }
         self.viewer.command(ViewCommand::EndPreview);
         say(&problems);
-        if self.current.as_ref().is_some_and(|(_, s)| *s == next) {
-            if let (Some(panel), Some((_, s))) = (&self.panel, &self.current) {
-                panel.refresh(s);
+        match self.change_to(preset, &next, false) {
+            ShellChange::Same => {
+                if let (Some(panel), Some((_, s))) = (&self.panel, &self.current) {
+                    panel.refresh(s);
+                }
+                return;
             }
-            return;
-        }
-        if self.restyles(preset, &next) {
-            self.restyle(preset, next);
-        } else {
-            self.load(preset, next, false);
+            ShellChange::Restyle => self.restyle(preset, next),
+            ShellChange::Grow { finish } => self.load(preset, next, finish),
         }
         self.url_due = Some(now() + URL_DELAY_MS);
     }
@@ -763,35 +742,19 @@ impl App {
             }
             device => device,
         };
-        match device {
-            Device::Ready => Ok(true),
-            Device::Reopening(reason) => {
-                show_message(&format!(
-                    "The graphics device was lost ({reason}); opening it again…"
-                ));
-                if !self.in_gallery {
-                    signal("state", "recovering");
-                }
-                Ok(false)
-            }
-            Device::Reopened(backend) => {
-                self.recoveries += 1;
-                signal("recoveries", &self.recoveries.to_string());
-                show_backend(Some(backend.clone()));
-                if self.in_gallery {
-                    page::hide_message();
-                } else {
-                    let rows = self.status.shell.as_ref().map_or(0, |s| s.rows_done);
-                    show_message(&format!(
-                        "The graphics device was lost and has been opened again, with \
-                         {backend}: the shell goes on from row {rows}."
-                    ));
-                }
-                Ok(true)
-            }
-            Device::Gone(message) => Err(message),
-            Device::NeedsCanvas(_) => unreachable!("a fresh canvas was given above"),
+        let shown = self.readout.device(device, &self.status, self.in_gallery)?;
+        for (name, value) in &shown.signals {
+            signal(name, value);
         }
+        if shown.backend.is_some() {
+            show_backend(shown.backend);
+        }
+        match shown.say {
+            Say::Nothing => {}
+            Say::Show(words) => show_message(&words),
+            Say::Hide => page::hide_message(),
+        }
+        Ok(shown.draws)
     }
 
     /// One animation frame.
@@ -1016,78 +979,26 @@ impl App {
             return Ok(());
         };
         self.status = status;
-        signal("preview", self.status.preview_signal());
-        let Some(shell) = &self.status.shell else {
-            signal("settled", "false");
-            return Ok(());
-        };
-        // Settled is said with the rows it settled on, in a frame that shows them: a test that
-        // reads the rows once settled reads the last.
-        if !shell.settled {
-            signal("settled", "false");
+        let shown = self.readout.frame(&self.status, drawn, now());
+        for (name, value) in &shown.signals {
+            signal(name, value);
         }
-        self.show_progress();
-        if !drawn {
-            return Ok(());
+        if let Some((done, total)) = shown.progress {
+            if let Some(bar) =
+                element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
+            {
+                bar.set_max(total as f64);
+                bar.set_value(done as f64);
+            }
+            set_text("progress-text", &format!("{done} of {total} rows"));
         }
-        let Some(shell) = &self.status.shell else {
-            return Ok(());
-        };
-        signal("rows", &shell.rows_done.to_string());
-        signal("settled", if shell.settled { "true" } else { "false" });
-        let whole = shell.done && shell.settled;
-        signal("growth", if whole { "done" } else { "growing" });
-        self.downloads.show_sizes(shell);
-        if let Some(failure) = &shell.failure {
-            if self.stop_said != Some(shell.session) {
-                show_message(failure);
-                self.stop_said = Some(shell.session);
-            }
-            signal("state", "stopped");
-        } else if shell.finished() {
-            if let Some(hash) = shell.pattern_hash {
-                signal("patternHash", &format!("{hash:016x}"));
-            }
-            signal(
-                "mesh",
-                &format!(
-                    "{} vertices, {} triangles",
-                    shell.counts.vertices, shell.counts.triangles
-                ),
-            );
-            if let Some(hash) = shell.mesh_hash {
-                signal("meshHash", &format!("{hash:016x}"));
-            }
-            signal("state", "grown");
-        } else {
-            signal("state", "growing");
+        if let Some(message) = &shown.message {
+            show_message(message);
+        }
+        if let (true, Some(shell)) = (shown.sizes, &self.status.shell) {
+            self.downloads.show_sizes(shell);
         }
         Ok(())
-    }
-
-    /// Shows the rows grown on the progress bar and in its text, when they have changed, at
-    /// most every [`PROGRESS_EVERY_MS`] while the shell grows (called every frame, drawn or
-    /// not, so that the last rows of a growth paused or finished are shown too).
-    fn show_progress(&mut self) {
-        let Some(shell) = &self.status.shell else {
-            return;
-        };
-        let (done, total) = (shell.rows_done, shell.rows);
-        let (shown_done, shown_total, shown_at) = self.progress_shown;
-        let t = now();
-        if (shown_done, shown_total) == (done, total)
-            || (done < total && t - shown_at < PROGRESS_EVERY_MS)
-        {
-            return;
-        }
-        self.progress_shown = (done, total, t);
-        if let Some(bar) =
-            element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
-        {
-            bar.set_max(total as f64);
-            bar.set_value(done as f64);
-        }
-        set_text("progress-text", &format!("{done} of {total} rows"));
     }
 
     /// Takes in what the workers sent back: the shell's growth and pieces go to the viewer,

@@ -8,7 +8,8 @@
 //! also knows what to do again when a worker dies or hangs. A file of the shell is written
 //! where that copy is ([`file_writer::FileWriter`]); what the page asks of a viewer and what it
 //! reads of it are plain data ([`viewer_command::ViewCommand`], [`viewer_status::ViewStatus`],
-//! [`planar_update::PlanarUpdate`]).
+//! [`planar_update::PlanarUpdate`]), and what the page shows of that status is decided here
+//! too ([`status_readout::Readout`]).
 
 pub(crate) mod edge_slots;
 pub mod file_writer;
@@ -18,7 +19,9 @@ pub mod message;
 pub mod planar_update;
 pub mod pool;
 pub mod replica;
+pub mod shell_change;
 pub mod slotted_edge;
+pub mod status_readout;
 pub mod viewer_command;
 pub mod viewer_message;
 pub mod viewer_status;
