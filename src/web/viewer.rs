@@ -226,8 +226,6 @@ pub struct Viewer {
     session: u32,
     /// Loads the page asked for ([`FrameReport::loads`]).
     loads: u32,
-    /// Rows the playback's speed asked for while the worker was still busy.
-    owed: usize,
     /// The clear colour, as sRGB bytes (for a renderer opened again).
     background: [u8; 3],
     /// A renderer being opened after the device was lost, and when the loss was seen.
@@ -314,7 +312,6 @@ impl Viewer {
             workers,
             session: 0,
             loads: 0,
-            owed: 0,
             background,
             reopening: None,
             lost_at: None,
@@ -404,7 +401,6 @@ impl Viewer {
         workers.cancel(|r| matches!(r, Request::Pieces { .. }));
         let growth = GrowthSession::load(self.session, link, &mut |r| workers.submit(r));
         self.playback.restart(spec.growth.speed);
-        self.owed = 0;
         // Framed on a unit box until the worker says what the shell is.
         let placeholder = Bounds {
             min: DVec3::splat(-1.0),
@@ -853,19 +849,11 @@ impl Viewer {
                 && !g.growth.replica().is_done()
                 && g.preview.is_none()
         });
-        if growing && self.playback.playing {
-            // The rows of frames that pass while the worker is busy add up, and are asked for
-            // together once it has answered: growth keeps the speed it has on the page's thread.
-            self.owed += self.playback.rows_this_frame();
-            let settled = self.growing.as_ref().is_some_and(|g| g.growth.settled());
-            if settled && self.owed > 0 {
-                let rows = std::mem::take(&mut self.owed);
-                let frame = growth_budget(budget_ms, now() - self.last_frame);
-                let budget = self.workers.borrow().growth_budget(frame);
-                self.grow(rows, budget);
-            }
-        } else {
-            self.owed = 0;
+        let settled = self.growing.as_ref().is_some_and(|g| g.growth.settled());
+        if let Some(rows) = self.playback.rows_to_ask(growing, settled) {
+            let frame = growth_budget(budget_ms, now() - self.last_frame);
+            let budget = self.workers.borrow().growth_budget(frame);
+            self.grow(rows, budget);
         }
         let time = now();
         let dt = ((time - self.last_frame) / 1000.0) as f32;
