@@ -11,6 +11,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { open, session, waitForState } from './browser.mjs';
+import { CLI } from './native.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = new URL('./screenshots/exports/', import.meta.url).pathname;
@@ -212,7 +213,7 @@ test('the Murex at its own resolution is written over many frames with a progres
     assert.equal(await page.isHidden('#download-progress'), true, 'the bar goes once the file is made');
 
     const native = `${SHOTS}murex-native.glb`;
-    execFileSync(`${ROOT}target/release/seashells`, ['mesh', '--link', link, '--out', native]);
+    execFileSync(CLI, ['mesh', '--link', link, '--out', native]);
     const expected = readFileSync(native);
     // The same document bit for bit (the page may have grown its triangles in another order
     // than the command line, so the arrays are compared by their layout and bounds).

@@ -1,10 +1,14 @@
-// What the native core (the release command line, `seashells`) makes of a link: the page's
-// tests compare the shell grown in the page with it, bit for bit where the platforms agree.
+// What the native core (the command line, `seashells`) makes of a link: the page's tests
+// compare the shell grown in the page with it, bit for bit where the platforms agree. The
+// command line is $SEASHELLS (make test passes the test profile's build, which `cargo test`
+// has built already), or the release build.
 import { execFileSync } from 'node:child_process';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 
-const CLI = new URL('../../target/release/seashells', import.meta.url).pathname;
+export const CLI = process.env.SEASHELLS
+  ? new URL(`../../${process.env.SEASHELLS}`, import.meta.url).pathname
+  : new URL('../../target/release/seashells', import.meta.url).pathname;
 const known = new Map();
 
 /** Runs the command line once per distinct call and remembers what it printed. */

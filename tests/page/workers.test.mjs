@@ -18,9 +18,7 @@ import { readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { open, session, waitForState } from './browser.mjs';
-import { nativeMesh, nativePattern } from './native.mjs';
-
-const ROOT = new URL('../../', import.meta.url).pathname;
+import { CLI, nativeMesh, nativePattern } from './native.mjs';
 
 // A coarse polygonization keeps the software-rendered page quick; it still splits into chunks.
 const MUREX = 'v=1&preset=murex-cabritii&form.resolution=48';
@@ -72,7 +70,7 @@ test(`the Murex finished by 1, 2 or 4 workers or on the page's thread is the sam
     // The file is the command line's (its triangles may come in another order: the page grew
     // some before finishing), by its layout: counts, bounds, attributes.
     const out = join(tmpdir(), `murex-${process.pid}.glb`);
-    execFileSync(`${ROOT}target/release/seashells`, ['mesh', '--link', MUREX, '--out', out]);
+    execFileSync(CLI, ['mesh', '--link', MUREX, '--out', out]);
     const cli = readFileSync(out);
     assert.equal(runs[4].bytes.length, cli.length, 'the GLB of the whole shell');
     assert.deepEqual(glbJson(runs[4].bytes), glbJson(cli));
