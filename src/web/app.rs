@@ -992,8 +992,8 @@ impl App {
             }
             set_text("progress-text", &format!("{done} of {total} rows"));
         }
-        if let Some(message) = &shown.message {
-            show_message(message);
+        if let Say::Show(words) = &shown.say {
+            show_message(words);
         }
         if let (true, Some(shell)) = (shown.sizes, &self.status.shell) {
             self.downloads.show_sizes(shell);

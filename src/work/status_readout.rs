@@ -10,7 +10,7 @@ use super::viewer_status::{Device, ShellStatus, ViewStatus};
 /// Least time between two moves of the progress bar and its text while the shell grows
 /// (milliseconds): a bar that moves ten times a second looks as smooth as one moved every
 /// frame, without an element written and laid out in each of the frames between.
-pub const PROGRESS_EVERY_MS: f64 = 100.0;
+const PROGRESS_EVERY_MS: f64 = 100.0;
 
 /// What the page last showed, to show only what changed.
 #[derive(Debug)]
@@ -35,9 +35,10 @@ impl Default for Readout {
 }
 
 /// Words the page shows in its message line, after a frame.
-#[derive(Debug, PartialEq)]
+#[derive(Debug, Default, PartialEq)]
 pub enum Say {
     /// Leave the line as it is.
+    #[default]
     Nothing,
     Show(String),
     /// Clear it.
@@ -64,7 +65,7 @@ pub struct Shown {
     /// The progress bar's rows done and rows in all, when it is to move.
     pub progress: Option<(usize, usize)>,
     /// Words to show the user (why growth stopped).
-    pub message: Option<String>,
+    pub say: Say,
     /// Whether the downloads' estimated sizes are to be shown again, from the shell's counts.
     pub sizes: bool,
 }
@@ -72,13 +73,6 @@ pub struct Shown {
 impl Shown {
     fn signal(&mut self, name: &'static str, value: impl Into<String>) {
         self.signals.push((name, value.into()));
-    }
-
-    /// The value of signal `name` if this frame sets it (the last, if set twice).
-    pub fn signal_of(&self, name: &str) -> Option<&str> {
-        (self.signals.iter().rev())
-            .find(|(n, _)| *n == name)
-            .map(|(_, v)| v.as_str())
     }
 }
 
@@ -177,7 +171,7 @@ impl Readout {
         shown.sizes = true;
         if let Some(failure) = &shell.failure {
             if self.stop_said != Some(shell.session) {
-                shown.message = Some(failure.clone());
+                shown.say = Say::Show(failure.clone());
                 self.stop_said = Some(shell.session);
             }
             shown.signal("state", "stopped");
@@ -207,6 +201,15 @@ impl Readout {
 mod tests {
     use super::*;
     use crate::view::preview::PreviewState;
+
+    impl Shown {
+        /// The value of signal `name` if this frame sets it (the last, if set twice).
+        fn signal_of(&self, name: &str) -> Option<&str> {
+            (self.signals.iter().rev())
+                .find(|(n, _)| *n == name)
+                .map(|(_, v)| v.as_str())
+        }
+    }
 
     fn growing(rows_done: usize) -> ViewStatus {
         ViewStatus {
@@ -280,17 +283,18 @@ mod tests {
         shell.done = true;
         let first = readout.frame(&stopped, true, 0.0);
         assert_eq!(
-            first.message.as_deref(),
-            Some("the whorls pass through one another")
+            first.say,
+            Say::Show("the whorls pass through one another".to_string())
         );
         assert_eq!(first.signal_of("state"), Some("stopped"));
         let again = readout.frame(&stopped, true, 1.0);
-        assert_eq!(again.message, None);
+        assert_eq!(again.say, Say::Nothing);
         assert_eq!(again.signal_of("state"), Some("stopped"));
         stopped.shell.as_mut().unwrap().session = 2;
         let next_shell = readout.frame(&stopped, true, 2.0);
-        assert!(
-            next_shell.message.is_some(),
+        assert_ne!(
+            next_shell.say,
+            Say::Nothing,
             "another shell's failure is said"
         );
     }
