@@ -87,6 +87,11 @@ test-browser: deps-build deps-browser
 	  WASM_BINDGEN_TEST_WEBDRIVER_JSON=tests/webdriver.json CHROMEDRIVER=$$(command -v chromedriver) \
 	  cargo test --target $(TARGET) --test browser
 
+## The command line the file and page tests run: the test profile's build, whose
+## dependencies `cargo test` has built already (about 20 s, against a minute for a release
+## build of its own from a fresh clone; the tests take as long with either).
+TESTED_CLI := target/debug/seashells
+
 ## Page tests: the whole suite on Chromium, and the smoke suite of tests/page/engines.test.mjs
 ## on Firefox and WebKit (run alone, it takes Chromium too: every check it makes there, the
 ## other files make on Chromium already); all under Xvfb, which the headed engines need
@@ -96,11 +101,6 @@ XVFB := xvfb-run -a -s '-screen 0 1600x1200x24'
 test-page: build deps-browser
 	cargo build --profile test --bin seashells
 	SEASHELLS=$(TESTED_CLI) ENGINES=firefox,webkit $(XVFB) node --test --test-concurrency=1 tests/page/
-
-## The command line the file and page tests run: the test profile's build, whose
-## dependencies `cargo test` has built already (about 20 s, against a minute for a release
-## build of its own from a fresh clone; the tests take as long with either).
-TESTED_CLI := target/debug/seashells
 
 ## Exported files read back by third-party libraries and checkers.
 test-files: deps-build deps-check
