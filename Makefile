@@ -22,7 +22,7 @@ export NPM_INSTALLED := const fs = require('fs'); \
     try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
     catch { return false; } }) ? 0 : 1);
 
-.PHONY: run test build bench fuzz deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
+.PHONY: run test build tested-cli bench fuzz deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
@@ -92,19 +92,20 @@ test-browser: deps-build deps-browser
 ## build of its own from a fresh clone; the tests take as long with either).
 TESTED_CLI := target/debug/seashells
 
+tested-cli:
+	cargo build --profile test --bin seashells
+
 ## Page tests: the whole suite on Chromium, and the smoke suite of tests/page/engines.test.mjs
 ## on Firefox and WebKit (run alone, it takes Chromium too: every check it makes there, the
 ## other files make on Chromium already); all under Xvfb, which the headed engines need
 ## (headless Chromium ignores it).
 XVFB := xvfb-run -a -s '-screen 0 1600x1200x24'
 
-test-page: build deps-browser
-	cargo build --profile test --bin seashells
+test-page: build deps-browser tested-cli
 	SEASHELLS=$(TESTED_CLI) ENGINES=firefox,webkit $(XVFB) node --test --test-concurrency=1 tests/page/
 
 ## Exported files read back by third-party libraries and checkers.
-test-files: deps-build deps-check
-	cargo build --profile test --bin seashells
+test-files: deps-build deps-check tested-cli
 	SEASHELLS=$(TESTED_CLI) python3 -m unittest discover --start-directory tests/files --verbose
 
 ## Every phase in turn, each timed; the times are printed at the end (test-page includes the

@@ -138,6 +138,18 @@ fn say(problems: &[Problem]) {
     }
 }
 
+/// Sets the signals and says the words the core's [`Readout`] decided on.
+fn tell(signals: &[(&'static str, String)], say: &Say) {
+    for (name, value) in signals {
+        signal(name, value);
+    }
+    match say {
+        Say::Nothing => {}
+        Say::Show(words) => show_message(words),
+        Say::Hide => page::hide_message(),
+    }
+}
+
 /// Whether dragging the field `key` previews the whole pattern: a field of the pattern model
 /// (the colours and the seed have no sliders).
 fn previews(key: &str) -> bool {
@@ -743,16 +755,9 @@ impl App {
             device => device,
         };
         let shown = self.readout.device(device, &self.status, self.in_gallery)?;
-        for (name, value) in &shown.signals {
-            signal(name, value);
-        }
+        tell(&shown.signals, &shown.say);
         if shown.backend.is_some() {
             show_backend(shown.backend);
-        }
-        match shown.say {
-            Say::Nothing => {}
-            Say::Show(words) => show_message(&words),
-            Say::Hide => page::hide_message(),
         }
         Ok(shown.draws)
     }
@@ -980,9 +985,7 @@ impl App {
         };
         self.status = status;
         let shown = self.readout.frame(&self.status, drawn, now());
-        for (name, value) in &shown.signals {
-            signal(name, value);
-        }
+        tell(&shown.signals, &shown.say);
         if let Some((done, total)) = shown.progress {
             if let Some(bar) =
                 element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
@@ -991,9 +994,6 @@ impl App {
                 bar.set_value(done as f64);
             }
             set_text("progress-text", &format!("{done} of {total} rows"));
-        }
-        if let Say::Show(words) = &shown.say {
-            show_message(words);
         }
         if let (true, Some(shell)) = (shown.sizes, &self.status.shell) {
             self.downloads.show_sizes(shell);

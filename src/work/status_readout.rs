@@ -59,7 +59,7 @@ pub struct DeviceShown {
 
 /// What the page is to show after one frame.
 #[derive(Debug, Default, PartialEq)]
-pub struct Shown {
+pub struct FrameShown {
     /// `data-*` signals to set, by name.
     pub signals: Vec<(&'static str, String)>,
     /// The progress bar's rows done and rows in all, when it is to move.
@@ -70,7 +70,7 @@ pub struct Shown {
     pub sizes: bool,
 }
 
-impl Shown {
+impl FrameShown {
     fn signal(&mut self, name: &'static str, value: impl Into<String>) {
         self.signals.push((name, value.into()));
     }
@@ -82,8 +82,8 @@ impl Readout {
     /// settled on, in a frame that shows them: a test reading the rows once settled reads the
     /// last. The state is `grown` only when the shell is grown whole, settled and at rest
     /// ([`ShellStatus::finished`]), with its hashes and counts beside it.
-    pub fn frame(&mut self, status: &ViewStatus, drawn: bool, now: f64) -> Shown {
-        let mut shown = Shown::default();
+    pub fn frame(&mut self, status: &ViewStatus, drawn: bool, now: f64) -> FrameShown {
+        let mut shown = FrameShown::default();
         shown.signal("preview", status.preview_signal());
         let Some(shell) = &status.shell else {
             shown.signal("settled", "false");
@@ -163,7 +163,7 @@ impl Readout {
     }
 
     /// What a frame that drew `shell` shows of it.
-    fn drawn(&mut self, shell: &ShellStatus, shown: &mut Shown) {
+    fn drawn(&mut self, shell: &ShellStatus, shown: &mut FrameShown) {
         shown.signal("rows", shell.rows_done.to_string());
         shown.signal("settled", if shell.settled { "true" } else { "false" });
         let whole = shell.done && shell.settled;
@@ -202,7 +202,7 @@ mod tests {
     use super::*;
     use crate::view::preview::PreviewState;
 
-    impl Shown {
+    impl FrameShown {
         /// The value of signal `name` if this frame sets it (the last, if set twice).
         fn signal_of(&self, name: &str) -> Option<&str> {
             (self.signals.iter().rev())

@@ -4,11 +4,12 @@
 // has built already), or the release build.
 import { execFileSync } from 'node:child_process';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
 
-export const CLI = process.env.SEASHELLS
-  ? new URL(`../../${process.env.SEASHELLS}`, import.meta.url).pathname
-  : new URL('../../target/release/seashells', import.meta.url).pathname;
+export const CLI = resolve(
+  new URL('../../', import.meta.url).pathname,
+  process.env.SEASHELLS ?? 'target/release/seashells',
+);
 const known = new Map();
 
 /** Runs the command line once per distinct call and remembers what it printed. */
