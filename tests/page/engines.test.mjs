@@ -40,7 +40,7 @@ const AUTOMATION_HANG = /The view is drawn on the page's thread: the drawing wor
  * docs/browsers.md, "WebKitGTK: three failures not explained yet"): its web process crashes
  * while a lost context is survived; Kawaguchi's horn stops with a worker's rows out of step
  * with the page's copy; a page never starts growing. Each was seen once in tens of page loads
- * and none came back in 40 to 60 loads of the same test alone. A WebKit test that fails so is
+ * and none came back in 14 to 50 runs of the same test alone. A WebKit test that fails so is
  * run once more in a fresh window, and says so; failing twice fails.
  */
 const WEBKIT_UNEXPLAINED = /session deleted because of page crash or hang|a worker's .+ start at \d+ where the page holds|waiting for state growing,grown,error/;
