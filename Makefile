@@ -120,12 +120,18 @@ test:
 	  if [ $$status != 0 ]; then printf '\nmake test: %s FAILED; the phases run:%s\n' $$phase "$$report"; exit $$status; fi; \
 	done; printf '\nmake test: every phase passed, in %d s:%s\n' $$SECONDS "$$report"
 
-## A long run of the property test over the field table (tests/any_link.rs): FUZZ_CASES links
-## drawn over every field's whole range from a random seed; FUZZ_SEED=N repeats a run.
+## Long runs of the property tests: the field table's (tests/any_link.rs), FUZZ_CASES links
+## drawn over every field's whole range from a random seed (FUZZ_SEED=N repeats a run); and
+## the page's simulator (tests/simulator.rs), SIM_RUNS seeds from SIM_FIRST (make test runs
+## seeds 1 to 60; SEASHELLS_SIM_SEED=N replays one).
 FUZZ_CASES ?= 1000
+SIM_RUNS ?= 5000
+SIM_FIRST ?= 1000
 fuzz: deps-build
 	SEASHELLS_FUZZ_CASES=$(FUZZ_CASES) $(if $(FUZZ_SEED),SEASHELLS_FUZZ_SEED=$(FUZZ_SEED)) \
 	  cargo test --test native any_link:: -- --nocapture
+	SEASHELLS_SIM_RUNS=$(SIM_RUNS) SEASHELLS_SIM_FIRST=$(SIM_FIRST) \
+	  cargo test --test native simulator:: -- --nocapture
 
 ## Benchmarks print figures; they assert nothing. Before them, the one check too long for make
 ## test: every Murex preset at its own resolution against 384³ (make test compares it with 256³).

@@ -28,7 +28,7 @@ use super::download::Downloads;
 use super::gallery::Pictures;
 use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
-use super::panel::{Change, OnChange, Panel};
+use super::panel::{OnChange, Panel};
 use super::planar::PlanarView;
 use super::record::{self, Recording, Step, Support};
 use super::share_panel;
@@ -38,34 +38,28 @@ use super::viewer_handle::{Taken, ViewerHandle};
 use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::export::Download;
-use crate::presets::Preset;
 use crate::render::Canvas;
 use crate::share::lineage::{self, Lineage};
-use crate::share::link::{self, Decoded};
+use crate::share::link;
 use crate::share::presentation::{Layout, Presentation};
-use crate::spec::ShellSpec;
-use crate::spec::fields::{SHELL, Section};
-use crate::spec::problem::Problem;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
-use crate::work::shell_change::{ShellChange, Shown};
-use crate::work::status_readout::{Readout, Say};
-use crate::work::viewer_command::{PresetSpec, ViewCommand};
+use crate::work::session::{Edit, Effect, Session};
+use crate::work::status_readout::Say;
+use crate::work::viewer_command::ViewCommand;
 use crate::work::viewer_message::PoolNews;
-use crate::work::viewer_status::{Device, ViewStatus};
+use crate::work::viewer_status::Device;
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlCanvasElement, HtmlInputElement, HtmlProgressElement};
 
-/// Quiet time after an edit before the address bar is updated.
-const URL_DELAY_MS: f64 = 300.0;
-
 pub struct App {
     viewer: ViewerHandle,
-    /// Whether the viewer was last told to hold its growth.
-    held: bool,
+    /// What the page shows and every decision about it (see [`Session`]): this only applies
+    /// its effects.
+    session: Session,
     /// Workers replaced so far in the page's pool and in the drawing worker's.
     deaths: (usize, u32),
     /// The size the main viewer's canvas is shown at, and what the viewer was last told of it
@@ -76,26 +70,14 @@ pub struct App {
     replaced_canvas: Option<HtmlCanvasElement>,
     /// The planar view beside the main viewer, drawn as the viewer says.
     planar: Option<PlanarView>,
-    /// What the viewer said of itself after the last frame (and nothing of a shell just
-    /// loaded until it has).
-    status: ViewStatus,
-    /// What the page last showed of that status.
-    readout: Readout,
     /// Where shells, pictures and pieces grow.
     workers: Rc<RefCell<Workers>>,
     pictures: Pictures,
     map: MapView,
     breed: BreedView,
     downloads: Downloads,
-    current: Option<(&'static Preset, ShellSpec)>,
-    /// How the link asks the page to show the shell: one view or four, the interface.
-    presentation: Presentation,
     panel: Option<Panel>,
     on_change: Option<OnChange>,
-    in_gallery: bool,
-    url_due: Option<f64>,
-    /// Whether growth advances each frame (Play or Pause).
-    playing: bool,
     /// What the browser can record video with (found out after the start).
     support: Rc<RefCell<Support>>,
     /// A video being recorded.
@@ -131,31 +113,55 @@ fn show_drawn_in(viewer: &ViewerHandle) {
     signal("drawnIn", place);
 }
 
-fn say(problems: &[Problem]) {
-    match Problem::report(problems) {
-        Some(report) => show_message(&report),
-        None => page::hide_message(),
-    }
-}
-
-/// Sets the signals and says the words the core's [`Readout`] decided on.
-fn tell(signals: &[(&'static str, String)], say: &Say) {
-    for (name, value) in signals {
-        signal(name, value);
-    }
+/// Shows or hides the message line as the session said.
+fn say(say: Say) {
     match say {
         Say::Nothing => {}
-        Say::Show(words) => show_message(words),
+        Say::Show(words) => show_message(&words),
         Say::Hide => page::hide_message(),
     }
 }
 
-/// Whether dragging the field `key` previews the whole pattern: a field of the pattern model
-/// (the colours and the seed have no sliders).
-fn previews(key: &str) -> bool {
-    SHELL
-        .iter()
-        .any(|f| f.key == key && f.section == Section::Pattern)
+/// The speed box shows `speed` rows per frame.
+fn show_speed(speed: f64) {
+    if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
+        input.set_value(&crate::spec::fields::display(speed));
+    }
+}
+
+/// Shows the shell as `presentation` asks: the interface, one view, or Kawaguchi's four with
+/// each pane named over the canvas.
+fn present(presentation: Presentation) {
+    share_panel::apply_ui(presentation.ui);
+    let layout = presentation.layout;
+    if let Some(button) = element("views") {
+        let pressed = if layout == Layout::Four {
+            "true"
+        } else {
+            "false"
+        };
+        dom::attr(&button, "aria-pressed", pressed);
+    }
+    if let Some(viewer) = element("viewer") {
+        let _ = viewer
+            .class_list()
+            .toggle_with_force("four", layout == Layout::Four);
+    }
+    if let Some(labels) = element("panes") {
+        dom::clear(&labels);
+        labels.set_hidden(layout == Layout::Single);
+        for place in arrangement(layout) {
+            let label = dom::create("span", "pane", Some(place.name));
+            let style = label.style();
+            for (property, fraction) in ["left", "top", "width", "height"]
+                .into_iter()
+                .zip(place.viewport)
+            {
+                let _ = style.set_property(property, &format!("{}%", fraction * 100.0));
+            }
+            dom::append(&labels, &[&label]);
+        }
+    }
 }
 
 /// Marks the main canvas as drawn at a recording's size, which the page shows scaled to fit
@@ -182,26 +188,19 @@ impl App {
             .map(PlanarView::new);
         Self {
             viewer,
-            held: false,
+            session: Session::default(),
             deaths: (0, 0),
             shown,
             told_shown: (0, 0, 0.0),
             replaced_canvas: None,
             planar,
-            status: ViewStatus::default(),
-            readout: Readout::default(),
             workers,
             pictures,
             map: MapView::default(),
             breed: BreedView::default(),
             downloads: Downloads::default(),
-            current: None,
-            presentation: Presentation::default(),
             panel: None,
             on_change: None,
-            in_gallery: false,
-            url_due: None,
-            playing: false,
             support: Rc::new(RefCell::new(Support::Unasked)),
             recording: None,
             moving: None,
@@ -215,7 +214,7 @@ impl App {
 
     /// Whether the page is embedded in another (an interface other than the full one).
     pub fn embedded(&self) -> bool {
-        self.presentation.ui.embedded()
+        self.session.presentation().ui.embedded()
     }
 
     /// The panel's callback, which needs the shared handle of the app itself.
@@ -229,93 +228,84 @@ impl App {
 
     /// Whether a shell is shown (the gallery shows none).
     pub fn has_shell(&self) -> bool {
-        self.current.is_some()
+        self.session.current().is_some()
     }
 
-    /// Follows the URL fragment (closing the parameter map, whose tiles are links): a shell,
-    /// or a lineage of shells bred from one, shown with its last parent behind it.
+    /// Follows the URL fragment, as the session decides.
     pub fn route(&mut self) {
-        self.map
-            .close(&mut self.workers.borrow_mut(), &mut self.pictures);
         let fragment = location_hash();
         activity::set(format!("opening the link {fragment}"));
-        if fragment.trim_start_matches('#').is_empty() {
-            self.close_breeding();
-            self.stop_recording("you went back to the gallery");
-            self.present(Presentation::default());
-            self.show(true);
-            page::hide_message();
-            signal("state", "gallery");
-            return;
-        }
-        let Decoded {
-            preset,
-            spec,
-            presentation,
-            lineage,
-            mut problems,
-        } = link::decode(&fragment);
-        let (preset, spec) = match lineage {
-            Some(lineage) => {
-                self.stop_recording("you chose to breed shells");
-                let (parent, spec, said) = self.breed.open(
-                    preset,
-                    &spec,
-                    &lineage,
+        let still = share_panel::reduced_motion();
+        self.session.route(&fragment, still, now());
+        self.apply();
+    }
+
+    /// Does what the session decided, in order.
+    fn apply(&mut self) {
+        for effect in self.session.take_effects() {
+            match effect {
+                Effect::View(command) => self.viewer.command(command),
+                Effect::Signal(name, value) => signal(name, &value),
+                Effect::Text(id, words) => set_text(id, &words),
+                Effect::Say(words) => say(words),
+                Effect::Gallery(gallery) => self.show(gallery),
+                Effect::Title(title) => page::document().set_title(&title),
+                Effect::Loaded(preset, spec) => {
+                    set_text("title", &preset.name);
+                    set_text("source", &preset.source);
+                    show_speed(spec.growth.speed);
+                    match (&self.panel, &self.on_change, element("panel-fields")) {
+                        (Some(panel), _, _) if panel.fits(&spec) => panel.refresh(&spec),
+                        (_, Some(on_change), Some(container)) => {
+                            self.panel = Some(Panel::build(&container, &spec, on_change))
+                        }
+                        _ => {}
+                    }
+                }
+                Effect::Panel(spec) => {
+                    if let Some(panel) = &self.panel {
+                        panel.refresh(&spec);
+                    }
+                }
+                Effect::Share(fragment) => {
+                    share_panel::show_qr(&format!("{}#{fragment}", share_panel::page_url()))
+                }
+                Effect::SpeedBox(speed) => show_speed(speed),
+                Effect::Present(presentation) => present(presentation),
+                Effect::StopRecording(why) => self.stop_recording(why),
+                Effect::CloseMap => self
+                    .map
+                    .close(&mut self.workers.borrow_mut(), &mut self.pictures),
+                Effect::Breed(breeding) => self.breed.open(
+                    *breeding,
                     &mut self.workers.borrow_mut(),
                     &mut self.pictures,
-                );
-                problems.extend(said);
-                (parent, spec)
-            }
-            None => {
-                self.close_breeding();
-                (preset, spec)
-            }
-        };
-        say(&problems);
-        self.present(presentation);
-        self.show(false);
-        // An embed for a reader who asked for less motion: the grown shell, still.
-        let still = presentation.ui.embedded() && share_panel::reduced_motion();
-        match self.change_to(preset, &spec, still) {
-            ShellChange::Same => {}
-            ShellChange::Restyle => self.restyle(preset, spec),
-            ShellChange::Grow { finish } => {
-                self.load(preset, spec, finish);
-                if still {
-                    self.set_playing(false);
+                ),
+                Effect::CloseBreeding => self
+                    .breed
+                    .close(&mut self.workers.borrow_mut(), &mut self.pictures),
+                Effect::UpdateAddress => self.update_url(),
+                Effect::Progress(done, total) => {
+                    if let Some(bar) =
+                        element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
+                    {
+                        bar.set_max(total as f64);
+                        bar.set_value(done as f64);
+                    }
+                    set_text("progress-text", &format!("{done} of {total} rows"));
                 }
+                Effect::Sizes => {
+                    if let Some(shell) = &self.session.status().shell {
+                        self.downloads.show_sizes(shell);
+                    }
+                }
+                Effect::Backend(backend) => show_backend(Some(backend)),
             }
         }
     }
 
-    /// What asking for `spec` of `preset` does to the shell shown.
-    fn change_to(&self, preset: &Preset, spec: &ShellSpec, finish: bool) -> ShellChange {
-        let shown = self.current.as_ref().map(|(preset, spec)| Shown {
-            preset,
-            spec,
-            grown_whole: self.status.shell.as_ref().is_some_and(|s| s.done),
-        });
-        ShellChange::of(shown, preset, spec, finish)
-    }
-
-    /// Shows the shell shown in the material of `spec` ([`ShellChange::Restyle`]): its growth,
-    /// its recording and its status go on.
-    fn restyle(&mut self, preset: &'static Preset, spec: ShellSpec) {
-        self.viewer
-            .command(ViewCommand::Restyle(PresetSpec::new(preset, spec.clone())));
-        if let Some(panel) = &self.panel {
-            panel.refresh(&spec);
-        }
-        self.current = Some((preset, spec));
-        if let Some(link) = self.link() {
-            share_panel::show_qr(&link);
-        }
-    }
-
+    /// Shows the gallery, or the viewer: the pictures are asked for or paused.
     fn show(&mut self, gallery: bool) {
-        self.in_gallery = gallery;
         let mut workers = self.workers.borrow_mut();
         if gallery {
             self.pictures.ask(&mut workers);
@@ -329,225 +319,64 @@ impl App {
         }
         page::place_no_3d(!gallery);
         signal("view", if gallery { "gallery" } else { "viewer" });
-        let title = match (&self.current, gallery) {
-            (Some((p, _)), false) => format!("{} — Seashells", p.name),
-            _ => "Seashells".to_string(),
-        };
-        page::document().set_title(&title);
     }
 
-    /// Shows `spec`, grown from its apex (with `finish`, to its end at once: see
-    /// [`ShellChange`] for when).
-    fn load(&mut self, preset: &'static Preset, spec: ShellSpec, finish: bool) {
-        self.stop_recording("the shell was changed");
-        signal("state", "loading");
-        signal("patternHash", "");
-        signal("mesh", "");
-        self.viewer.command(ViewCommand::Load {
-            shell: PresetSpec::new(preset, spec.clone()),
-            finish,
-        });
-        self.status = ViewStatus::default();
-        set_text("title", &preset.name);
-        set_text("source", &preset.source);
-        page::document().set_title(&format!("{} — Seashells", preset.name));
-        if let Some(speed) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
-            speed.set_value(&crate::spec::fields::display(spec.growth.speed));
-        }
-        match (&self.panel, &self.on_change, element("panel-fields")) {
-            (Some(panel), _, _) if panel.fits(&spec) => panel.refresh(&spec),
-            (_, Some(on_change), Some(container)) => {
-                self.panel = Some(Panel::build(&container, &spec, on_change))
-            }
-            _ => {}
-        }
-        self.current = Some((preset, spec));
-        if let Some(link) = self.link() {
-            share_panel::show_qr(&link);
-        }
-        self.set_playing(true);
-    }
-
-    /// A value changed in the panel: read it as a link's value. Set, growth restarts with the
-    /// result, or the grown shell is drawn again when only its material changed; passed by a
-    /// dragged slider of the pattern, the planar view shows the whole pattern of the result
-    /// while the shell waits, and by one of the material, the shell is drawn in it.
-    pub fn edit(&mut self, key: &str, value: String, change: Change) {
+    /// A value changed in the panel: the session decides what it does.
+    pub fn edit(&mut self, key: &str, value: String, edit: Edit) {
         activity::set(format!("applying {key}={value}"));
-        let Some((preset, spec)) = &self.current else {
-            return;
-        };
-        let Decoded {
-            preset,
-            spec: next,
-            problems,
-            ..
-        } = link::with(preset, spec, key, &value);
-        if change == Change::Set {
-            // The shell edited is no longer the parent of the offspring shown.
-            self.close_breeding();
-        }
-        if change == Change::Moving {
-            if previews(key) {
-                say(&problems);
-                self.viewer
-                    .command(ViewCommand::Preview(link::encode(preset, &next)));
-            } else if self.change_to(preset, &next, false) == ShellChange::Restyle {
-                // A material slider dragged: the grown shell follows it.
-                self.viewer
-                    .command(ViewCommand::Restyle(PresetSpec::new(preset, next)));
-            }
-            return;
-        }
-        self.viewer.command(ViewCommand::EndPreview);
-        say(&problems);
-        match self.change_to(preset, &next, false) {
-            ShellChange::Same => {
-                if let (Some(panel), Some((_, s))) = (&self.panel, &self.current) {
-                    panel.refresh(s);
-                }
-                return;
-            }
-            ShellChange::Restyle => self.restyle(preset, next),
-            ShellChange::Grow { finish } => self.load(preset, next, finish),
-        }
-        self.url_due = Some(now() + URL_DELAY_MS);
-    }
-
-    /// The link of what is shown, as it is shown: the shell, or the lineage bred to it.
-    fn fragment(&self) -> Option<String> {
-        let shell = || self.current.as_ref().map(|(p, s)| link::encode(p, s));
-        self.breed.link().or_else(shell).map(|link| {
-            let mut fragment = format!("#{link}");
-            self.presentation.write(&mut fragment);
-            fragment
-        })
-    }
-
-    /// The whole link of what is shown, in the full interface: what the QR code holds.
-    fn link(&self) -> Option<String> {
-        self.current
-            .as_ref()
-            .map(|(p, s)| format!("{}#{}", share_panel::page_url(), link::encode(p, s)))
-    }
-
-    /// Shows the shell as `presentation` asks: one view, or Kawaguchi's four with each pane
-    /// named over the canvas.
-    fn present(&mut self, presentation: Presentation) {
-        self.presentation = presentation;
-        share_panel::apply_ui(presentation.ui);
-        let layout = presentation.layout;
-        self.viewer.command(ViewCommand::Layout(layout));
-        signal("layout", layout.name());
-        if let Some(button) = element("views") {
-            dom::attr(
-                &button,
-                "aria-pressed",
-                if layout == Layout::Four {
-                    "true"
-                } else {
-                    "false"
-                },
-            );
-        }
-        if let Some(viewer) = element("viewer") {
-            let _ = viewer
-                .class_list()
-                .toggle_with_force("four", layout == Layout::Four);
-        }
-        if let Some(labels) = element("panes") {
-            dom::clear(&labels);
-            labels.set_hidden(layout == Layout::Single);
-            for place in arrangement(layout) {
-                let label = dom::create("span", "pane", Some(place.name));
-                let style = label.style();
-                for (property, fraction) in ["left", "top", "width", "height"]
-                    .into_iter()
-                    .zip(place.viewport)
-                {
-                    let _ = style.set_property(property, &format!("{}%", fraction * 100.0));
-                }
-                dom::append(&labels, &[&label]);
-            }
-        }
+        self.session.edit(key, &value, edit, now());
+        self.apply();
     }
 
     /// Between one view and Kawaguchi's four (the link follows).
     pub fn toggle_views(&mut self) {
-        let mut presentation = self.presentation;
-        presentation.layout = presentation.layout.toggled();
-        self.present(presentation);
-        self.update_url();
+        self.session.toggle_views();
+        self.apply();
     }
 
+    /// Writes what is shown in the address bar, in place of the current entry (Back still
+    /// leaves the viewer).
     fn update_url(&mut self) {
-        self.url_due = None;
-        let Some(fragment) = self.fragment() else {
+        self.session.address_written();
+        let Some(fragment) = self.session.fragment(self.breed.link()) else {
             return;
         };
         if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
-            // Replacing the current entry keeps Back for leaving the viewer.
             let _ =
                 history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&fragment));
         }
     }
 
-    pub fn set_playing(&mut self, playing: bool) {
-        self.playing = playing;
-        self.viewer.command(ViewCommand::Play(playing));
-        signal("playing", if playing { "true" } else { "false" });
-        set_text("play", if playing { "Pause" } else { "Play" });
-    }
-
     pub fn toggle_playing(&mut self) {
-        self.set_playing(!self.playing);
+        self.session.toggle_playing();
+        self.apply();
     }
 
     pub fn restart(&mut self) {
-        self.stop_recording("growth was restarted");
-        if let Some((preset, spec)) = self.current.clone() {
-            self.load(preset, spec, false);
-        }
+        self.session.restart();
+        self.apply();
     }
 
     /// Grows one row, paused.
     pub fn step(&mut self) {
-        self.stop_recording("growth was moved by hand");
-        self.set_playing(false);
-        self.viewer.command(ViewCommand::Grow(1));
+        self.session.step();
+        self.apply();
     }
 
     /// Grows the shell to its end at once.
     pub fn finish(&mut self) {
-        self.stop_recording("growth was moved by hand");
-        self.viewer.command(ViewCommand::Finish);
+        self.session.finish();
+        self.apply();
     }
 
     /// Sets the growth speed in rows per frame (part of the link; growth goes on).
     pub fn set_speed(&mut self, speed: f64) {
-        let Some((_, spec)) = &mut self.current else {
-            return;
-        };
-        let field = SHELL
-            .iter()
-            .find(|f| f.key == "growth.speed")
-            .map(|f| f.kind);
-        let speed = match field {
-            Some(crate::spec::fields::Kind::Real { min, max, .. }) => speed.clamp(min, max),
-            _ => speed,
-        };
-        spec.growth.speed = speed;
-        self.viewer.command(ViewCommand::Speed(speed));
-        if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
-            input.set_value(&crate::spec::fields::display(speed));
-        }
-        self.url_due = Some(now() + URL_DELAY_MS);
+        self.session.set_speed(speed, now());
+        self.apply();
     }
 
     pub fn speed(&self) -> f64 {
-        self.current
-            .as_ref()
-            .map_or(1.0, |(_, spec)| spec.growth.speed)
+        self.session.speed()
     }
 
     pub fn reset_camera(&mut self) {
@@ -577,10 +406,10 @@ impl App {
 
     /// Copies the `<iframe>` that embeds what is shown, in the interface chosen beside it.
     pub fn copy_embed(&mut self) {
-        if let Some((preset, spec)) = &self.current {
+        if let Some((preset, spec)) = self.session.current() {
             let presentation = Presentation {
                 ui: share_panel::chosen_ui(),
-                ..self.presentation
+                ..self.session.presentation()
             };
             let snippet =
                 share_panel::snippet(&link::encode(preset, spec), presentation, &preset.name);
@@ -620,14 +449,12 @@ impl App {
             set_text("record-status", &support.note());
             return;
         }
-        let Some((preset, spec)) = self.current.clone() else {
+        let Some((preset, spec)) = self.session.record(now()) else {
             return;
         };
-        self.close_map();
-        self.close_breeding();
+        self.apply();
         let rows = spec.growth.rows.max(2) as usize;
         let speed = spec.growth.speed;
-        self.load(preset, spec, false);
         let plan = RecordingPlan::new(rows, speed, record::options());
         let size = (plan.width, plan.height);
         match Recording::start(plan, preset.id, &support) {
@@ -754,12 +581,9 @@ impl App {
             }
             device => device,
         };
-        let shown = self.readout.device(device, &self.status, self.in_gallery)?;
-        tell(&shown.signals, &shown.say);
-        if shown.backend.is_some() {
-            show_backend(shown.backend);
-        }
-        Ok(shown.draws)
+        let draws = self.session.device(device);
+        self.apply();
+        draws
     }
 
     /// One animation frame.
@@ -856,15 +680,8 @@ impl App {
             self.canvas_replaced(&element);
             self.replaced_canvas = Some(element);
         }
-        self.held = false;
-        self.viewer
-            .command(ViewCommand::Layout(self.presentation.layout));
-        self.viewer
-            .command(ViewCommand::Background(page::background()));
-        self.status = ViewStatus::default();
-        if let Some((preset, spec)) = self.current.clone() {
-            self.load(preset, spec, false);
-        }
+        self.session.viewer_replaced(page::background());
+        self.apply();
     }
 
     /// Tells the viewer the size its canvas is shown at, when the page's layout or the pixel
@@ -902,13 +719,9 @@ impl App {
             return Ok(());
         }
         self.take_replies();
-        // The map and breeding cover the shell, and the gallery hides it: growth waits
-        // meanwhile.
-        let held = self.recording.is_none() && (self.in_gallery || self.covered());
-        if held != self.held {
-            self.held = held;
-            self.viewer.command(ViewCommand::Hold(held));
-        }
+        let covered = self.covered();
+        self.session.hold(covered, self.recording.is_some());
+        self.apply();
         let Taken {
             frames,
             refused,
@@ -920,9 +733,12 @@ impl App {
                 return Ok(());
             }
         };
-        for message in refused {
-            self.current = None;
-            page::show_error(&message);
+        for (loads, message) in refused {
+            // The refusal of a shell the page has left since is not said.
+            if loads.is_none_or(|l| self.session.is_current(l)) {
+                self.session.refused();
+                page::show_error(&message);
+            }
         }
         if let Some(pool) = pool {
             self.pool_said(pool);
@@ -941,8 +757,7 @@ impl App {
                     planar.apply(update);
                 }
             }
-            // A frame made before the last load reached the viewer shows the shell left.
-            if frame.current {
+            if self.session.is_current(report.loads) {
                 drawn |= report.drawn;
                 status = Some(report.status);
             }
@@ -954,7 +769,7 @@ impl App {
             self.record_frame(recorded);
             return Ok(());
         }
-        if self.in_gallery {
+        if self.session.in_gallery() {
             self.pictures.work(&mut self.workers.borrow_mut());
             signal(
                 "pictures",
@@ -968,10 +783,9 @@ impl App {
             );
             return Ok(());
         }
-        if self.url_due.is_some_and(|due| now() >= due) {
-            self.update_url();
-        }
-        if self.covered() {
+        self.session.address_due(now());
+        self.apply();
+        if covered {
             if let Some(tile) = self.pictures.work(&mut self.workers.borrow_mut()) {
                 self.map.shown(tile, Ok(()));
                 self.breed.shown(tile, Ok(()));
@@ -983,27 +797,14 @@ impl App {
             // A viewer in a worker sent no frame since the page's last.
             return Ok(());
         };
-        self.status = status;
-        let shown = self.readout.frame(&self.status, drawn, now());
-        tell(&shown.signals, &shown.say);
-        if let Some((done, total)) = shown.progress {
-            if let Some(bar) =
-                element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
-            {
-                bar.set_max(total as f64);
-                bar.set_value(done as f64);
-            }
-            set_text("progress-text", &format!("{done} of {total} rows"));
-        }
-        if let (true, Some(shell)) = (shown.sizes, &self.status.shell) {
-            self.downloads.show_sizes(shell);
-        }
+        self.session.viewed(status, drawn, now());
+        self.apply();
         Ok(())
     }
 
     /// Takes in what the workers sent back: the shell's growth and pieces go to the viewer,
     /// gallery shells to the pictures; a worker replaced with the shell's session has it grown
-    /// again where the page's copy stands.
+    /// again where the page's copy stands once the replies it sent before are in.
     fn take_replies(&mut self) {
         let polled = self.workers.borrow_mut().poll();
         if let Some(replaced) = &polled.replaced {
@@ -1016,9 +817,7 @@ impl App {
                 set_text("workers-status", &words);
             }
         }
-        if let Some(lost) = polled.sessions_lost {
-            self.viewer.resume(lost);
-        }
+        let mut shell = Vec::new();
         for (request, reply) in polled.replies {
             match (request, reply) {
                 (Request::Whole { job, .. }, Reply::Grown { result, .. }) => {
@@ -1028,13 +827,12 @@ impl App {
                     }
                 }
                 (_, Reply::Tiled { job, result }) => self.map.take(job, result),
-                (request, reply) => {
-                    if let Err(message) = self.viewer.take(&request, reply) {
-                        self.current = None;
-                        page::show_error(&message);
-                    }
-                }
+                answered => shell.push(answered),
             }
+        }
+        if let Err(message) = self.viewer.take_all(shell, polled.sessions_lost) {
+            self.session.refused();
+            page::show_error(&message);
         }
     }
 
@@ -1057,12 +855,12 @@ impl App {
 
     /// Shows the parameter map of the shell shown.
     pub fn open_map(&mut self) {
-        self.stop_recording("the map covered the shell");
-        self.close_breeding();
-        if let Some((preset, spec)) = &self.current {
+        let shown = self.session.open_map(now());
+        self.apply();
+        if let Some((preset, spec)) = shown {
             self.map.open(
                 preset,
-                spec,
+                &spec,
                 &mut self.workers.borrow_mut(),
                 &mut self.pictures,
             );
@@ -1071,7 +869,7 @@ impl App {
 
     /// Draws the map anew over the axes its controls now describe.
     pub fn draw_map(&mut self) {
-        if let Some((preset, spec)) = &self.current {
+        if let Some((preset, spec)) = self.session.current() {
             self.map.draw(
                 preset,
                 spec,
@@ -1098,7 +896,7 @@ impl App {
 
     /// Breeds from the shell shown: it stands among its first eight offspring.
     pub fn open_breeding(&mut self) {
-        if let Some((preset, spec)) = &self.current {
+        if let Some((preset, spec)) = self.session.current() {
             let lineage = Lineage::default();
             let link = format!(
                 "{}&{}={}",
@@ -1107,16 +905,6 @@ impl App {
                 lineage.write()
             );
             let _ = web_sys::window().map(|w| w.location().set_hash(&link));
-        }
-    }
-
-    /// Leaves breeding where the link stays: the shell shown is the last parent, and the link
-    /// becomes its own.
-    fn close_breeding(&mut self) {
-        if self.breed.is_open() {
-            self.breed
-                .close(&mut self.workers.borrow_mut(), &mut self.pictures);
-            self.url_due = Some(now());
         }
     }
 

@@ -9,10 +9,7 @@ use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
-use crate::presets::Preset;
 use crate::share::breeding::{Breeding, PARENT};
-use crate::share::lineage::Lineage;
-use crate::spec::{Problem, ShellSpec};
 use wasm_bindgen::JsCast;
 use web_sys::HtmlInputElement;
 
@@ -53,21 +50,10 @@ impl BreedView {
         self.breeding.is_some()
     }
 
-    /// Shows the generation that `lineage` leads to from `spec` (a variant of `preset`) and
-    /// starts drawing it; returns its parent, the shell shown behind it, and what of the lineage
-    /// could not be followed.
-    pub fn open(
-        &mut self,
-        preset: &'static Preset,
-        spec: &ShellSpec,
-        lineage: &Lineage,
-        workers: &mut Workers,
-        pictures: &mut Pictures,
-    ) -> (&'static Preset, ShellSpec, Vec<Problem>) {
+    /// Shows the generation `breeding` has come to (the session replayed its lineage; its
+    /// parent is the shell shown behind it) and starts drawing it.
+    pub fn open(&mut self, mut breeding: Breeding, workers: &mut Workers, pictures: &mut Pictures) {
         self.stop(workers, pictures);
-        let (mut breeding, problems) = Breeding::new(preset, spec, lineage);
-        let parent = breeding.parent();
-        let shell = (parent.preset, parent.spec.clone());
         if let Some(section) = element("breed") {
             section.set_hidden(false);
         }
@@ -88,7 +74,7 @@ impl BreedView {
             );
             signal("breed", "refused");
             self.breeding = Some(breeding);
-            return (shell.0, shell.1, problems);
+            return;
         }
         let mut drawn = Vec::new();
         for (index, tile) in breeding.tiles().iter().enumerate() {
@@ -153,7 +139,6 @@ impl BreedView {
         );
         signal_filled("breed", breeding.finished());
         self.breeding = Some(breeding);
-        (shell.0, shell.1, problems)
     }
 
     /// Hides the view and stops drawing its tiles.

@@ -232,21 +232,15 @@ fn frame(run: &mut Running) -> bool {
             None,
         );
     }
-    if let Some(lost) = polled.sessions_lost {
-        run.viewer.resume(lost);
-    }
-    for (request, reply) in polled.replies {
-        if let Err(message) = run.viewer.take(&request, reply) {
-            run.viewer.unload();
-            let loads = Some(run.viewer.loads());
-            post(
-                &ViewerNews::Refused {
-                    loads,
-                    why: message,
-                },
-                None,
-            );
-        }
+    if let Err(message) = run.viewer.take_all(polled.replies, polled.sessions_lost) {
+        let loads = Some(run.viewer.loads());
+        post(
+            &ViewerNews::Refused {
+                loads,
+                why: message,
+            },
+            None,
+        );
     }
     let frame = run.viewer.run_frame();
     run.workers.borrow_mut().send();

@@ -8,6 +8,7 @@ use super::dom::{append, attr, clear, create, typed};
 use crate::share::link::{flatten, format_value};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, Section, display, fields};
+use crate::work::session::Edit;
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::rc::Rc;
@@ -18,15 +19,8 @@ use web_sys::{Element, Event, HtmlInputElement, HtmlOptionElement, HtmlSelectEle
 /// Fields with a control of their own elsewhere on the page.
 const ELSEWHERE: &[&str] = &["growth.speed"];
 
-/// Whether a value is set, or passed by a slider still being dragged.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Change {
-    Moving,
-    Set,
-}
-
 /// What the panel calls when a value changes: (key, value as link text, which change).
-pub type OnChange = Rc<dyn Fn(&str, String, Change)>;
+pub type OnChange = Rc<dyn Fn(&str, String, Edit)>;
 
 /// The controls that show one field.
 enum Control {
@@ -75,7 +69,7 @@ fn report(
     let on_change = Rc::clone(on_change);
     listen(target, "change", move |e| {
         if let Some(v) = read(&e) {
-            on_change(key, v, Change::Set);
+            on_change(key, v, Edit::Set);
         }
     });
 }
@@ -121,12 +115,12 @@ fn slider(
         if let Some(p) = input(&e).and_then(|i| i.value().parse::<f64>().ok()) {
             let value = display(kind.slider_value(p));
             shown.set_value(&value);
-            moving(key, value, Change::Moving);
+            moving(key, value, Edit::Moving);
         }
     });
     let (value, slid) = (number.clone(), Rc::clone(on_change));
     listen(&range, "change", move |_| {
-        slid(key, value.value(), Change::Set)
+        slid(key, value.value(), Edit::Set)
     });
     report(&number, field.key, on_change, |e| {
         input(e).map(|i| i.value())

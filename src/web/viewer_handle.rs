@@ -61,10 +61,6 @@ pub struct ViewWorker {
     gave_canvas: bool,
     /// Whether the page has sent it a frame since it last said anything.
     ticked: bool,
-    /// Loads sent to it ([`FrameReport::loads`]).
-    ///
-    /// [`FrameReport::loads`]: crate::work::viewer_status::FrameReport::loads
-    loads: u32,
     _on_message: Closure<dyn FnMut(MessageEvent)>,
     _on_error: Closure<dyn FnMut(ErrorEvent)>,
 }
@@ -177,7 +173,6 @@ impl ViewWorker {
             crashed: false,
             gave_canvas: false,
             ticked: false,
-            loads: 0,
             _on_message: on_message,
             _on_error: on_error,
         };
@@ -211,9 +206,6 @@ impl ViewWorker {
     }
 
     fn command(&mut self, command: &ViewCommand) {
-        if matches!(command, ViewCommand::Load { .. }) {
-            self.loads = self.loads.wrapping_add(1);
-        }
         let bytes = Uint8Array::from(&encode_command(command)[..]).buffer();
         let message = js_sys::Object::new();
         let _ = Reflect::set(&message, &"command".into(), &bytes);
@@ -244,8 +236,9 @@ pub struct Taken {
     /// The viewer's frames since the page's last (one on the page's thread; as many as the
     /// worker ran, or none, in a worker).
     pub frames: Vec<ViewFrame>,
-    /// Shells that could not be built or grown: why.
-    pub refused: Vec<String>,
+    /// Shells that could not be built or grown: the loads the viewer had taken when it said
+    /// so (none: whatever shell it held), and why.
+    pub refused: Vec<(Option<u32>, String)>,
     /// What the drawing worker's pool said of itself last.
     pub pool: Option<PoolNews>,
 }
@@ -388,7 +381,6 @@ impl ViewerHandle {
                             recorded,
                             ..
                         } => taken.frames.push(ViewFrame {
-                            current: report.loads == w.loads,
                             report: *report,
                             recorded: match (recorded, video) {
                                 (Some(Ok(())), Some(frame)) => Some(Ok(frame)),
@@ -400,11 +392,7 @@ impl ViewerHandle {
                             },
                         }),
                         // The refusal of a shell the page has left since is not said.
-                        ViewerNews::Refused { loads, why }
-                            if loads.is_none_or(|l| l == w.loads) =>
-                        {
-                            taken.refused.push(why);
-                        }
+                        ViewerNews::Refused { loads, why } => taken.refused.push((loads, why)),
                         ViewerNews::Failed(why) => return Err(why),
                         ViewerNews::Pool(pool) => taken.pool = Some(pool),
                         _ => {}
@@ -415,22 +403,17 @@ impl ViewerHandle {
         }
     }
 
-    /// Takes in a reply of the page's pool about the viewer's shell (on the page's thread; a
-    /// viewer in a worker has a pool of its own). Fails with the words to show.
-    pub fn take(&mut self, request: &Request, reply: Reply) -> Result<(), String> {
+    /// Takes in the replies of the page's pool about the viewer's shell, and resumes it when
+    /// the worker holding it was replaced (on the page's thread; a viewer in a worker has a
+    /// pool of its own). Fails with the words to show.
+    pub fn take_all(
+        &mut self,
+        replies: Vec<(Request, Reply)>,
+        sessions_lost: Option<Vec<Request>>,
+    ) -> Result<(), String> {
         match self {
-            ViewerHandle::Here(viewer) => {
-                viewer.take(request, reply).inspect_err(|_| viewer.unload())
-            }
+            ViewerHandle::Here(viewer) => viewer.take_all(replies, sessions_lost),
             ViewerHandle::Worker(_) => Ok(()),
-        }
-    }
-
-    /// The page's pool replaced the worker holding the viewer's sessions (on the page's
-    /// thread).
-    pub fn resume(&mut self, lost: Vec<Request>) {
-        if let ViewerHandle::Here(viewer) = self {
-            viewer.resume(lost);
         }
     }
 

@@ -23,9 +23,8 @@ use super::debug;
 use super::scope;
 use crate::view::draw_pacing::HEAVY_BYTES;
 use crate::work::host::{Budget, Host};
-use crate::work::message::{Reply, Request, decode_reply, encode_request};
-use crate::work::pool::{Pool, SESSIONS, size_for};
-use crate::work::wire::WireError;
+use crate::work::message::{Request, decode_reply, encode_request};
+use crate::work::pool::{Polled, Pool, Replaced, SESSIONS, WorkerEvent, size_for};
 use js_sys::{Array, Uint8Array};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -33,27 +32,11 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
-/// What a worker's events leave for the next frame: a reply, read from its bytes when it came
-/// (in the message's own task, not in the frame), or its death.
-enum Event {
-    Reply {
-        slot: usize,
-        generation: u32,
-        reply: Box<Result<(u32, Reply), WireError>>,
-        /// Whether it was read from more than [`HEAVY_BYTES`] and waits a frame before it is
-        /// taken in (see [`crate::view::draw_pacing`]).
-        waits: bool,
-    },
-    Died(usize, u32, String),
-}
+type Inbox = Rc<RefCell<Vec<WorkerEvent>>>;
 
-type Inbox = Rc<RefCell<Vec<Event>>>;
-
-/// One Web Worker with its listeners, and its generation (replies of a worker since replaced
-/// are dropped).
+/// One Web Worker with its listeners.
 struct Slot {
     worker: Worker,
-    generation: u32,
     _on_message: Closure<dyn FnMut(MessageEvent)>,
     _on_error: Closure<dyn FnMut(ErrorEvent)>,
 }
@@ -98,52 +81,9 @@ enum Backend {
         slots: Vec<Slot>,
         inbox: Inbox,
         faults: Faults,
-        /// Whether any worker has answered yet: workers that all die before answering
-        /// anything cannot run here (a browser without module workers, say).
-        answered: bool,
     },
     /// The page's own thread.
     Local(Box<Host>),
-}
-
-/// What came back since the last frame.
-#[derive(Default)]
-pub struct Polled {
-    /// Replies with the requests they answer, in the order they came.
-    pub replies: Vec<(Request, Reply)>,
-    /// Whether the worker holding the sessions was replaced: its shells are gone with it,
-    /// and these of its requests were lost unanswered.
-    pub sessions_lost: Option<Vec<Request>>,
-    /// The last worker replaced since the last frame, if any.
-    pub replaced: Option<Replaced>,
-}
-
-/// A worker that died or hung and was replaced.
-pub struct Replaced {
-    /// Workers replaced since the page opened.
-    pub deaths: usize,
-    /// Why this one was, in words.
-    why: String,
-    /// The status line, when the workers were given up for the owner's thread instead.
-    given_up: Option<String>,
-}
-
-impl Replaced {
-    /// The status line's words: none the first time (a worker's death is rare enough to
-    /// redo its work silently once), the count and the cause from the second; where the
-    /// shells grow now, once the workers are given up.
-    pub fn words(&self) -> Option<String> {
-        if let Some(status) = &self.given_up {
-            return Some(status.clone());
-        }
-        (self.deaths >= 2).then(|| {
-            format!(
-                "A worker stopped ({}) for the {} time; it was replaced and its work done again.",
-                self.why,
-                ordinal(self.deaths)
-            )
-        })
-    }
 }
 
 pub struct Workers {
@@ -183,24 +123,26 @@ fn spawn(slot: usize, generation: u32, inbox: &Inbox, name: &str) -> Result<Slot
     let to = Rc::clone(inbox);
     let on_message = Closure::<dyn FnMut(MessageEvent)>::new(move |e: MessageEvent| {
         let bytes = Uint8Array::new(&e.data()).to_vec();
-        to.borrow_mut().push(Event::Reply {
+        to.borrow_mut().push(WorkerEvent::Reply {
             slot,
             generation,
             reply: Box::new(decode_reply(&bytes)),
-            waits: bytes.len() > HEAVY_BYTES,
+            heavy: bytes.len() > HEAVY_BYTES,
         });
     });
     let to = Rc::clone(inbox);
     let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(move |e: ErrorEvent| {
         e.prevent_default();
-        to.borrow_mut()
-            .push(Event::Died(slot, generation, e.message()));
+        to.borrow_mut().push(WorkerEvent::Died {
+            slot,
+            generation,
+            why: e.message(),
+        });
     });
     worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
     worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
     Ok(Slot {
         worker,
-        generation,
         _on_message: on_message,
         _on_error: on_error,
     })
@@ -251,7 +193,6 @@ impl Workers {
                 slots,
                 inbox,
                 faults,
-                answered: false,
             },
             budget_ms,
             worker_growth_ms: query_number("grow-budget").map_or(WORKER_GROWTH_MS, |ms| ms as f64),
@@ -271,13 +212,18 @@ impl Workers {
         &self.status
     }
 
-    /// Milliseconds to grow the shell for in one request, where the page's own thread would
-    /// take `frame_ms`: as much on the page's thread, at least [`WORKER_GROWTH_MS`] on a worker.
-    pub fn growth_budget(&self, frame_ms: f64) -> f64 {
+    /// The least milliseconds one request grows the shell for: none on the page's thread (a
+    /// frame's budget), [`WORKER_GROWTH_MS`] on a worker.
+    pub fn min_growth_ms(&self) -> f64 {
         match self.backend {
-            Backend::Local(_) => frame_ms,
-            Backend::Workers { .. } => frame_ms.max(self.worker_growth_ms),
+            Backend::Local(_) => 0.0,
+            Backend::Workers { .. } => self.worker_growth_ms,
         }
+    }
+
+    /// The pool the requests wait in, for the core's rules to submit to.
+    pub fn pool(&mut self) -> &mut Pool {
+        &mut self.pool
     }
 
     /// Asks for `request` (sent in the next [`Self::poll`]).
@@ -320,10 +266,9 @@ impl Workers {
         }
     }
 
-    /// Sends what waits, replaces workers that died or hang, and returns what came back: a
-    /// reply of more than [`HEAVY_BYTES`], and what came after it, a frame after it was read.
+    /// Sends what waits, replaces workers that died or hang, and returns what came back, as
+    /// the pool's rules take its workers' events in ([`Pool::take_events`]).
     pub fn poll(&mut self) -> Polled {
-        let mut polled = Polled::default();
         self.send();
         let Self {
             pool,
@@ -331,100 +276,47 @@ impl Workers {
             budget_ms,
             ..
         } = self;
-        match backend {
+        let (slots, inbox, faults) = match backend {
             Backend::Local(host) => {
+                let mut polled = Polled::default();
                 for (ticket, reply) in host.work(&now, Budget::Until(now() + *budget_ms)) {
                     if let Some(request) = pool.answered(SESSIONS, ticket, now()) {
                         polled.replies.push((request, reply));
                     }
                 }
+                return polled;
             }
             Backend::Workers {
                 slots,
                 inbox,
                 faults,
-                answered,
-            } => {
-                let mut events = std::mem::take(&mut *inbox.borrow_mut()).into_iter();
-                let mut dead = Vec::new();
-                while let Some(mut event) = events.next() {
-                    if let Event::Reply { waits, .. } = &mut event
-                        && std::mem::take(waits)
-                    {
-                        // Read in this frame's time: taken in, with all that came after it,
-                        // in the next.
-                        let mut inbox = inbox.borrow_mut();
-                        let later: Vec<Event> = std::iter::once(event)
-                            .chain(events.by_ref())
-                            .chain(inbox.drain(..))
-                            .collect();
-                        *inbox = later;
-                        break;
-                    }
-                    match event {
-                        Event::Reply {
-                            slot,
-                            generation,
-                            reply,
-                            ..
-                        } => {
-                            if slots[slot].generation != generation {
-                                continue;
-                            }
-                            let Ok((ticket, reply)) = *reply else {
-                                dead.push((slot, "its reply could not be read".to_string()));
-                                continue;
-                            };
-                            *answered = true;
-                            if let Some(request) = pool.answered(slot, ticket, now()) {
-                                polled.replies.push((request, reply));
-                            }
-                        }
-                        Event::Died(slot, generation, why) => {
-                            if slots[slot].generation == generation {
-                                dead.push((slot, why));
-                            }
-                        }
-                    }
-                }
-                if let Some(slot) = pool.overdue(now()) {
-                    pool.hung();
-                    dead.push((slot, "it did not answer in time".into()));
-                }
-                dead.dedup_by_key(|(slot, _)| *slot);
-                for (slot, why) in dead {
-                    let lost = pool.failed(slot);
-                    if slot == SESSIONS {
-                        polled.sessions_lost = Some(lost);
-                    }
-                    let generation = slots[slot].generation + 1;
-                    match spawn(slot, generation, inbox, faults.next_name()) {
-                        Ok(fresh) => slots[slot] = fresh,
-                        Err(_) => continue,
-                    }
-                    polled.replaced = Some(Replaced {
-                        deaths: pool.deaths(),
-                        why,
-                        given_up: None,
-                    });
-                }
-                if !*answered && pool.deaths() > slots.len() + NEVER_ANSWERED_SPARE {
-                    let why = polled.replaced.take().map_or_else(String::new, |r| r.why);
-                    self.run_here(&mut polled, why);
-                }
+            } => (slots, inbox, faults),
+        };
+        let mut events = std::mem::take(&mut *inbox.borrow_mut());
+        let mut polled = pool.take_events(&mut events, now());
+        // What came while the events were taken in follows what waits for the next frame.
+        let mut held = inbox.borrow_mut();
+        events.append(&mut held);
+        *held = events;
+        drop(held);
+        for (slot, generation, why) in std::mem::take(&mut polled.start) {
+            web_sys::console::info_1(
+                &format!("Worker {slot} of the pool was replaced: {why}.").into(),
+            );
+            // A worker that cannot start is found out by its silence, as a hung one.
+            if let Ok(fresh) = spawn(slot, generation, inbox, faults.next_name()) {
+                slots[slot] = fresh;
             }
+        }
+        if let Some(why) = polled.given_up.clone() {
+            self.run_here(&mut polled, why);
         }
         polled
     }
 
     /// Workers cannot run here: the pool's owner's thread takes their work (a frame's budget
-    /// at a time), and the shells they held are grown again there.
+    /// at a time); the pool has handed back the sessions they held, to be grown again there.
     fn run_here(&mut self, polled: &mut Polled, why: String) {
-        let mut lost = self.pool.collapse();
-        if let Some(earlier) = polled.sessions_lost.take() {
-            lost.splice(0..0, earlier);
-        }
-        polled.sessions_lost = Some(lost);
         self.backend = Backend::Local(Box::default());
         self.worker_growth_ms = self.budget_ms;
         self.status = local_status(&format!(
@@ -438,20 +330,7 @@ impl Workers {
     }
 }
 
-/// Workers beyond the pool's size that may die before any has answered before the pool takes
-/// workers for unable to run here (the page tests make the first two fail on purpose).
-const NEVER_ANSWERED_SPARE: usize = 2;
-
 /// The status line where the pool's owner's thread grows the shells: why.
 fn local_status(why: &str) -> String {
     format!("Growing on {}: {why}.", scope::thread_name())
-}
-
-/// "second", "third", … for the status line.
-fn ordinal(n: usize) -> String {
-    match n {
-        2 => "second".into(),
-        3 => "third".into(),
-        n => format!("{n}th"),
-    }
 }

@@ -188,10 +188,13 @@ impl GrowthSession {
         Ok(Took::Advanced(advance))
     }
 
-    /// The worker holding the shell was replaced, losing `lost` unanswered: through `send`,
-    /// the shell is built again on the fresh one, or grown again to where the page's copy
-    /// stands, and finished if that was asked. A shell whose growth is done or whose pieces
-    /// are being made (the pool asks those again itself) needs nothing.
+    /// The worker holding the shell was replaced, losing `lost` unanswered (its requests and
+    /// those of shells left before it): through `send`, the shell is built again on the fresh
+    /// one, or grown again to where the page's copy stands, and finished if that was asked of
+    /// it. A shell whose growth is done or whose pieces
+    /// are being made (the pool asks those again itself) needs nothing. Called once every
+    /// reply the lost worker sent before it died is taken in: the copy must stand where the
+    /// worker last said it did.
     pub fn resume(&mut self, lost: &[Request], send: &mut dyn FnMut(Request)) {
         let session = self.replica.session();
         self.pending = 0;
@@ -211,9 +214,14 @@ impl GrowthSession {
             return;
         }
         self.pending = 1;
-        if self.finishing || lost.iter().any(|r| matches!(r, Request::Finish { .. })) {
+        let finish_lost = lost
+            .iter()
+            .any(|r| matches!(r, Request::Finish { session: s } if *s == session));
+        if self.finishing || finish_lost {
             send(Request::Finish { session });
             self.pending += 1;
+            // No growth is asked after a Finish: its worker would grow a shell it holds whole.
+            self.finishing = true;
         }
     }
 }

@@ -9,7 +9,8 @@
 //! where that copy is ([`file_writer::FileWriter`]); what the page asks of a viewer and what it
 //! reads of it are plain data ([`viewer_command::ViewCommand`], [`viewer_status::ViewStatus`],
 //! [`planar_update::PlanarUpdate`]), and what the page shows of that status is decided here
-//! too ([`status_readout::Readout`]).
+//! too ([`status_readout::Readout`]). What a viewer decides without its canvas is its core
+//! state, [`viewer_state::ViewerState`]: the web runner only applies it.
 
 pub(crate) mod edge_slots;
 pub mod file_writer;
@@ -19,10 +20,12 @@ pub mod message;
 pub mod planar_update;
 pub mod pool;
 pub mod replica;
+pub mod session;
 pub mod shell_change;
 pub mod slotted_edge;
 pub mod status_readout;
 pub mod viewer_command;
 pub mod viewer_message;
+pub mod viewer_state;
 pub mod viewer_status;
 pub mod wire;

@@ -81,14 +81,15 @@ impl Replica {
     }
 
     /// The copy of a shell grown whole on a worker (a gallery picture): grown, edge included
-    /// in its mesh.
-    pub fn whole(session: u32, whole: WholeShell) -> Self {
+    /// in its mesh. No worker holds it, so its session is 0, which no pool gives out (see
+    /// [`super::pool::Pool::open_session`]).
+    pub fn whole(whole: WholeShell) -> Self {
         let rows = whole.shell.rows;
         let mut grown = Bounds::EMPTY;
         grown.include_vertices(&whole.mesh.vertices);
         let mesh_hash = whole.mesh.content_hash();
         Self {
-            session,
+            session: 0,
             shell: Some(whole.shell),
             mesh: whole.mesh,
             edge: SlottedEdge::default(),

@@ -73,6 +73,12 @@ function freePort() {
   });
 }
 
+/** What a page shows of itself, for a timeout's message: its signals and its status lines. */
+function shown() {
+  const text = (id) => document.getElementById(id)?.textContent?.trim() ?? '';
+  return JSON.stringify({ ...document.body.dataset, workers: text('workers-status'), message: text('message') });
+}
+
 /** A page of any engine, around `driver` (goto, run, element PNG, click, logged errors). */
 class Page {
   constructor(driver) {
@@ -95,7 +101,7 @@ class Page {
     for (;;) {
       const value = await this.evaluate(fn, arg);
       if (value) return value;
-      if (Date.now() > until) throw new Error(`timed out after ${timeout} ms waiting for ${what}`);
+      if (Date.now() > until) throw new Error(`timed out after ${timeout} ms waiting for ${what}; the page shows ${await this.evaluate(shown)}`);
       await new Promise((r) => setTimeout(r, 250));
     }
   }

@@ -1,11 +1,7 @@
-//! How the page shares requests out among its workers: the requests of a session go to the
-//! worker that holds sessions (the first), jobs to whichever worker has fewest waiting (at most
-//! [`JOBS_PER_WORKER`] each, so every worker has its next job at hand when it finishes one,
-//! and a job can still be cancelled before it is sent). Every request sent is remembered until
-//! its reply comes, so that when a worker dies or hangs (no reply within the request's
-//! allowance) its jobs are sent again, and the session's owner learns what it lost.
+//! The pool's requests: which worker each goes to, which wait, which were sent and not yet
+//! answered, and what to send again when a worker dies or hangs.
 
-use super::message::Request;
+use crate::work::message::Request;
 use std::collections::VecDeque;
 
 /// Jobs a worker holds at once.
@@ -27,10 +23,13 @@ struct Sent {
 
 /// One worker's requests in flight.
 #[derive(Clone, Debug, Default, PartialEq)]
-struct Slot {
+pub(super) struct Slot {
     sent: Vec<Sent>,
     /// When it last answered (or was given work while idle): a request's wait starts then.
     quiet_since: f64,
+    /// Which worker holds the slot: each replacement is the next generation, and replies of
+    /// an earlier one are dropped.
+    pub(super) generation: u32,
 }
 
 impl Slot {
@@ -50,12 +49,17 @@ pub struct Send {
 /// The requests of the pool's workers.
 #[derive(Clone, Debug)]
 pub struct Pool {
-    slots: Vec<Slot>,
+    pub(super) slots: Vec<Slot>,
     /// Jobs waiting for a worker, with their tickets.
     waiting: VecDeque<(u32, Request)>,
     next_ticket: u32,
+    /// The last session number given out (see [`Self::open_session`]).
+    last_session: u32,
     /// Workers that died or hung so far.
-    deaths: usize,
+    pub(super) deaths: usize,
+    /// Whether any worker has answered yet: workers that all die before answering anything
+    /// cannot run here (a browser without module workers, say).
+    pub(super) answered_any: bool,
     /// The share of each request's allowance a worker is given before it is held to hang: 1
     /// in the product; less under the page tests' `hang-workers` switch, so that a hang is
     /// found out in seconds.
@@ -72,7 +76,9 @@ impl Pool {
             slots: vec![Slot::default(); size.max(1)],
             waiting: VecDeque::new(),
             next_ticket: 1,
+            last_session: 0,
             deaths: 0,
+            answered_any: false,
             patience: 1.0,
         }
     }
@@ -90,6 +96,16 @@ impl Pool {
     /// Workers that died or hung so far.
     pub fn deaths(&self) -> usize {
         self.deaths
+    }
+
+    /// A session number no owner of this pool was given before. The sessions' worker holds
+    /// one shell and one preview, whoever asked for them: two viewers sharing the pool (the
+    /// page's viewer and the one that takes its place when it cannot draw) must never both
+    /// number a shell 1, or the replies of the one that left would be taken in by the other
+    /// as its own. Numbers start at 1: 0 is a shell no worker holds.
+    pub fn open_session(&mut self) -> u32 {
+        self.last_session = self.last_session.wrapping_add(1);
+        self.last_session
     }
 
     /// Takes a request: a session's is to be sent at once, a job when a worker is free (see
@@ -160,6 +176,11 @@ impl Pool {
         })
     }
 
+    /// Requests waiting to be sent.
+    pub fn waiting(&self) -> usize {
+        self.waiting.len()
+    }
+
     /// Jobs sent and not yet answered, by slot.
     pub fn in_flight(&self) -> usize {
         self.slots.iter().map(|s| s.sent.len()).sum()
@@ -201,7 +222,8 @@ impl Pool {
     }
 
     /// Takes back what worker `slot` held: its jobs wait again, first in line; its session
-    /// requests are returned.
+    /// requests are returned, and those of the sessions' worker not sent yet with them (the
+    /// fresh worker holds none of the sessions they are for: their owner asks again).
     fn take_back(&mut self, slot: usize) -> Vec<Request> {
         let lost = std::mem::take(&mut self.slots[slot].sent);
         let mut sessions = Vec::new();
@@ -213,6 +235,13 @@ impl Pool {
             }
         }
         sessions.reverse();
+        if slot == SESSIONS {
+            let (unsent, jobs): (VecDeque<_>, VecDeque<_>) = std::mem::take(&mut self.waiting)
+                .into_iter()
+                .partition(|(_, r)| r.is_session());
+            self.waiting = jobs;
+            sessions.extend(unsent.into_iter().map(|(_, r)| r));
+        }
         sessions
     }
 }
@@ -259,6 +288,15 @@ mod tests {
             link: "v=1&preset=stripes".into(),
             rows: 10,
         }
+    }
+
+    #[test]
+    fn session_numbers_are_never_given_twice_even_after_the_pool_collapses() {
+        let mut pool = Pool::new(2);
+        let first = [pool.open_session(), pool.open_session()];
+        pool.collapse();
+        let after = pool.open_session();
+        assert_eq!((first, after), ([1, 2], 3));
     }
 
     #[test]
@@ -327,6 +365,38 @@ mod tests {
         assert_eq!(pool.deaths(), 2);
         assert_eq!(pool.dispatch(16_000.0)[0].request, tile(1));
         assert_eq!(pool.answered(0, sent[0].ticket, 1.0), None);
+    }
+
+    #[test]
+    fn session_requests_not_sent_yet_are_lost_with_the_sessions_worker() {
+        let mut pool = Pool::new(2);
+        pool.submit(Request::Finish { session: 3 });
+        pool.dispatch(0.0);
+        pool.submit(tile(0));
+        pool.submit(Request::Grow {
+            session: 3,
+            rows: 2,
+            budget_ms: 8.0,
+        });
+        let lost = pool.failed(SESSIONS);
+        assert_eq!(
+            lost,
+            [
+                Request::Finish { session: 3 },
+                Request::Grow {
+                    session: 3,
+                    rows: 2,
+                    budget_ms: 8.0
+                }
+            ],
+            "sent first, then waiting"
+        );
+        let again: Vec<Request> = pool.dispatch(1.0).into_iter().map(|s| s.request).collect();
+        assert_eq!(
+            again,
+            [tile(0)],
+            "the job still waits; the session's do not"
+        );
     }
 
     #[test]

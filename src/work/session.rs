@@ -1,0 +1,646 @@
+//! The page's session: what the page shows and every decision it makes about it, without a
+//! page. Events come in as calls (a link followed, a value edited or dragged, play, step,
+//! finish, restart, the speed, one view or four, a frame with what the viewer said of itself,
+//! the graphics device as the viewer found it); what the page is to do comes out as
+//! [`Effect`]s, in order, which `web/app.rs` applies to the DOM, the viewer, the panel, the
+//! gallery, the map, breeding and the recorder, deciding nothing itself. The simulator
+//! (`tests/simulator.rs`) drives this same session with the viewer's core state behind it.
+
+use super::shell_change::{ShellChange, Shown};
+use super::status_readout::{Readout, Say};
+use super::viewer_command::{PresetSpec, ViewCommand};
+use super::viewer_status::{Device, ViewStatus};
+use crate::presets::Preset;
+use crate::share::breeding::Breeding;
+use crate::share::link::{self, Decoded};
+use crate::share::presentation::Presentation;
+use crate::spec::ShellSpec;
+use crate::spec::fields::{SHELL, Section};
+use crate::spec::problem::Problem;
+
+/// Quiet time after an edit before the address bar is updated, milliseconds.
+pub const URL_DELAY_MS: f64 = 300.0;
+
+/// How a value reached the session from the panel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Edit {
+    /// A slider being dragged: previewed, not yet set.
+    Moving,
+    /// Set (a slider let go, a value typed, a choice made).
+    Set,
+}
+
+/// One thing the page is to do.
+pub enum Effect {
+    /// Ask the viewer.
+    View(ViewCommand),
+    /// Set a `data-*` signal on `<body>`.
+    Signal(&'static str, String),
+    /// Write these words in the element of this id.
+    Text(&'static str, String),
+    /// Show or hide the message line.
+    Say(Say),
+    /// Show the gallery (its pictures asked for) or the viewer (the pictures paused).
+    Gallery(bool),
+    /// The document's title.
+    Title(String),
+    /// A shell is loaded, to grow from its apex: its name and source shown, the speed box and
+    /// the panel set to it (the panel built anew when it does not fit it).
+    Loaded(&'static Preset, Box<ShellSpec>),
+    /// The panel shows these values.
+    Panel(Box<ShellSpec>),
+    /// The QR code and the share panel hold the link of this shell (its fragment).
+    Share(String),
+    /// The speed box shows this value.
+    SpeedBox(f64),
+    /// Show the shell as this presentation asks (one view or four, the interface).
+    Present(Presentation),
+    /// Stop a recording under way, for this reason.
+    StopRecording(&'static str),
+    /// Close the parameter map.
+    CloseMap,
+    /// Show the offspring of this breeding, its parent behind them.
+    Breed(Box<Breeding>),
+    /// Close breeding, its parent staying as the shell shown.
+    CloseBreeding,
+    /// Write the address bar's fragment anew (what is shown, as it is shown).
+    UpdateAddress,
+    /// Move the progress bar to these rows done and rows in all.
+    Progress(usize, usize),
+    /// Show the downloads' estimated sizes anew from the shell's counts.
+    Sizes,
+    /// Show this backend as the one the shell is drawn with.
+    Backend(String),
+}
+
+/// The page as the session knows it.
+#[derive(Default)]
+pub struct Session {
+    /// The shell shown (none in the gallery before one is opened, or after one was refused).
+    current: Option<(&'static Preset, ShellSpec)>,
+    presentation: Presentation,
+    in_gallery: bool,
+    /// Whether growth advances each frame (Play or Pause).
+    playing: bool,
+    /// Whether the viewer was last told to hold its growth.
+    held: bool,
+    /// When the address bar is due to be written, after the last edit.
+    url_due: Option<f64>,
+    /// What the viewer said of itself after its last frame of the shell shown.
+    status: ViewStatus,
+    readout: Readout,
+    /// Whether breeding is open (its offspring cover the shell).
+    breeding: bool,
+    /// Loads sent to the viewer: a frame it made before the last reached it is of a shell left.
+    loads: u32,
+    effects: Vec<Effect>,
+}
+
+impl Session {
+    /// What the page is to do, in order, since the last call.
+    pub fn take_effects(&mut self) -> Vec<Effect> {
+        std::mem::take(&mut self.effects)
+    }
+
+    /// The shell shown, if any.
+    pub fn current(&self) -> Option<(&'static Preset, &ShellSpec)> {
+        self.current.as_ref().map(|(p, s)| (*p, s))
+    }
+
+    pub fn presentation(&self) -> Presentation {
+        self.presentation
+    }
+
+    pub fn in_gallery(&self) -> bool {
+        self.in_gallery
+    }
+
+    pub fn playing(&self) -> bool {
+        self.playing
+    }
+
+    /// What the viewer last said of the shell shown.
+    pub fn status(&self) -> &ViewStatus {
+        &self.status
+    }
+
+    fn push(&mut self, effect: Effect) {
+        self.effects.push(effect);
+    }
+
+    fn signal(&mut self, name: &'static str, value: impl Into<String>) {
+        self.push(Effect::Signal(name, value.into()));
+    }
+
+    fn view(&mut self, command: ViewCommand) {
+        if matches!(command, ViewCommand::Load { .. }) {
+            self.loads = self.loads.wrapping_add(1);
+        }
+        self.push(Effect::View(command));
+    }
+
+    /// Says what went wrong with a link or a value, or clears the message line.
+    fn say(&mut self, problems: &[Problem]) {
+        let say = Problem::report(problems).map_or(Say::Hide, Say::Show);
+        self.push(Effect::Say(say));
+    }
+
+    /// Follows the URL fragment `fragment` at `now` (closing the parameter map, whose tiles
+    /// are links): the gallery, a shell, or a lineage of shells bred from one, shown with its
+    /// last parent behind it. An embed for a reader who asked for less motion
+    /// (`reduced_motion`) shows the shell grown whole, still.
+    pub fn route(&mut self, fragment: &str, reduced_motion: bool, now: f64) {
+        self.push(Effect::CloseMap);
+        if fragment.trim_start_matches('#').is_empty() {
+            self.close_breeding(now);
+            self.push(Effect::StopRecording("you went back to the gallery"));
+            self.present(Presentation::default());
+            self.show(true);
+            self.push(Effect::Say(Say::Hide));
+            self.signal("state", "gallery");
+            return;
+        }
+        let Decoded {
+            preset,
+            spec,
+            presentation,
+            lineage,
+            mut problems,
+        } = link::decode(fragment);
+        let (preset, spec) = match lineage {
+            Some(lineage) => {
+                self.push(Effect::StopRecording("you chose to breed shells"));
+                let (breeding, said) = Breeding::new(preset, &spec, &lineage);
+                problems.extend(said);
+                let parent = breeding.parent();
+                let shell = (parent.preset, parent.spec.clone());
+                self.breeding = true;
+                self.push(Effect::Breed(Box::new(breeding)));
+                shell
+            }
+            None => {
+                self.close_breeding(now);
+                (preset, spec)
+            }
+        };
+        self.say(&problems);
+        self.present(presentation);
+        self.show(false);
+        let still = presentation.ui.embedded() && reduced_motion;
+        match self.change_to(preset, &spec, still) {
+            ShellChange::Same => {}
+            ShellChange::Restyle => self.restyle(preset, spec),
+            ShellChange::Grow { finish } => {
+                self.load(preset, spec, finish);
+                if still {
+                    self.set_playing(false);
+                }
+            }
+        }
+    }
+
+    /// What asking for `spec` of `preset` does to the shell shown.
+    fn change_to(&self, preset: &Preset, spec: &ShellSpec, finish: bool) -> ShellChange {
+        let shown = self.current.as_ref().map(|(preset, spec)| Shown {
+            preset,
+            spec,
+            grown_whole: self.status.shell.as_ref().is_some_and(|s| s.done),
+        });
+        ShellChange::of(shown, preset, spec, finish)
+    }
+
+    /// Shows the shell shown in the material of `spec` ([`ShellChange::Restyle`]): its growth,
+    /// its recording and its status go on.
+    fn restyle(&mut self, preset: &'static Preset, spec: ShellSpec) {
+        self.view(ViewCommand::Restyle(PresetSpec::new(preset, spec.clone())));
+        self.push(Effect::Panel(Box::new(spec.clone())));
+        self.push(Effect::Share(link::encode(preset, &spec)));
+        self.current = Some((preset, spec));
+    }
+
+    /// Shows the gallery or the viewer.
+    fn show(&mut self, gallery: bool) {
+        self.in_gallery = gallery;
+        self.push(Effect::Gallery(gallery));
+        let title = match (&self.current, gallery) {
+            (Some((p, _)), false) => format!("{} — Seashells", p.name),
+            _ => "Seashells".to_string(),
+        };
+        self.push(Effect::Title(title));
+    }
+
+    /// Shows `spec`, grown from its apex (with `finish`, to its end at once: see
+    /// [`ShellChange`] for when).
+    fn load(&mut self, preset: &'static Preset, spec: ShellSpec, finish: bool) {
+        self.push(Effect::StopRecording("the shell was changed"));
+        self.signal("state", "loading");
+        self.signal("patternHash", "");
+        self.signal("mesh", "");
+        self.view(ViewCommand::Load {
+            shell: PresetSpec::new(preset, spec.clone()),
+            finish,
+        });
+        self.status = ViewStatus::default();
+        self.push(Effect::Title(format!("{} — Seashells", preset.name)));
+        self.push(Effect::Loaded(preset, Box::new(spec.clone())));
+        self.push(Effect::Share(link::encode(preset, &spec)));
+        self.current = Some((preset, spec));
+        self.set_playing(true);
+    }
+
+    /// A value changed in the panel at `now`, read as a link's value. Set, growth restarts
+    /// with the result, or the grown shell is drawn again when only its material changed;
+    /// dragged (`Edit::Moving`), a slider of the pattern has the planar view show the whole
+    /// pattern of the result while the shell waits, and one of the material has the shell
+    /// drawn in it.
+    pub fn edit(&mut self, key: &str, value: &str, edit: Edit, now: f64) {
+        let Some((preset, spec)) = &self.current else {
+            return;
+        };
+        let Decoded {
+            preset,
+            spec: next,
+            problems,
+            ..
+        } = link::with(preset, spec, key, value);
+        if edit == Edit::Set {
+            // The shell edited is no longer the parent of the offspring shown.
+            self.close_breeding(now);
+        }
+        if edit == Edit::Moving {
+            if previews(key) {
+                self.say(&problems);
+                self.view(ViewCommand::Preview(link::encode(preset, &next)));
+            } else if self.change_to(preset, &next, false) == ShellChange::Restyle {
+                // A material slider dragged: the grown shell follows it.
+                self.view(ViewCommand::Restyle(PresetSpec::new(preset, next)));
+            }
+            return;
+        }
+        self.view(ViewCommand::EndPreview);
+        self.say(&problems);
+        match self.change_to(preset, &next, false) {
+            ShellChange::Same => {
+                if let Some((_, shown)) = &self.current {
+                    self.push(Effect::Panel(Box::new(shown.clone())));
+                }
+                return;
+            }
+            ShellChange::Restyle => self.restyle(preset, next),
+            ShellChange::Grow { finish } => self.load(preset, next, finish),
+        }
+        self.url_due = Some(now + URL_DELAY_MS);
+    }
+
+    /// The fragment of what is shown, as it is shown: the shell, or the lineage bred to it
+    /// (`lineage_link`, breeding's own link while it is open).
+    pub fn fragment(&self, lineage_link: Option<String>) -> Option<String> {
+        let shell = || self.current.as_ref().map(|(p, s)| link::encode(p, s));
+        lineage_link.or_else(shell).map(|link| {
+            let mut fragment = format!("#{link}");
+            self.presentation.write(&mut fragment);
+            fragment
+        })
+    }
+
+    /// Shows the shell as `presentation` asks.
+    fn present(&mut self, presentation: Presentation) {
+        self.presentation = presentation;
+        self.view(ViewCommand::Layout(presentation.layout));
+        self.signal("layout", presentation.layout.name());
+        self.push(Effect::Present(presentation));
+    }
+
+    /// Between one view and Kawaguchi's four (the link follows at once).
+    pub fn toggle_views(&mut self) {
+        let mut presentation = self.presentation;
+        presentation.layout = presentation.layout.toggled();
+        self.present(presentation);
+        self.url_due = None;
+        self.push(Effect::UpdateAddress);
+    }
+
+    pub fn set_playing(&mut self, playing: bool) {
+        self.playing = playing;
+        self.view(ViewCommand::Play(playing));
+        self.signal("playing", if playing { "true" } else { "false" });
+        self.push(Effect::Text(
+            "play",
+            (if playing { "Pause" } else { "Play" }).into(),
+        ));
+    }
+
+    pub fn toggle_playing(&mut self) {
+        self.set_playing(!self.playing);
+    }
+
+    /// Grows the shell shown again from its apex.
+    pub fn restart(&mut self) {
+        self.push(Effect::StopRecording("growth was restarted"));
+        if let Some((preset, spec)) = self.current.clone() {
+            self.load(preset, spec, false);
+        }
+    }
+
+    /// Grows the shell shown again from its apex for a recording: the map and breeding close
+    /// first. Returns the shell, to plan the recording of.
+    pub fn record(&mut self, now: f64) -> Option<(&'static Preset, ShellSpec)> {
+        let (preset, spec) = self.current.clone()?;
+        self.push(Effect::CloseMap);
+        self.close_breeding(now);
+        self.load(preset, spec.clone(), false);
+        Some((preset, spec))
+    }
+
+    /// The parameter map opens over the shell shown: a recording stops and breeding closes.
+    /// Returns the shell, to map the neighbourhood of.
+    pub fn open_map(&mut self, now: f64) -> Option<(&'static Preset, ShellSpec)> {
+        self.push(Effect::StopRecording("the map covered the shell"));
+        self.close_breeding(now);
+        self.current.clone()
+    }
+
+    /// Grows one row, paused.
+    pub fn step(&mut self) {
+        self.push(Effect::StopRecording("growth was moved by hand"));
+        self.set_playing(false);
+        self.view(ViewCommand::Grow(1));
+    }
+
+    /// Grows the shell to its end at once.
+    pub fn finish(&mut self) {
+        self.push(Effect::StopRecording("growth was moved by hand"));
+        self.view(ViewCommand::Finish);
+    }
+
+    /// Sets the growth speed in rows per frame at `now`, read as the link reads it (a speed
+    /// out of range is clamped, and said); growth goes on, and the link follows.
+    pub fn set_speed(&mut self, speed: f64, now: f64) {
+        let Some((preset, spec)) = &self.current else {
+            return;
+        };
+        let Decoded {
+            spec: next,
+            problems,
+            ..
+        } = link::with(preset, spec, "growth.speed", &speed.to_string());
+        let speed = next.growth.speed;
+        if let Some((_, spec)) = &mut self.current {
+            spec.growth.speed = speed;
+        }
+        if !problems.is_empty() {
+            self.say(&problems);
+        }
+        self.view(ViewCommand::Speed(speed));
+        self.push(Effect::SpeedBox(speed));
+        self.url_due = Some(now + URL_DELAY_MS);
+    }
+
+    /// The growth speed of the shell shown (rows per frame).
+    pub fn speed(&self) -> f64 {
+        self.current
+            .as_ref()
+            .map_or(1.0, |(_, spec)| spec.growth.speed)
+    }
+
+    /// Leaves breeding where the link stays: the shell shown is the last parent, and the link
+    /// becomes its own.
+    fn close_breeding(&mut self, now: f64) {
+        if std::mem::take(&mut self.breeding) {
+            self.push(Effect::CloseBreeding);
+            self.url_due = Some(now);
+        }
+    }
+
+    /// The viewer refused the shell shown (it cannot be built): none is shown.
+    pub fn refused(&mut self) {
+        self.current = None;
+    }
+
+    /// Before the viewer's frame: growth waits while the gallery is shown or the map or
+    /// breeding (`covered`) covers the shell, unless a recording is under way.
+    pub fn hold(&mut self, covered: bool, recording: bool) {
+        let held = !recording && (self.in_gallery || covered);
+        if held != self.held {
+            self.held = held;
+            self.view(ViewCommand::Hold(held));
+        }
+    }
+
+    /// Whether the viewer said something (a frame, a refusal) having taken `loads` loads:
+    /// only what it said after the last load the page sent reached it is of the shell shown
+    /// (a viewer in a worker may send a frame before; see
+    /// [`super::viewer_status::FrameReport::loads`]).
+    pub fn is_current(&self, loads: u32) -> bool {
+        loads == self.loads
+    }
+
+    /// The address bar is due to follow the last edit at `now`.
+    pub fn address_due(&mut self, now: f64) {
+        if self.url_due.is_some_and(|due| now >= due) {
+            self.url_due = None;
+            self.push(Effect::UpdateAddress);
+        }
+    }
+
+    /// The address bar was written (a link copied): nothing is due.
+    pub fn address_written(&mut self) {
+        self.url_due = None;
+    }
+
+    /// After a frame of the viewer that drew the shell shown (`drawn`) or not, at `now`: what
+    /// it said of itself (`status`) is shown, as [`Readout::frame`] decides.
+    pub fn viewed(&mut self, status: ViewStatus, drawn: bool, now: f64) {
+        self.status = status;
+        let shown = self.readout.frame(&self.status, drawn, now);
+        for (name, value) in shown.signals {
+            self.signal(name, value);
+        }
+        if shown.say != Say::Nothing {
+            self.push(Effect::Say(shown.say));
+        }
+        if let Some((done, total)) = shown.progress {
+            self.push(Effect::Progress(done, total));
+        }
+        if shown.sizes && self.status.shell.is_some() {
+            self.push(Effect::Sizes);
+        }
+    }
+
+    /// Before a frame: the graphics device as the viewer found it. Returns whether the frame
+    /// may draw; an error with the words to show when no device can be opened again.
+    pub fn device(&mut self, device: Device) -> Result<bool, String> {
+        let shown = self.readout.device(device, &self.status, self.in_gallery)?;
+        for (name, value) in shown.signals {
+            self.signal(name, value);
+        }
+        if shown.say != Say::Nothing {
+            self.push(Effect::Say(shown.say));
+        }
+        if let Some(backend) = shown.backend {
+            self.push(Effect::Backend(backend));
+        }
+        Ok(shown.draws)
+    }
+
+    /// The viewer was replaced (it moved to another thread): it is told what the old one was
+    /// told, and the shell shown grows again from its apex.
+    pub fn viewer_replaced(&mut self, background: [u8; 3]) {
+        self.held = false;
+        self.loads = 0;
+        self.view(ViewCommand::Layout(self.presentation.layout));
+        self.view(ViewCommand::Background(background));
+        self.status = ViewStatus::default();
+        if let Some((preset, spec)) = self.current.clone() {
+            self.load(preset, spec, false);
+        }
+    }
+}
+
+/// Whether dragging the field `key` previews the whole pattern: a field of the pattern model
+/// (the colours and the seed have no sliders).
+fn previews(key: &str) -> bool {
+    SHELL
+        .iter()
+        .any(|f| f.key == key && f.section == Section::Pattern)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The viewer commands among `effects`, by name.
+    fn commands(effects: &[Effect]) -> Vec<String> {
+        effects
+            .iter()
+            .filter_map(|e| match e {
+                Effect::View(command) => Some(format!("{command:?}")),
+                _ => None,
+            })
+            .map(|c| c.split([' ', '(']).next().unwrap_or_default().to_string())
+            .collect()
+    }
+
+    fn signals(effects: &[Effect]) -> Vec<(&'static str, String)> {
+        effects
+            .iter()
+            .filter_map(|e| match e {
+                Effect::Signal(name, value) => Some((*name, value.clone())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    fn opened(link: &str) -> Session {
+        let mut session = Session::default();
+        session.route(link, false, 0.0);
+        session.take_effects();
+        session
+    }
+
+    #[test]
+    fn a_link_grows_its_shell_and_an_empty_one_shows_the_gallery() {
+        let mut session = Session::default();
+        session.route("#v=1&preset=stripes", false, 0.0);
+        let effects = session.take_effects();
+        assert_eq!(
+            commands(&effects),
+            ["Layout", "Load", "Play"],
+            "laid out, loaded, played"
+        );
+        assert!(signals(&effects).contains(&("state", "loading".into())));
+        assert_eq!(session.current().map(|(p, _)| p.id), Some("stripes"));
+        assert!(!session.in_gallery());
+        session.route("", false, 1.0);
+        let effects = session.take_effects();
+        assert!(signals(&effects).contains(&("state", "gallery".into())));
+        assert!(session.in_gallery());
+        assert!(
+            effects
+                .iter()
+                .any(|e| matches!(e, Effect::StopRecording("you went back to the gallery")))
+        );
+    }
+
+    #[test]
+    fn following_the_link_shown_changes_nothing_and_a_material_only_restyles() {
+        let mut session = opened("#v=1&preset=stripes");
+        session.route("#v=1&preset=stripes", false, 1.0);
+        assert_eq!(commands(&session.take_effects()), ["Layout"]);
+        session.route("#v=1&preset=stripes&material.gloss=0.9", false, 2.0);
+        assert_eq!(commands(&session.take_effects()), ["Layout", "Restyle"]);
+    }
+
+    #[test]
+    fn a_dragged_pattern_slider_previews_and_letting_go_regrows() {
+        let mut session = opened("#v=1&preset=stripes");
+        session.edit("pattern.iterations", "7", Edit::Moving, 1.0);
+        assert_eq!(commands(&session.take_effects()), ["Preview"]);
+        session.edit("pattern.iterations", "7", Edit::Set, 2.0);
+        assert_eq!(
+            commands(&session.take_effects()),
+            ["EndPreview", "Load", "Play"]
+        );
+        session.address_due(2.0 + URL_DELAY_MS - 1.0);
+        assert!(session.take_effects().is_empty(), "the address waits");
+        session.address_due(2.0 + URL_DELAY_MS);
+        assert!(matches!(
+            session.take_effects()[..],
+            [Effect::UpdateAddress]
+        ));
+        let fragment = session.fragment(None).unwrap();
+        assert!(fragment.contains("pattern.iterations=7"), "{fragment}");
+    }
+
+    #[test]
+    fn a_speed_out_of_range_is_clamped_as_the_link_clamps_it_and_said() {
+        let mut session = opened("#v=1&preset=stripes");
+        session.set_speed(1e9, 0.0);
+        let effects = session.take_effects();
+        assert_eq!(session.speed(), 200.0);
+        assert!(
+            effects.iter().any(
+                |e| matches!(e, Effect::Say(Say::Show(words)) if words.contains("growth.speed"))
+            )
+        );
+        session.set_speed(3.0, 1.0);
+        let effects = session.take_effects();
+        assert!(!effects.iter().any(|e| matches!(e, Effect::Say(_))));
+        assert_eq!(session.speed(), 3.0);
+    }
+
+    #[test]
+    fn growth_is_held_under_the_gallery_and_the_map_but_not_while_recording() {
+        let mut session = opened("#v=1&preset=stripes");
+        session.hold(true, false);
+        assert_eq!(commands(&session.take_effects()), ["Hold"]);
+        session.hold(true, false);
+        assert!(session.take_effects().is_empty(), "said once");
+        session.hold(true, true);
+        assert_eq!(commands(&session.take_effects()), ["Hold"]);
+        session.route("", false, 0.0);
+        session.take_effects();
+        session.hold(false, false);
+        assert_eq!(commands(&session.take_effects()), ["Hold"]);
+    }
+
+    #[test]
+    fn only_what_the_viewer_said_after_the_last_load_is_of_the_shell_shown() {
+        let mut session = opened("#v=1&preset=stripes");
+        assert!(session.is_current(1));
+        session.route("#v=1&preset=turbinate", false, 1.0);
+        assert!(!session.is_current(1), "a frame of the stripes");
+        assert!(session.is_current(2));
+    }
+
+    #[test]
+    fn a_lineage_shows_its_offspring_behind_its_parent_and_an_edit_closes_it() {
+        let mut session = Session::default();
+        session.route("#v=1&preset=stripes&breed=r0.3", false, 0.0);
+        let effects = session.take_effects();
+        assert!(effects.iter().any(|e| matches!(e, Effect::Breed(_))));
+        session.edit("pattern.iterations", "7", Edit::Set, 5.0);
+        let effects = session.take_effects();
+        assert!(effects.iter().any(|e| matches!(e, Effect::CloseBreeding)));
+    }
+}

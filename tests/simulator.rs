@@ -1,0 +1,867 @@
+//! The page simulated deterministically from a seed: the real session of the page
+//! ([`Session`]), the real core of the viewer in the drawing worker ([`ViewerState`]), the real
+//! pool and its rules for its workers' events ([`Pool`], [`Pool::take_events`]) and the real
+//! host each Web Worker runs ([`Host`]), joined by simulated message channels and a simulated
+//! clock, with faults and user input drawn from the seed. Every command crosses to the
+//! drawing worker as the bytes it reads, late by a frame or more, and its frames come back as
+//! late; every request and reply crosses as the bytes a worker reads.
+//!
+//! What a run may do, in any order: follow a link to a shell (one of several forms) or back to
+//! the gallery, edit a material value, drag a pattern slider (a preview) and let go of it,
+//! step, finish, restart, pause and play, change the speed (beyond its range too), switch
+//! between one view and four, cover the shell with the map or breeding, record frames; a worker's replies reach the page late
+//! and out of step with other workers' (each worker's own in the order it sent them, as a
+//! worker's messages do), some twice; workers throw, hang, send bytes nobody can read, or
+//! never start; the tab sleeps for seconds between frames. Lost messages are not simulated: a
+//! worker's channel to the page loses nothing while the worker lives, and one that dies is
+//! simulated.
+//!
+//! After every step: no panic; every reply of a shell the page has left changes nothing (the
+//! page's copy never falls out of step with its worker, the renderer only ever takes the
+//! shell shown, its rows in order, and the page never shows the status of a shell it left);
+//! the shell shown is the last asked for; the work held is bounded. At the end of a run, with the faults over: the shell grows whole within a bounded
+//! simulated time, its mesh and pattern hashes those of the native core growing it alone, and
+//! a frame a recording asked for is drawn. A failure prints its seed and the shortest run
+//! that still fails; `SEASHELLS_SIM_SEED=N` replays one seed, `SEASHELLS_SIM_RUNS=N` runs more
+//! (`make fuzz`).
+
+use rand_core::{Rng, SeedableRng};
+use rand_pcg::Pcg64;
+use seashells_core::generator::{GROWTH_BUDGET_MS, Generator};
+use seashells_core::presets::Preset;
+use seashells_core::share::link;
+use seashells_core::spec::ShellSpec;
+use seashells_core::view::recording::FrameAsk;
+use seashells_core::work::host::{Budget, Host};
+use seashells_core::work::message::{decode_reply, decode_request, encode_reply, encode_request};
+use seashells_core::work::pool::{Pool, SESSIONS, WorkerEvent};
+use seashells_core::work::session::{Edit, Effect, Session};
+use seashells_core::work::viewer_command::ViewCommand;
+use seashells_core::work::viewer_message::{decode_command, encode_command};
+use seashells_core::work::viewer_state::{ScreenChange, ViewerState};
+use seashells_core::work::viewer_status::ViewStatus;
+use std::cell::Cell;
+use std::collections::{HashMap, VecDeque};
+use std::sync::{Mutex, OnceLock};
+
+/// The shells a run opens: one of each kind of growth (a swept shell with its pattern, one
+/// whose pattern grows on its edge, the automaton, Kawaguchi's chambers and branches, an
+/// implicit shell whose finish is shared out among the pool in pieces), made small to be
+/// quick.
+const SHELLS: [(&str, &str); 6] = [
+    ("stripes", "&growth.rows=90&pattern.cells=64"),
+    ("stripes-growing-edge", "&growth.rows=90"),
+    ("ca-waves", "&growth.rows=90"),
+    ("kawaguchi-horn", ""),
+    ("kawaguchi-coral", ""),
+    ("implicit-whorl", "&form.resolution=24"),
+];
+
+/// The page's frame interval, milliseconds.
+const FRAME_MS: f64 = 16.7;
+
+/// A page's thread's budget for growth a frame where workers cannot run.
+const LOCAL_BUDGET_MS: f64 = 8.0;
+
+/// What happens next: a user's input, a fault, or time passing. Each carries what randomness
+/// it needs, so that a run with steps left out still means the same by the steps it keeps.
+#[derive(Clone, Debug)]
+enum Step {
+    /// A link to a shell followed (or, with `finish`, an embed for a reader who asked for less
+    /// motion: the shell grown whole, still).
+    Open {
+        shell: usize,
+        finish: bool,
+    },
+    /// Back to the gallery.
+    Gallery,
+    Restyle {
+        gloss: u8,
+    },
+    /// A pattern slider dragged, and (`set`) let go.
+    Drag {
+        iterations: u16,
+        set: bool,
+    },
+    /// One row, paused.
+    OneRow,
+    Finish,
+    Restart,
+    Play,
+    Speed {
+        tenths: u16,
+    },
+    Views,
+    /// The map or breeding covers the shell, or not.
+    Cover(bool),
+    Record(bool),
+    AskFrame {
+        row: u16,
+    },
+    /// Animation frames: each worker's replies reach the page up to `lag` frames late, and
+    /// the messages between the page and the drawing worker as late.
+    Frames {
+        count: u8,
+        lag: u8,
+        salt: u64,
+    },
+    /// The tab sleeps this many seconds before its next frame.
+    Sleep {
+        seconds: u8,
+    },
+    /// A worker throws (after the replies it has sent).
+    Throw {
+        slot: u8,
+    },
+    /// A worker spins for ever on what it holds.
+    Hang {
+        slot: u8,
+    },
+    /// A worker's next reply arrives as bytes nobody can read.
+    Garble {
+        slot: u8,
+    },
+    /// A worker's next reply reaches the page twice.
+    Twice {
+        slot: u8,
+    },
+}
+
+/// One simulated Web Worker.
+struct Worker {
+    host: Host,
+    /// Its clock: a millisecond passes each time it is read, so that budgets run out after as
+    /// many reads, the same way every run.
+    clock: Cell<f64>,
+    /// Spinning, or gone: it takes messages and answers none.
+    silent: bool,
+    garble_next: bool,
+    twice_next: bool,
+    /// What it sent and the page has not heard yet, with the frame it reaches the page in.
+    outbox: VecDeque<(u64, WorkerEvent)>,
+    generation: u32,
+}
+
+impl Worker {
+    fn new(generation: u32) -> Self {
+        Self {
+            host: Host::default(),
+            clock: Cell::new(0.0),
+            silent: false,
+            garble_next: false,
+            twice_next: false,
+            outbox: VecDeque::new(),
+            generation,
+        }
+    }
+}
+
+/// The page: its session, the drawing worker's viewer and pool, the workers, the messages
+/// between them, and what the checks remember.
+struct Page {
+    session: Session,
+    state: ViewerState,
+    pool: Pool,
+    workers: Vec<Worker>,
+    /// Where the workers were given up: one host on the drawing worker's thread.
+    local: Option<Host>,
+    local_clock: Cell<f64>,
+    /// Events heard and not yet taken in (a heavy reply waits a frame).
+    inbox: Vec<WorkerEvent>,
+    /// Commands on their way to the drawing worker, and frames on their way back, with the
+    /// frame they arrive in.
+    to_viewer: VecDeque<(u64, Vec<u8>)>,
+    to_page: VecDeque<(u64, Report)>,
+    now: f64,
+    frame: u64,
+    /// The shell of each session the viewer opened (its preset).
+    sessions: HashMap<u32, &'static str>,
+    /// The rows the renderer has taken of the shell shown (`None`: not built yet).
+    uploaded: Option<usize>,
+    /// Whether the map or breeding covers the shell.
+    covered: bool,
+    /// Whether a recording holds the viewer, and its frames asked and drawn.
+    recording: bool,
+    asked_frames: usize,
+    drawn_frames: usize,
+}
+
+/// What the drawing worker says of one of its frames.
+struct Report {
+    loads: u32,
+    status: ViewStatus,
+    drawn: bool,
+    recorded: bool,
+}
+
+/// A failed check, in words.
+type Failure = String;
+
+impl Page {
+    fn new(size: usize) -> Self {
+        Self {
+            session: Session::default(),
+            state: ViewerState::new(true, true, 0.0),
+            pool: Pool::new(size),
+            workers: (0..size).map(|_| Worker::new(0)).collect(),
+            local: None,
+            local_clock: Cell::new(0.0),
+            inbox: Vec::new(),
+            to_viewer: VecDeque::new(),
+            to_page: VecDeque::new(),
+            now: 0.0,
+            frame: 0,
+            sessions: HashMap::new(),
+            uploaded: None,
+            covered: false,
+            recording: false,
+            asked_frames: 0,
+            drawn_frames: 0,
+        }
+    }
+
+    /// Does what the session decided: commands go to the drawing worker (arriving `lag`
+    /// frames late); the rest is the DOM's.
+    fn apply(&mut self, lag: u8) {
+        for effect in self.session.take_effects() {
+            match effect {
+                Effect::View(command) => self.send(command, lag),
+                Effect::StopRecording(_) => self.stop_recording(lag),
+                _ => {}
+            }
+        }
+    }
+
+    /// Sends `command` to the drawing worker, as the bytes it reads.
+    fn send(&mut self, command: ViewCommand, lag: u8) {
+        let at = self.frame + u64::from(lag);
+        let at = at.max(self.to_viewer.back().map_or(0, |(a, _)| *a));
+        self.to_viewer.push_back((at, encode_command(&command)));
+    }
+
+    fn stop_recording(&mut self, lag: u8) {
+        if std::mem::take(&mut self.recording) {
+            self.asked_frames = self.drawn_frames;
+            self.send(ViewCommand::RecordAt(None), lag);
+        }
+    }
+
+    /// The renderer's part: it takes what changed of the shell shown, which must be the
+    /// shell last asked for, its rows in order from the first.
+    fn screen(&mut self) -> Result<(), Failure> {
+        for change in self.state.take_screen() {
+            self.state
+                .shell()
+                .ok_or("the renderer was handed no shell")?;
+            match change {
+                ScreenChange::Shell => self.uploaded = Some(0),
+                ScreenChange::Look => {
+                    self.uploaded.ok_or("a look for a shell not built")?;
+                }
+                ScreenChange::Rows(advance) => {
+                    let rows = self.uploaded.ok_or("rows of a shell not built")?;
+                    if advance.rows.start != rows {
+                        return Err(format!(
+                            "the renderer holds {rows} rows and was handed rows {:?}",
+                            advance.rows
+                        ));
+                    }
+                    self.uploaded = Some(advance.rows.end);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// One animation frame: the page holds growth or not and takes in the drawing worker's
+    /// frames that reached it; the drawing worker takes in the commands that reached it, its
+    /// workers' replies, runs the viewer's frame and sends it back; what it asked is sent to
+    /// the workers, who work till the next.
+    fn run_frame(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
+        self.frame += 1;
+        self.now += FRAME_MS;
+        self.session.hold(self.covered, self.recording);
+        self.apply(lag);
+        self.page_takes_frames()?;
+        while let Some((_, bytes)) = self.to_viewer.front().filter(|(at, _)| *at <= self.frame) {
+            let command = decode_command(bytes).map_err(|e| e.to_string())?;
+            self.to_viewer.pop_front();
+            let load = matches!(command, ViewCommand::Load { .. });
+            self.state.command(command, &mut self.pool);
+            if load && let Some(shell) = self.state.shell() {
+                self.sessions
+                    .insert(shell.replica().session(), shell.preset().id);
+                self.uploaded = None;
+            }
+            self.screen()?;
+        }
+        self.hear(rng);
+        let polled = self.pool.take_events(&mut self.inbox, self.now);
+        for (slot, generation, _) in &polled.start {
+            self.workers[*slot] = Worker::new(*generation);
+        }
+        if polled.given_up.is_some() {
+            self.workers.clear();
+            self.local = Some(Host::default());
+        }
+        let mut replies = polled.replies;
+        if let Some(host) = &mut self.local {
+            let clock = &self.local_clock;
+            let now = || {
+                clock.set(clock.get() + 1.0);
+                clock.get()
+            };
+            let until = clock.get() + LOCAL_BUDGET_MS;
+            for (ticket, reply) in host.work(&now, Budget::Until(until)) {
+                if let Some(request) = self.pool.answered(SESSIONS, ticket, self.now) {
+                    replies.push((request, reply));
+                }
+            }
+        }
+        if let Err(message) = self
+            .state
+            .take_all(replies, polled.sessions_lost, &mut self.pool)
+        {
+            return Err(format!("the shell was dropped: {message}"));
+        }
+        self.screen()?;
+        let mut drawn = false;
+        let mut recorded = false;
+        if !self.state.held() {
+            if self.state.recording() {
+                if let Some(frame) = self.state.recording_frame(GROWTH_BUDGET_MS, &mut self.pool) {
+                    frame.map_err(|e| format!("a recording's frame was refused: {e}"))?;
+                    recorded = true;
+                    self.state.drawn(self.now);
+                }
+            } else if self
+                .state
+                .frame(self.now, GROWTH_BUDGET_MS, 24.0, &mut self.pool)
+            {
+                drawn = true;
+                self.state.drawn(self.now);
+            }
+        }
+        self.screen()?;
+        self.state.take_planar();
+        let at = (self.frame + u64::from(lag)).max(self.to_page.back().map_or(0, |(a, _)| *a));
+        self.to_page.push_back((
+            at,
+            Report {
+                loads: self.state.loads(),
+                status: self.state.status((1, 1)),
+                drawn,
+                recorded,
+            },
+        ));
+        self.send_and_work(lag, rng)
+    }
+
+    /// The page takes in the drawing worker's frames that reached it: the status of a frame
+    /// made before the last load reached the viewer is not of the shell shown.
+    fn page_takes_frames(&mut self) -> Result<(), Failure> {
+        while let Some((_, report)) = self.to_page.front().filter(|(at, _)| *at <= self.frame) {
+            let report_loads = report.loads;
+            let Some((_, report)) = self.to_page.pop_front() else {
+                break;
+            };
+            if report.recorded && self.recording {
+                self.drawn_frames += 1;
+            }
+            if !self.session.is_current(report_loads) {
+                continue;
+            }
+            if let (Some(shell), Some((preset, _))) = (&report.status.shell, self.session.current())
+                && self.sessions.get(&shell.session) != Some(&preset.id)
+            {
+                return Err(format!(
+                    "the page shows the status of {:?} as the {}'s",
+                    self.sessions.get(&shell.session),
+                    preset.id
+                ));
+            }
+            self.session.viewed(report.status, report.drawn, self.now);
+            self.apply(0);
+        }
+        Ok(())
+    }
+
+    /// What reached the page by this frame, each worker's in the order it sent them, the
+    /// workers' interleaved at random.
+    fn hear(&mut self, rng: &mut Pcg64) {
+        loop {
+            let ready: Vec<usize> = (0..self.workers.len())
+                .filter(|&w| {
+                    self.workers[w]
+                        .outbox
+                        .front()
+                        .is_some_and(|(at, _)| *at <= self.frame)
+                })
+                .collect();
+            if ready.is_empty() {
+                return;
+            }
+            let w = ready[(rng.next_u32() as usize) % ready.len()];
+            if let Some((_, event)) = self.workers[w].outbox.pop_front() {
+                self.inbox.push(event);
+            }
+        }
+    }
+
+    /// Sends what the pool has to send, through the bytes, and lets each worker work a frame.
+    fn send_and_work(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
+        for send in self.pool.dispatch(self.now) {
+            let bytes = encode_request(send.ticket, &send.request);
+            let (ticket, request) = decode_request(&bytes).map_err(|e| e.to_string())?;
+            if let Some(host) = &mut self.local {
+                host.push(ticket, request);
+            } else {
+                self.workers[send.slot].host.push(ticket, request);
+            }
+        }
+        for (slot, worker) in self.workers.iter_mut().enumerate() {
+            if worker.silent {
+                continue;
+            }
+            let clock = &worker.clock;
+            let now = || {
+                clock.set(clock.get() + 1.0);
+                clock.get()
+            };
+            let until = clock.get() + FRAME_MS;
+            for (ticket, reply) in worker.host.work(&now, Budget::Until(until)) {
+                let bytes = if std::mem::take(&mut worker.garble_next) {
+                    Vec::new()
+                } else {
+                    encode_reply(ticket, &reply)
+                };
+                let last = worker.outbox.back().map_or(0, |(at, _)| *at);
+                let at =
+                    (self.frame + 1 + u64::from(rng.next_u32()) % (u64::from(lag) + 1)).max(last);
+                let copies = if std::mem::take(&mut worker.twice_next) {
+                    2
+                } else {
+                    1
+                };
+                for _ in 0..copies {
+                    worker.outbox.push_back((
+                        at,
+                        WorkerEvent::Reply {
+                            slot,
+                            generation: worker.generation,
+                            reply: Box::new(decode_reply(&bytes)),
+                            heavy: bytes.len() > seashells_core::view::draw_pacing::HEAVY_BYTES,
+                        },
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Does `step`.
+    fn step(&mut self, step: &Step) -> Result<(), Failure> {
+        let slot = |s: &u8, page: &Self| (*s as usize) % page.workers.len().max(1);
+        let now = self.now;
+        match step {
+            Step::Open { shell, finish } => {
+                let (id, extra) = SHELLS[*shell % SHELLS.len()];
+                let ui = if *finish { "&ui=none" } else { "" };
+                self.session
+                    .route(&format!("#v=1&preset={id}{extra}{ui}"), *finish, now);
+            }
+            Step::Gallery => self.session.route("", false, now),
+            Step::Restyle { gloss } => {
+                let gloss = format!("{}", f64::from(*gloss % 11) / 10.0);
+                self.session.edit("material.gloss", &gloss, Edit::Set, now);
+            }
+            Step::Drag { iterations, set } => {
+                let value = (1 + iterations % 40).to_string();
+                let edit = if *set { Edit::Set } else { Edit::Moving };
+                self.session.edit("pattern.iterations", &value, edit, now);
+            }
+            Step::OneRow => self.session.step(),
+            Step::Finish => self.session.finish(),
+            Step::Restart => self.session.restart(),
+            Step::Play => self.session.toggle_playing(),
+            Step::Speed { tenths } => {
+                self.session.set_speed(f64::from(*tenths) / 10.0, now);
+            }
+            Step::Views => self.session.toggle_views(),
+            Step::Cover(covered) => self.covered = *covered,
+            Step::Record(on) => {
+                if *on && !self.recording && self.session.record(now).is_some() {
+                    self.apply(0);
+                    self.recording = true;
+                    self.asked_frames = self.drawn_frames;
+                    self.send(ViewCommand::RecordAt(Some((64, 48))), 0);
+                } else if !on {
+                    self.stop_recording(0);
+                }
+            }
+            Step::AskFrame { row } => {
+                // A recording asks for its next frame once the last is drawn, as the page's
+                // does.
+                if self.recording && self.asked_frames == self.drawn_frames {
+                    self.asked_frames += 1;
+                    self.send(
+                        ViewCommand::AskFrame(FrameAsk {
+                            row: usize::from(*row % 100),
+                            dt: 0.04,
+                            turn: 0.0,
+                            timestamp_us: 0,
+                            duration_us: 40_000,
+                        }),
+                        0,
+                    );
+                }
+            }
+            Step::Frames { count, lag, salt } => {
+                let mut rng = Pcg64::seed_from_u64(*salt);
+                for _ in 0..*count {
+                    self.run_frame(*lag, &mut rng)?;
+                }
+            }
+            Step::Sleep { seconds } => {
+                self.now += f64::from(*seconds) * 1000.0;
+            }
+            Step::Throw { slot: s } => {
+                let s = slot(s, self);
+                if let Some(worker) = self.workers.get_mut(s) {
+                    worker.silent = true;
+                    let generation = worker.generation;
+                    let last = worker.outbox.back().map_or(0, |(at, _)| *at);
+                    worker.outbox.push_back((
+                        last.max(self.frame + 1),
+                        WorkerEvent::Died {
+                            slot: s,
+                            generation,
+                            why: "it threw".into(),
+                        },
+                    ));
+                }
+            }
+            Step::Hang { slot: s } => {
+                let s = slot(s, self);
+                if let Some(worker) = self.workers.get_mut(s) {
+                    worker.silent = true;
+                }
+            }
+            Step::Garble { slot: s } => {
+                let s = slot(s, self);
+                if let Some(worker) = self.workers.get_mut(s) {
+                    worker.garble_next = true;
+                }
+            }
+            Step::Twice { slot: s } => {
+                let s = slot(s, self);
+                if let Some(worker) = self.workers.get_mut(s) {
+                    worker.twice_next = true;
+                }
+            }
+        }
+        self.apply(0);
+        self.check()
+    }
+
+    /// What must hold after every step: the viewer shows the shell the page shows, once the
+    /// commands on their way have reached it; the work held is bounded.
+    fn check(&self) -> Result<(), Failure> {
+        if self.to_viewer.is_empty()
+            && let (Some((preset, spec)), Some(shell)) =
+                (self.session.current(), self.state.shell())
+            && (shell.preset().id != preset.id || !shell.spec().grows_like(spec))
+        {
+            return Err(format!(
+                "the viewer shows {} where the page shows {}",
+                shell.preset().id,
+                preset.id
+            ));
+        }
+        let held = self.pool.in_flight() + self.pool.waiting() + self.inbox.len();
+        if held > 64 {
+            return Err(format!("the page holds {held} requests and replies"));
+        }
+        Ok(())
+    }
+
+    /// With the faults over, the user lets the shell grow: it must grow whole within a
+    /// bounded simulated time, as the native core grows it alone, the page must say so
+    /// (`grown`), and a recording's frame asked for must be drawn.
+    fn settle(&mut self) -> Result<(), Failure> {
+        if self.session.in_gallery() || self.session.current().is_none() {
+            return Ok(());
+        }
+        if self.recording {
+            self.step(&Step::AskFrame { row: 40 })?;
+        }
+        self.step(&Step::Cover(false))?;
+        if !self.session.playing() {
+            self.step(&Step::Play)?;
+        }
+        let mut rng = Pcg64::seed_from_u64(0);
+        // The longest a worker may keep a request (a minute to build or regrow a shell),
+        // doubled by each hang, and the growth itself.
+        let deadline = self.now + 20.0 * 60_000.0;
+        let mut finished = false;
+        loop {
+            let status = self.session.status();
+            let drawn_all = !self.recording || self.drawn_frames >= self.asked_frames;
+            if let Some(shell) = &status.shell
+                && shell.finished()
+                && drawn_all
+            {
+                break;
+            }
+            if self.now > deadline {
+                return Err(format!(
+                    "the shell did not grow whole within twenty simulated minutes: the page                      shows {status:?}, {} of {} recorded frames drawn",
+                    self.drawn_frames, self.asked_frames
+                ));
+            }
+            if !finished && self.recording && drawn_all {
+                self.step(&Step::Record(false))?;
+            } else if !finished && !self.recording {
+                self.step(&Step::Finish)?;
+                finished = true;
+            }
+            self.run_frame(1, &mut rng)?;
+            self.check()?;
+        }
+        let (preset, spec) = self.session.current().ok_or("no shell")?;
+        let shell = self.state.shell().ok_or("the viewer shows no shell")?;
+        let replica = shell.replica();
+        let (mesh, pattern) = reference(preset, spec);
+        if replica.mesh_hash() != Some(mesh) || replica.pattern_hash() != pattern {
+            return Err(format!(
+                "{} grown on the page has mesh {:?} and pattern {:?}; alone, {mesh} and {pattern:?}",
+                preset.id,
+                replica.mesh_hash(),
+                replica.pattern_hash()
+            ));
+        }
+        let shown = self.session.status().shell.as_ref().ok_or("no status")?;
+        if (shown.mesh_hash, shown.pattern_hash) != (Some(mesh), pattern) {
+            return Err(format!("the page says {shown:?}"));
+        }
+        if self.uploaded != Some(replica.rows_done()) {
+            return Err(format!(
+                "the renderer holds {:?} rows of the {} grown",
+                self.uploaded,
+                replica.rows_done()
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// A shell's mesh hash and pattern hash.
+type Hashes = (u64, Option<u64>);
+
+/// The mesh and pattern hashes of `spec` grown alone by the native core (each shell once).
+fn reference(preset: &Preset, spec: &ShellSpec) -> Hashes {
+    static GROWN: OnceLock<Mutex<HashMap<String, Hashes>>> = OnceLock::new();
+    let key = link::encode(preset, spec);
+    let grown = GROWN.get_or_init(Mutex::default);
+    if let Some(hashes) = grown.lock().unwrap().get(&key) {
+        return *hashes;
+    }
+    let mut generator = Generator::new(spec).expect("a preset builds");
+    generator.finish();
+    let hashes = (generator.mesh_hash(), generator.pattern().map(|p| p.hash()));
+    grown.lock().unwrap().insert(key, hashes);
+    hashes
+}
+
+/// A run's steps, drawn from `seed`: mostly frames, with input and faults between them.
+fn steps(seed: u64) -> (usize, Vec<Step>) {
+    let mut rng = Pcg64::seed_from_u64(seed);
+    let mut pick = |n: u32| rng.next_u32() % n;
+    let workers = 1 + pick(3) as usize;
+    let count = 10 + pick(50);
+    let mut steps = vec![Step::Open {
+        shell: pick(SHELLS.len() as u32) as usize,
+        finish: false,
+    }];
+    for _ in 0..count {
+        let byte = pick(256) as u8;
+        let step = match pick(44) {
+            0..=14 => Step::Frames {
+                count: 1 + pick(12) as u8,
+                lag: pick(4) as u8,
+                salt: u64::from(pick(u32::MAX)),
+            },
+            15..=16 => Step::Open {
+                shell: pick(SHELLS.len() as u32) as usize,
+                finish: pick(4) == 0,
+            },
+            17 => Step::Gallery,
+            18 => Step::Restyle { gloss: byte },
+            19..=20 => Step::Drag {
+                iterations: pick(1000) as u16,
+                set: pick(3) == 0,
+            },
+            21 => Step::OneRow,
+            22 => Step::Finish,
+            23 => Step::Restart,
+            24 => Step::Play,
+            25 => Step::Speed {
+                tenths: pick(3000) as u16,
+            },
+            26 => Step::Views,
+            27 => Step::Cover(pick(2) == 0),
+            28 => Step::Record(pick(2) == 0),
+            29..=30 => Step::AskFrame {
+                row: pick(200) as u16,
+            },
+            31 => Step::Sleep {
+                seconds: pick(20) as u8,
+            },
+            32..=33 => Step::Throw { slot: byte },
+            34 => Step::Hang { slot: byte },
+            35 => Step::Garble { slot: byte },
+            _ => Step::Twice { slot: byte },
+        };
+        steps.push(step);
+    }
+    (workers, steps)
+}
+
+/// Runs `steps` on a page of `workers` workers, and lets it settle.
+fn run(workers: usize, steps: &[Step]) -> Result<(), Failure> {
+    let mut page = Page::new(workers);
+    for (i, step) in steps.iter().enumerate() {
+        page.step(step)
+            .map_err(|e| format!("at step {i} ({step:?}): {e}"))?;
+    }
+    page.settle().map_err(|e| format!("settling: {e}"))
+}
+
+/// How `steps` fail on a page of `workers` workers, a panic included; `None` if they pass.
+fn failure(workers: usize, steps: &[Step]) -> Option<Failure> {
+    match std::panic::catch_unwind(|| run(workers, steps)) {
+        Ok(Ok(())) => None,
+        Ok(Err(failure)) => Some(failure),
+        Err(panic) => Some(format!(
+            "a panic: {}",
+            panic
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default()
+        )),
+    }
+}
+
+/// The shortest run found that fails as `steps` do (`failed`): steps left out, a chunk at a
+/// time, for as long as the run still fails.
+fn shrink(workers: usize, mut steps: Vec<Step>, mut failed: Failure) -> (Vec<Step>, Failure) {
+    let mut chunk = steps.len().div_ceil(2);
+    while chunk >= 1 {
+        let mut at = 1;
+        let mut shrunk = false;
+        while at < steps.len() {
+            let mut fewer = steps.clone();
+            fewer.drain(at..(at + chunk).min(steps.len()));
+            match failure(workers, &fewer) {
+                Some(e) => {
+                    steps = fewer;
+                    failed = e;
+                    shrunk = true;
+                }
+                None => at += chunk,
+            }
+        }
+        if !shrunk {
+            chunk /= 2;
+        }
+    }
+    (steps, failed)
+}
+
+/// A number from the environment.
+fn env(key: &str) -> Option<u64> {
+    std::env::var(key).ok().and_then(|v| v.parse().ok())
+}
+
+#[test]
+fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
+    let seeds: Vec<u64> = match env("SEASHELLS_SIM_SEED") {
+        Some(seed) => vec![seed],
+        None => {
+            let first = env("SEASHELLS_SIM_FIRST").unwrap_or(1);
+            (first..first + env("SEASHELLS_SIM_RUNS").unwrap_or(60)).collect()
+        }
+    };
+    for seed in seeds {
+        let (workers, steps) = steps(seed);
+        if let Some(failed) = failure(workers, &steps) {
+            // Quiet while the runs that shrink it panic in their turn.
+            let hook = std::panic::take_hook();
+            std::panic::set_hook(Box::new(|_| {}));
+            let (shortest, failure) = shrink(workers, steps, failed);
+            std::panic::set_hook(hook);
+            panic!(
+                "seed {seed} fails ({workers} workers): {failure}\nthe shortest run that fails \
+                 ({} steps; SEASHELLS_SIM_SEED={seed} replays it):\n{shortest:#?}",
+                shortest.len()
+            );
+        }
+    }
+}
+
+/// The shortest runs of the seeds that found bugs, kept as they were printed: each failed
+/// before its fix.
+#[test]
+fn the_runs_that_found_bugs_grow_their_shell() {
+    let frames = |count, lag, salt| Step::Frames { count, lag, salt };
+    let runs = [
+        // The sessions' worker's Load reply came as bytes nobody could read, and its reply to
+        // the Grow sent beside the Load was still taken in: rows of a shell never built.
+        (
+            2,
+            vec![
+                Step::Open {
+                    shell: 2,
+                    finish: false,
+                },
+                Step::Garble { slot: 0 },
+                Step::OneRow,
+            ],
+        ),
+        // The sessions' worker threw before the shell's Load was sent: the Load still waiting
+        // went to the fresh worker beside the one the shell asked again, and the second
+        // Loaded reply took the count of answers owed below zero.
+        (
+            3,
+            vec![
+                Step::Open {
+                    shell: 3,
+                    finish: false,
+                },
+                Step::Throw { slot: 0 },
+            ],
+        ),
+        // The worker died holding the Finish of a shell left: the shell shown was finished
+        // on the fresh worker unasked, and still grown row by row after it.
+        (
+            1,
+            vec![
+                Step::Open {
+                    shell: 5,
+                    finish: false,
+                },
+                Step::Finish,
+                Step::Throw { slot: 0 },
+                Step::Open {
+                    shell: 5,
+                    finish: false,
+                },
+                frames(7, 1, 1_806_241_684),
+            ],
+        ),
+    ];
+    for (workers, steps) in runs {
+        assert_eq!(failure(workers, &steps), None, "{steps:#?}");
+    }
+}
