@@ -22,7 +22,7 @@ export NPM_INSTALLED := const fs = require('fs'); \
     try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
     catch { return false; } }) ? 0 : 1);
 
-.PHONY: run test build tested-cli bench fuzz deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
+.PHONY: run test build tested-cli bench fuzz test-engines-soak deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
@@ -103,6 +103,20 @@ XVFB := xvfb-run -a -s '-screen 0 1600x1200x24'
 
 test-page: build deps-browser tested-cli
 	SEASHELLS=$(TESTED_CLI) ENGINES=firefox,webkit $(XVFB) node --test --test-concurrency=1 tests/page/
+
+## The smoke suite of tests/page/engines.test.mjs SOAK_RUNS times in a row on each of
+## SOAK_ENGINES, each run in fresh browsers; prints each engine's passes and stops at the first
+## failure (docs/browsers.md keeps the figures).
+SOAK_RUNS ?= 20
+SOAK_ENGINES ?= chromium,firefox,webkit
+test-engines-soak: build deps-browser tested-cli
+	@for engine in $$(echo $(SOAK_ENGINES) | tr , ' '); do \
+	  for run in $$(seq 1 $(SOAK_RUNS)); do \
+	    SEASHELLS=$(TESTED_CLI) ENGINES=$$engine $(XVFB) node --test tests/page/engines.test.mjs > /tmp/seashells-soak.log 2>&1 \
+	      || { tail -40 /tmp/seashells-soak.log; echo "soak: $$engine failed run $$run of $(SOAK_RUNS)"; exit 1; }; \
+	    echo "soak: $$engine passed run $$run of $(SOAK_RUNS)"; \
+	  done; \
+	done
 
 ## Exported files read back by third-party libraries and checkers.
 test-files: deps-build deps-check tested-cli

@@ -26,6 +26,7 @@ mod murex_opening;
 mod murex_resolutions;
 mod parameter_map;
 mod pattern;
+mod simulated_workers;
 mod simulator;
 mod species;
 mod textures;

@@ -12,7 +12,9 @@
 //! between one view and four, cover the shell with the map or breeding, record frames; a worker's replies reach the page late
 //! and out of step with other workers' (each worker's own in the order it sent them, as a
 //! worker's messages do), some twice; workers throw, hang, send bytes nobody can read, or
-//! never start; the tab sleeps for seconds between frames. Lost messages are not simulated: a
+//! never start; the tab sleeps for seconds between frames; the browser takes the graphics
+//! device away (a WebGL context it may give back, once or twice, or a WebGPU device), and an
+//! opening of a renderer again fails. Lost messages are not simulated: a
 //! worker's channel to the page loses nothing while the worker lives, and one that dies is
 //! simulated.
 //!
@@ -25,6 +27,7 @@
 //! that still fails; `SEASHELLS_SIM_SEED=N` replays one seed, `SEASHELLS_SIM_RUNS=N` runs more
 //! (`make fuzz`).
 
+use crate::simulated_workers::Workers;
 use rand_core::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use seashells_core::generator::{GROWTH_BUDGET_MS, Generator};
@@ -32,15 +35,12 @@ use seashells_core::presets::Preset;
 use seashells_core::share::link;
 use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
-use seashells_core::work::host::{Budget, Host};
-use seashells_core::work::message::{decode_reply, decode_request, encode_reply, encode_request};
-use seashells_core::work::pool::{Pool, SESSIONS, WorkerEvent};
+use seashells_core::work::device_survival::{Loss, Open, Survival};
 use seashells_core::work::session::{Edit, Effect, Session};
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_message::{decode_command, encode_command};
 use seashells_core::work::viewer_state::{ScreenChange, ViewerState};
-use seashells_core::work::viewer_status::ViewStatus;
-use std::cell::Cell;
+use seashells_core::work::viewer_status::{Device, ViewStatus};
 use std::collections::{HashMap, VecDeque};
 use std::sync::{Mutex, OnceLock};
 
@@ -59,9 +59,6 @@ const SHELLS: [(&str, &str); 6] = [
 
 /// The page's frame interval, milliseconds.
 const FRAME_MS: f64 = 16.7;
-
-/// A page's thread's budget for growth a frame where workers cannot run.
-const LOCAL_BUDGET_MS: f64 = 8.0;
 
 /// What happens next: a user's input, a fault, or time passing. Each carries what randomness
 /// it needs, so that a run with steps left out still means the same by the steps it keeps.
@@ -125,35 +122,16 @@ enum Step {
     Twice {
         slot: u8,
     },
-}
-
-/// One simulated Web Worker.
-struct Worker {
-    host: Host,
-    /// Its clock: a millisecond passes each time it is read, so that budgets run out after as
-    /// many reads, the same way every run.
-    clock: Cell<f64>,
-    /// Spinning, or gone: it takes messages and answers none.
-    silent: bool,
-    garble_next: bool,
-    twice_next: bool,
-    /// What it sent and the page has not heard yet, with the frame it reaches the page in.
-    outbox: VecDeque<(u64, WorkerEvent)>,
-    generation: u32,
-}
-
-impl Worker {
-    fn new(generation: u32) -> Self {
-        Self {
-            host: Host::default(),
-            clock: Cell::new(0.0),
-            silent: false,
-            garble_next: false,
-            twice_next: false,
-            outbox: VecDeque::new(),
-            generation,
-        }
-    }
+    /// The browser takes the drawing worker's graphics device away (a WebGL context, which it
+    /// may give back after `restore` frames, or a WebGPU device).
+    LoseDevice {
+        webgl: bool,
+        restore: u8,
+    },
+    /// The browser gives a lost WebGL context back (again, maybe).
+    Restore,
+    /// The next renderer opened again fails.
+    FailOpen,
 }
 
 /// The page: its session, the drawing worker's viewer and pool, the workers, the messages
@@ -161,13 +139,8 @@ impl Worker {
 struct Page {
     session: Session,
     state: ViewerState,
-    pool: Pool,
-    workers: Vec<Worker>,
-    /// Where the workers were given up: one host on the drawing worker's thread.
-    local: Option<Host>,
-    local_clock: Cell<f64>,
-    /// Events heard and not yet taken in (a heavy reply waits a frame).
-    inbox: Vec<WorkerEvent>,
+    /// The drawing worker's pool and its workers.
+    workers: Workers,
     /// Commands on their way to the drawing worker, and frames on their way back, with the
     /// frame they arrive in.
     to_viewer: VecDeque<(u64, Vec<u8>)>,
@@ -184,14 +157,34 @@ struct Page {
     recording: bool,
     asked_frames: usize,
     drawn_frames: usize,
+    gpu: Gpu,
 }
 
 /// What the drawing worker says of one of its frames.
 struct Report {
     loads: u32,
-    status: ViewStatus,
-    drawn: bool,
+    device: Device,
+    /// The viewer's frame, once its device draws: its status and whether it drew.
+    frame: Option<(ViewStatus, bool)>,
     recorded: bool,
+}
+
+/// The drawing worker's graphics device, simulated.
+#[derive(Default)]
+struct Gpu {
+    /// Lost, and how (a WebGL context may come back).
+    lost: Option<Loss>,
+    /// The frame a lost context comes back in.
+    restore_at: Option<u64>,
+    /// A renderer being opened again: the frame the browser answers in, and its answer.
+    opening: Option<(u64, Result<(), String>)>,
+    /// The next opening fails.
+    fail_next: bool,
+    survival: Survival,
+    /// The page said the device is gone for good.
+    gone: bool,
+    /// Renderers opened again so far.
+    reopened: usize,
 }
 
 /// A failed check, in words.
@@ -202,11 +195,7 @@ impl Page {
         Self {
             session: Session::default(),
             state: ViewerState::new(true, true, 0.0),
-            pool: Pool::new(size),
-            workers: (0..size).map(|_| Worker::new(0)).collect(),
-            local: None,
-            local_clock: Cell::new(0.0),
-            inbox: Vec::new(),
+            workers: Workers::new(size),
             to_viewer: VecDeque::new(),
             to_page: VecDeque::new(),
             now: 0.0,
@@ -217,6 +206,7 @@ impl Page {
             recording: false,
             asked_frames: 0,
             drawn_frames: 0,
+            gpu: Gpu::default(),
         }
     }
 
@@ -287,7 +277,7 @@ impl Page {
             let command = decode_command(bytes).map_err(|e| e.to_string())?;
             self.to_viewer.pop_front();
             let load = matches!(command, ViewCommand::Load { .. });
-            self.state.command(command, &mut self.pool);
+            self.state.command(command, &mut self.workers.pool);
             if load && let Some(shell) = self.state.shell() {
                 self.sessions
                     .insert(shell.replica().session(), shell.preset().id);
@@ -295,32 +285,19 @@ impl Page {
             }
             self.screen()?;
         }
-        self.hear(rng);
-        let polled = self.pool.take_events(&mut self.inbox, self.now);
-        for (slot, generation, _) in &polled.start {
-            self.workers[*slot] = Worker::new(*generation);
+        let device = self.survive();
+        if !matches!(device, Device::Ready | Device::Reopened(_)) {
+            // The drawing worker says where its device stands and does nothing else; its
+            // workers go on with what they hold.
+            self.post(lag, device, None, false);
+            self.workers.work(self.frame, FRAME_MS, lag, rng);
+            return Ok(());
         }
-        if polled.given_up.is_some() {
-            self.workers.clear();
-            self.local = Some(Host::default());
-        }
-        let mut replies = polled.replies;
-        if let Some(host) = &mut self.local {
-            let clock = &self.local_clock;
-            let now = || {
-                clock.set(clock.get() + 1.0);
-                clock.get()
-            };
-            let until = clock.get() + LOCAL_BUDGET_MS;
-            for (ticket, reply) in host.work(&now, Budget::Until(until)) {
-                if let Some(request) = self.pool.answered(SESSIONS, ticket, self.now) {
-                    replies.push((request, reply));
-                }
-            }
-        }
-        if let Err(message) = self
-            .state
-            .take_all(replies, polled.sessions_lost, &mut self.pool)
+        let polled = self.workers.poll(self.frame, self.now, rng);
+        let replies = polled.replies;
+        if let Err(message) =
+            self.state
+                .take_all(replies, polled.sessions_lost, &mut self.workers.pool)
         {
             return Err(format!("the shell was dropped: {message}"));
         }
@@ -329,14 +306,17 @@ impl Page {
         let mut recorded = false;
         if !self.state.held() {
             if self.state.recording() {
-                if let Some(frame) = self.state.recording_frame(GROWTH_BUDGET_MS, &mut self.pool) {
+                if let Some(frame) = self
+                    .state
+                    .recording_frame(GROWTH_BUDGET_MS, &mut self.workers.pool)
+                {
                     frame.map_err(|e| format!("a recording's frame was refused: {e}"))?;
                     recorded = true;
                     self.state.drawn(self.now);
                 }
             } else if self
                 .state
-                .frame(self.now, GROWTH_BUDGET_MS, 24.0, &mut self.pool)
+                .frame(self.now, GROWTH_BUDGET_MS, 24.0, &mut self.workers.pool)
             {
                 drawn = true;
                 self.state.drawn(self.now);
@@ -344,17 +324,77 @@ impl Page {
         }
         self.screen()?;
         self.state.take_planar();
+        let status = self.state.status((1, 1));
+        self.post(lag, device, Some((status, drawn)), recorded);
+        self.workers.dispatch(self.now)?;
+        self.workers.work(self.frame, FRAME_MS, lag, rng);
+        Ok(())
+    }
+
+    /// The drawing worker posts a frame's news to the page, arriving `lag` frames later.
+    fn post(&mut self, lag: u8, device: Device, frame: Option<(ViewStatus, bool)>, recorded: bool) {
         let at = (self.frame + u64::from(lag)).max(self.to_page.back().map_or(0, |(a, _)| *a));
+        let loads = self.state.loads();
         self.to_page.push_back((
             at,
             Report {
-                loads: self.state.loads(),
-                status: self.state.status((1, 1)),
-                drawn,
+                loads,
+                device,
+                frame,
                 recorded,
             },
         ));
-        self.send_and_work(lag, rng)
+    }
+
+    /// The drawing worker keeps its device as the core decides, before its frame: it opens
+    /// renderers where asked (the browser answers two frames later), gives the fresh canvas
+    /// the page makes, and hands a renderer opened again everything grown so far.
+    fn survive(&mut self) -> Device {
+        let gpu = &mut self.gpu;
+        if let (Some(at), Some(lost)) = (gpu.restore_at, &mut gpu.lost)
+            && at <= self.frame
+        {
+            lost.restored = true;
+            gpu.restore_at = None;
+        }
+        let answer = match gpu.opening.take() {
+            Some((at, answer)) if at <= self.frame => Some(answer),
+            opening => {
+                gpu.opening = opening;
+                None
+            }
+        };
+        let (device, open) = gpu.survival.frame(self.now, gpu.lost.as_ref(), answer);
+        let open_now = |gpu: &mut Gpu| {
+            let answer = if std::mem::take(&mut gpu.fail_next) {
+                Err("the browser would not open a device".to_string())
+            } else {
+                Ok(())
+            };
+            gpu.opening = Some((self.frame + 2, answer));
+        };
+        if open == Some(Open::Same) {
+            open_now(gpu);
+        }
+        match &device {
+            Device::NeedsCanvas(_) if gpu.survival.canvas_given() == Some(Open::Fresh) => {
+                open_now(gpu);
+            }
+            Device::Reopened(_) => {
+                gpu.reopened += 1;
+                gpu.lost = None;
+                gpu.restore_at = None;
+                // The renderer opened again takes everything grown so far.
+                self.uploaded = self
+                    .state
+                    .shell()
+                    .filter(|g| g.replica().shell().is_some())
+                    .map(|g| g.replica().rows_done());
+                self.state.touch();
+            }
+            _ => {}
+        }
+        device
     }
 
     /// The page takes in the drawing worker's frames that reached it: the status of a frame
@@ -368,10 +408,19 @@ impl Page {
             if report.recorded && self.recording {
                 self.drawn_frames += 1;
             }
+            if self.session.device(report.device).is_err() {
+                // No device can be opened again: the page says so, and draws no more.
+                self.gpu.gone = true;
+                return Ok(());
+            }
+            self.apply(0);
+            let Some((status, drawn)) = report.frame else {
+                continue;
+            };
             if !self.session.is_current(report_loads) {
                 continue;
             }
-            if let (Some(shell), Some((preset, _))) = (&report.status.shell, self.session.current())
+            if let (Some(shell), Some((preset, _))) = (&status.shell, self.session.current())
                 && self.sessions.get(&shell.session) != Some(&preset.id)
             {
                 return Err(format!(
@@ -380,88 +429,14 @@ impl Page {
                     preset.id
                 ));
             }
-            self.session.viewed(report.status, report.drawn, self.now);
+            self.session.viewed(status, drawn, self.now);
             self.apply(0);
-        }
-        Ok(())
-    }
-
-    /// What reached the page by this frame, each worker's in the order it sent them, the
-    /// workers' interleaved at random.
-    fn hear(&mut self, rng: &mut Pcg64) {
-        loop {
-            let ready: Vec<usize> = (0..self.workers.len())
-                .filter(|&w| {
-                    self.workers[w]
-                        .outbox
-                        .front()
-                        .is_some_and(|(at, _)| *at <= self.frame)
-                })
-                .collect();
-            if ready.is_empty() {
-                return;
-            }
-            let w = ready[(rng.next_u32() as usize) % ready.len()];
-            if let Some((_, event)) = self.workers[w].outbox.pop_front() {
-                self.inbox.push(event);
-            }
-        }
-    }
-
-    /// Sends what the pool has to send, through the bytes, and lets each worker work a frame.
-    fn send_and_work(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
-        for send in self.pool.dispatch(self.now) {
-            let bytes = encode_request(send.ticket, &send.request);
-            let (ticket, request) = decode_request(&bytes).map_err(|e| e.to_string())?;
-            if let Some(host) = &mut self.local {
-                host.push(ticket, request);
-            } else {
-                self.workers[send.slot].host.push(ticket, request);
-            }
-        }
-        for (slot, worker) in self.workers.iter_mut().enumerate() {
-            if worker.silent {
-                continue;
-            }
-            let clock = &worker.clock;
-            let now = || {
-                clock.set(clock.get() + 1.0);
-                clock.get()
-            };
-            let until = clock.get() + FRAME_MS;
-            for (ticket, reply) in worker.host.work(&now, Budget::Until(until)) {
-                let bytes = if std::mem::take(&mut worker.garble_next) {
-                    Vec::new()
-                } else {
-                    encode_reply(ticket, &reply)
-                };
-                let last = worker.outbox.back().map_or(0, |(at, _)| *at);
-                let at =
-                    (self.frame + 1 + u64::from(rng.next_u32()) % (u64::from(lag) + 1)).max(last);
-                let copies = if std::mem::take(&mut worker.twice_next) {
-                    2
-                } else {
-                    1
-                };
-                for _ in 0..copies {
-                    worker.outbox.push_back((
-                        at,
-                        WorkerEvent::Reply {
-                            slot,
-                            generation: worker.generation,
-                            reply: Box::new(decode_reply(&bytes)),
-                            heavy: bytes.len() > seashells_core::view::draw_pacing::HEAVY_BYTES,
-                        },
-                    ));
-                }
-            }
         }
         Ok(())
     }
 
     /// Does `step`.
     fn step(&mut self, step: &Step) -> Result<(), Failure> {
-        let slot = |s: &u8, page: &Self| (*s as usize) % page.workers.len().max(1);
         let now = self.now;
         match step {
             Step::Open { shell, finish } => {
@@ -525,40 +500,27 @@ impl Page {
             Step::Sleep { seconds } => {
                 self.now += f64::from(*seconds) * 1000.0;
             }
-            Step::Throw { slot: s } => {
-                let s = slot(s, self);
-                if let Some(worker) = self.workers.get_mut(s) {
-                    worker.silent = true;
-                    let generation = worker.generation;
-                    let last = worker.outbox.back().map_or(0, |(at, _)| *at);
-                    worker.outbox.push_back((
-                        last.max(self.frame + 1),
-                        WorkerEvent::Died {
-                            slot: s,
-                            generation,
-                            why: "it threw".into(),
-                        },
-                    ));
+            Step::Throw { slot } => self.workers.throw(usize::from(*slot), self.frame + 1),
+            Step::Hang { slot } => self.workers.hang(usize::from(*slot)),
+            Step::Garble { slot } => self.workers.garble(usize::from(*slot)),
+            Step::Twice { slot } => self.workers.twice(usize::from(*slot)),
+            Step::LoseDevice { webgl, restore } => {
+                self.gpu.lost = Some(Loss {
+                    reason: "taken by the browser".into(),
+                    restored: false,
+                    webgl: *webgl,
+                });
+                self.gpu.restore_at =
+                    (*webgl && *restore > 0).then(|| self.frame + u64::from(*restore));
+            }
+            Step::Restore => {
+                if let Some(lost) = &mut self.gpu.lost
+                    && lost.webgl
+                {
+                    lost.restored = true;
                 }
             }
-            Step::Hang { slot: s } => {
-                let s = slot(s, self);
-                if let Some(worker) = self.workers.get_mut(s) {
-                    worker.silent = true;
-                }
-            }
-            Step::Garble { slot: s } => {
-                let s = slot(s, self);
-                if let Some(worker) = self.workers.get_mut(s) {
-                    worker.garble_next = true;
-                }
-            }
-            Step::Twice { slot: s } => {
-                let s = slot(s, self);
-                if let Some(worker) = self.workers.get_mut(s) {
-                    worker.twice_next = true;
-                }
-            }
+            Step::FailOpen => self.gpu.fail_next = true,
         }
         self.apply(0);
         self.check()
@@ -578,7 +540,8 @@ impl Page {
                 preset.id
             ));
         }
-        let held = self.pool.in_flight() + self.pool.waiting() + self.inbox.len();
+        let pool = &self.workers.pool;
+        let held = pool.in_flight() + pool.waiting() + self.workers.unheard();
         if held > 64 {
             return Err(format!("the page holds {held} requests and replies"));
         }
@@ -605,6 +568,10 @@ impl Page {
         let deadline = self.now + 20.0 * 60_000.0;
         let mut finished = false;
         loop {
+            if self.gpu.gone {
+                // The page said why it draws no more.
+                return Ok(());
+            }
             let status = self.session.status();
             let drawn_all = !self.recording || self.drawn_frames >= self.asked_frames;
             if let Some(shell) = &status.shell
@@ -720,6 +687,13 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
             32..=33 => Step::Throw { slot: byte },
             34 => Step::Hang { slot: byte },
             35 => Step::Garble { slot: byte },
+            36 => Step::Twice { slot: byte },
+            37..=38 => Step::LoseDevice {
+                webgl: pick(2) == 0,
+                restore: pick(150) as u8,
+            },
+            39 => Step::Restore,
+            40 => Step::FailOpen,
             _ => Step::Twice { slot: byte },
         };
         steps.push(step);
@@ -727,22 +701,38 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
     (workers, steps)
 }
 
+/// What a run went through: renderers opened again, workers replaced.
+#[derive(Default)]
+struct Went {
+    reopened: usize,
+    replaced: usize,
+}
+
 /// Runs `steps` on a page of `workers` workers, and lets it settle.
-fn run(workers: usize, steps: &[Step]) -> Result<(), Failure> {
+fn run(workers: usize, steps: &[Step]) -> Result<Went, Failure> {
     let mut page = Page::new(workers);
     for (i, step) in steps.iter().enumerate() {
         page.step(step)
             .map_err(|e| format!("at step {i} ({step:?}): {e}"))?;
     }
-    page.settle().map_err(|e| format!("settling: {e}"))
+    page.settle().map_err(|e| format!("settling: {e}"))?;
+    Ok(Went {
+        reopened: page.gpu.reopened,
+        replaced: page.workers.pool.deaths(),
+    })
 }
 
 /// How `steps` fail on a page of `workers` workers, a panic included; `None` if they pass.
 fn failure(workers: usize, steps: &[Step]) -> Option<Failure> {
+    outcome(workers, steps).err()
+}
+
+/// What `steps` went through on a page of `workers` workers, or how they failed, a panic
+/// included.
+fn outcome(workers: usize, steps: &[Step]) -> Result<Went, Failure> {
     match std::panic::catch_unwind(|| run(workers, steps)) {
-        Ok(Ok(())) => None,
-        Ok(Err(failure)) => Some(failure),
-        Err(panic) => Some(format!(
+        Ok(went) => went,
+        Err(panic) => Err(format!(
             "a panic: {}",
             panic
                 .downcast_ref::<String>()
@@ -793,20 +783,37 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
             (first..first + env("SEASHELLS_SIM_RUNS").unwrap_or(60)).collect()
         }
     };
-    for seed in seeds {
+    let mut went = Went::default();
+    for &seed in &seeds {
         let (workers, steps) = steps(seed);
-        if let Some(failed) = failure(workers, &steps) {
-            // Quiet while the runs that shrink it panic in their turn.
-            let hook = std::panic::take_hook();
-            std::panic::set_hook(Box::new(|_| {}));
-            let (shortest, failure) = shrink(workers, steps, failed);
-            std::panic::set_hook(hook);
-            panic!(
-                "seed {seed} fails ({workers} workers): {failure}\nthe shortest run that fails \
-                 ({} steps; SEASHELLS_SIM_SEED={seed} replays it):\n{shortest:#?}",
-                shortest.len()
-            );
+        match outcome(workers, &steps) {
+            Ok(run) => {
+                went.reopened += run.reopened;
+                went.replaced += run.replaced;
+            }
+            Err(failed) => {
+                // Quiet while the runs that shrink it panic in their turn.
+                let hook = std::panic::take_hook();
+                std::panic::set_hook(Box::new(|_| {}));
+                let (shortest, failure) = shrink(workers, steps, failed);
+                std::panic::set_hook(hook);
+                panic!(
+                    "seed {seed} fails ({workers} workers): {failure}\nthe shortest run that \
+                     fails ({} steps; SEASHELLS_SIM_SEED={seed} replays it):\n{shortest:#?}",
+                    shortest.len()
+                );
+            }
         }
+    }
+    if seeds.len() >= 60 {
+        // The faults happen: runs that never lose a device or a worker would prove nothing.
+        assert!(
+            went.reopened > 0 && went.replaced > 0,
+            "{} renderers opened again, {} workers replaced in {} runs",
+            went.reopened,
+            went.replaced,
+            seeds.len()
+        );
     }
 }
 

@@ -1,10 +1,14 @@
-//! The page's work shared among workers, simulated natively: hosts (what each Web Worker
-//! runs) answer requests through the bytes that cross between threads, the pool shares jobs
-//! out, and the page's copy of the shell takes in what comes back in whatever order it comes.
-//! Whatever the number of workers, whoever dies on the way, and however growth was cut into
-//! requests and budgets, the shell, its pattern, the gallery's shells and the map's tiles are
-//! the same, bit for bit, as one thread growing them alone.
+//! The page's work shared among workers, simulated natively (`simulated_workers.rs`): hosts
+//! (what each Web Worker runs) answer requests through the bytes that cross between threads,
+//! the pool shares jobs out and takes its workers' events in by its own rules, and the
+//! viewer's core state takes in what comes back in whatever order it comes. Whatever the
+//! number of workers, whoever dies on the way, and however growth was cut into requests and
+//! budgets, the shell, its pattern, the gallery's shells and the map's tiles are the same, bit
+//! for bit, as one thread growing them alone.
 
+use crate::simulated_workers::Workers;
+use rand_core::SeedableRng;
+use rand_pcg::Pcg64;
 use seashells_core::export::MeshFormat;
 use seashells_core::export::job::Export;
 use seashells_core::export::print_size::PrintSize;
@@ -15,14 +19,13 @@ use seashells_core::presets::preset;
 use seashells_core::share::link;
 use seashells_core::share::parameter_map::{Axis, ParameterMap, SIDE};
 use seashells_core::spec::ShellSpec;
-use seashells_core::work::growth_session::{GrowthSession, Took};
+use seashells_core::work::growth_session::GrowthSession;
 use seashells_core::work::host::{Budget, Host};
-use seashells_core::work::message::{
-    Delta, Progress, Reply, Request, decode_reply, decode_request, encode_reply, encode_request,
-};
-use seashells_core::work::pool::Pool;
+use seashells_core::work::message::{Delta, Progress, Reply, Request, decode_reply, encode_reply};
 use seashells_core::work::replica::Replica;
 use seashells_core::work::slotted_edge::{EdgeRun, EdgeWrites, Slot};
+use seashells_core::work::viewer_command::{PresetSpec, ViewCommand};
+use seashells_core::work::viewer_state::ViewerState;
 use std::cell::Cell;
 
 /// A clock that moves on by a millisecond each time it is read, so that budgets run out
@@ -35,86 +38,70 @@ fn clock() -> impl Fn() -> f64 {
     }
 }
 
-/// A page with `size` workers: the pool, the hosts, and the replies not yet taken in.
+/// A page growing shells on `size` simulated workers: the viewer's core state, its pool, and
+/// the frames that pass.
 struct Page {
-    pool: Pool,
-    hosts: Vec<Host>,
-    /// Replies waiting, as bytes, with the worker they came from.
-    inbox: Vec<(usize, Vec<u8>)>,
-    /// How the hosts spend their time: all at once, or a few milliseconds a call.
-    budget: Option<f64>,
-    now: Box<dyn Fn() -> f64>,
-    /// Turns the order replies are taken in: a number that picks the next.
-    shuffle: usize,
+    viewer: ViewerState,
+    workers: Workers,
+    /// Milliseconds each worker works between two frames.
+    ms: f64,
+    frame: u64,
+    rng: Pcg64,
 }
 
 impl Page {
-    fn new(size: usize, budget: Option<f64>, shuffle: usize) -> Self {
+    /// A page of `size` workers, each working `ms` a frame (`None`: as long as it takes),
+    /// their replies interleaved as `seed` draws.
+    fn new(size: usize, ms: Option<f64>, seed: u64) -> Self {
+        let mut viewer = ViewerState::new(false, true, 0.0);
+        let mut workers = Workers::new(size);
+        viewer.command(ViewCommand::Play(false), &mut workers.pool);
         Self {
-            pool: Pool::new(size),
-            hosts: (0..size).map(|_| Host::default()).collect(),
-            inbox: Vec::new(),
-            budget,
-            now: Box::new(clock()),
-            shuffle,
+            viewer,
+            workers,
+            ms: ms.unwrap_or(f64::INFINITY),
+            frame: 0,
+            rng: Pcg64::seed_from_u64(seed),
         }
     }
 
-    /// Sends what the pool has to send, through the bytes, to the hosts.
-    fn send(&mut self) {
-        for send in self.pool.dispatch((self.now)()) {
-            let (ticket, request) =
-                decode_request(&encode_request(send.ticket, &send.request)).expect("reads back");
-            assert_eq!(request, send.request);
-            self.hosts[send.slot].push(ticket, request);
-        }
+    fn command(&mut self, command: ViewCommand) {
+        self.viewer.command(command, &mut self.workers.pool);
     }
 
-    /// Sends what the pool has to send and lets each host work once.
-    fn run_hosts(&mut self) {
-        self.send();
-        for (slot, host) in self.hosts.iter_mut().enumerate() {
-            let budget = match self.budget {
-                None => Budget::Unbounded,
-                Some(ms) => Budget::Until((self.now)() + ms),
-            };
-            for (ticket, reply) in host.work(&*self.now, budget) {
-                self.inbox.push((slot, encode_reply(ticket, &reply)));
-            }
-        }
+    /// One frame: what reached the page is taken in, then what it asked is sent and worked
+    /// on. Replies of jobs that are not the shell's are returned.
+    fn frame(&mut self) -> Vec<Reply> {
+        self.frame += 1;
+        let now = self.frame as f64 * 16.0;
+        let polled = self.workers.poll(self.frame, now, &mut self.rng);
+        let (jobs, shell): (Vec<_>, Vec<_>) = polled
+            .replies
+            .into_iter()
+            .partition(|(_, r)| matches!(r, Reply::Grown { .. } | Reply::Tiled { .. }));
+        self.viewer
+            .take_all(shell, polled.sessions_lost, &mut self.workers.pool)
+            .expect("in step");
+        self.workers.dispatch(now).expect("reads back");
+        self.workers.work(self.frame, self.ms, 2, &mut self.rng);
+        jobs.into_iter().map(|(_, reply)| reply).collect()
     }
 
-    /// The next reply, with the request it answers: each worker's replies come in the order
-    /// it sent them (as messages from a Web Worker do), and the shuffle picks which worker's
-    /// comes next. A reply from a worker since replaced is dropped, as the page drops it.
-    fn next_reply(&mut self) -> Option<(Request, Reply)> {
+    /// Frames until nothing is asked of the workers or on its way back; the replies of jobs
+    /// that are not the shell's.
+    fn settle(&mut self) -> Vec<Reply> {
+        let mut jobs = Vec::new();
         loop {
-            while self.inbox.is_empty() {
-                self.run_hosts();
-                if self.inbox.is_empty() && !self.hosts.iter().any(Host::busy) {
-                    return None;
-                }
-            }
-            let mut slots: Vec<usize> = self.inbox.iter().map(|(s, _)| *s).collect();
-            slots.sort_unstable();
-            slots.dedup();
-            let slot = slots[self.shuffle % slots.len()];
-            self.shuffle = self.shuffle.wrapping_mul(31).wrapping_add(7);
-            let at = self.inbox.iter().position(|(s, _)| *s == slot)?;
-            let (slot, bytes) = self.inbox.remove(at);
-            let (ticket, reply) = decode_reply(&bytes).expect("reads back");
-            if let Some(request) = self.pool.answered(slot, ticket, (self.now)()) {
-                return Some((request, reply));
+            jobs.extend(self.frame());
+            if self.workers.idle() {
+                return jobs;
             }
         }
     }
 
-    /// Worker `slot` dies: what it was doing and what it had answered but not delivered are
-    /// lost, a fresh host takes its place; returns the session requests it held.
-    fn kill(&mut self, slot: usize) -> Vec<Request> {
-        self.hosts[slot] = Host::default();
-        self.inbox.retain(|(s, _)| *s != slot);
-        self.pool.failed(slot)
+    /// The page's copy of the shell shown.
+    fn replica(&self) -> &Replica {
+        self.viewer.shell().expect("a shell is shown").replica()
     }
 }
 
@@ -125,60 +112,53 @@ fn link_of(id: &str, extra: &str) -> (String, ShellSpec) {
     (link::encode(decoded.preset, &decoded.spec), decoded.spec)
 }
 
-/// The page's copy of a shell grown in `grows` requests of `rows` rows each (with a budget
-/// of a few milliseconds), then finished apart by the pool, by the viewer's own
-/// [`GrowthSession`]; the worker holding the session dies after `kill_after` requests, and a
+/// Loads `id` with `extra` values in `page`'s viewer, grows it in `grows` requests of `rows`
+/// rows each (each once the last is answered), then finishes it, shared out among the pool;
+/// the worker holding the session throws before the request `throw_after` is sent, and a
 /// job's worker once while pieces are made, if asked.
 fn grow_and_finish(
     page: &mut Page,
-    link: &str,
+    id: &str,
+    extra: &str,
     grows: usize,
-    rows: u32,
-    kill_after: Option<usize>,
-    kill_a_job: bool,
-) -> GrowthSession {
-    let mut growth = GrowthSession::load(1, link.into(), &mut |r| page.pool.submit(r));
-    let mut grown = 0;
-    let mut finish_sent = false;
-    let mut killed_job = false;
-    loop {
-        if grown < grows && page.pool.in_flight() == 0 && growth.replica().shell().is_some() {
-            if kill_after == Some(grown) {
-                let lost = page.kill(0);
-                assert!(lost.is_empty(), "nothing was in flight");
-                growth.resume(&lost, &mut |r| page.pool.submit(r));
-            }
-            assert!(growth.grow(rows, 4.0, &mut |r| page.pool.submit(r)));
-            grown += 1;
-        } else if grown == grows && !finish_sent && page.pool.in_flight() == 0 {
-            assert!(growth.finish(&mut |r| page.pool.submit(r)));
-            finish_sent = true;
+    rows: usize,
+    throw_after: Option<usize>,
+    throw_a_job: bool,
+) {
+    let (link, _) = link_of(id, extra);
+    let shell = PresetSpec::try_from(link).expect("a link");
+    page.command(ViewCommand::Load {
+        shell,
+        finish: false,
+    });
+    page.settle();
+    let room = page.replica().shell().expect("built").capacity;
+    // The page's copy takes the room the shape expects at once: no frame of growth copies the
+    // whole mesh into a larger one.
+    assert!(page.replica().mesh().vertices.capacity() >= room.0.vertices);
+    assert!(page.replica().mesh().indices.capacity() >= room.0.indices);
+    assert!(page.replica().edge().mesh().vertices.capacity() >= room.1.vertices);
+    for grow in 0..grows {
+        if throw_after == Some(grow) {
+            page.workers.throw(0, page.frame + 1);
+            page.settle();
         }
-        if kill_a_job && !killed_job && page.pool.busy_with_jobs() && page.pool.size() > 1 {
-            page.run_hosts();
-            assert!(page.kill(page.pool.size() - 1).is_empty());
-            killed_job = true;
-        }
-        let Some((request, reply)) = page.next_reply() else {
-            break;
-        };
-        let took = growth.take(&request, reply, &mut |r| page.pool.submit(r));
-        match took.expect("in step") {
-            Took::Loaded(shell, _) => {
-                // The page's copy takes the room the shape expects at once: no frame of
-                // growth copies the whole mesh into a larger one.
-                let (room, replica) = (shell.capacity, growth.replica());
-                assert!(replica.mesh().vertices.capacity() >= room.0.vertices);
-                assert!(replica.mesh().indices.capacity() >= room.0.indices);
-                assert!(replica.edge().mesh().vertices.capacity() >= room.1.vertices);
-            }
-            Took::Previewed(reply) => panic!("unexpected {reply:?}"),
-            Took::Advanced(_) | Took::Nothing => {}
-        }
+        page.command(ViewCommand::Grow(rows));
+        page.settle();
     }
-    assert!(growth.settled(), "every request of the session is answered");
-    assert!(growth.replica().is_done(), "the shell is grown");
-    growth
+    page.command(ViewCommand::Finish);
+    if throw_a_job && page.workers.count() > 1 {
+        while !page.workers.pool.busy_with_jobs() {
+            page.frame();
+        }
+        page.frame();
+        page.workers.throw(page.workers.count() - 1, page.frame + 1);
+    }
+    page.settle();
+    let status = page.viewer.status((1, 1));
+    let shell = status.shell.expect("built");
+    assert!(shell.settled, "every request of the session is answered");
+    assert!(shell.done, "the shell is grown");
 }
 
 /// The shell of `spec` grown alone: `grows` calls of `rows` rows, then finished.
@@ -193,13 +173,21 @@ fn alone(spec: &ShellSpec, grows: usize, rows: usize) -> Generator {
 
 #[test]
 fn a_murex_finished_by_one_two_or_four_workers_is_the_same_bit_for_bit() {
-    let (link, spec) = link_of("murex-cabritii", "&form.resolution=40");
+    let (_, spec) = link_of("murex-cabritii", "&form.resolution=40");
     let reference = alone(&spec, 0, 0);
     for size in [1, 2, 4] {
         for (grows, budget) in [(0, None), (5, Some(3.0))] {
-            let mut page = Page::new(size, budget, size * 7 + grows);
-            let growth = grow_and_finish(&mut page, &link, grows, 40, None, false);
-            let replica = growth.replica();
+            let mut page = Page::new(size, budget, (size * 7 + grows) as u64);
+            grow_and_finish(
+                &mut page,
+                "murex-cabritii",
+                "&form.resolution=40",
+                grows,
+                40,
+                None,
+                false,
+            );
+            let replica = page.replica();
             let what = format!("{size} workers, {grows} requests before Finish, budget {budget:?}");
             assert_eq!(replica.mesh(), reference.mesh(), "{what}");
             assert!(replica.edge().is_empty(), "{what}");
@@ -235,15 +223,23 @@ fn files(shell: impl Fn() -> Shell) -> Vec<Vec<u8>> {
 
 #[test]
 fn the_murexs_files_from_one_two_or_four_workers_are_the_command_lines_bit_for_bit() {
-    let (link, spec) = link_of("murex-cabritii", "&form.resolution=40");
+    let (_, spec) = link_of("murex-cabritii", "&form.resolution=40");
     let preset = preset("murex-cabritii").unwrap();
     let size = PrintSize::default;
     let reference = alone(&spec, 0, 0);
     let expected = files(|| Shell::new(&reference, &spec, preset, size()).unwrap());
     for workers in [1, 2, 4] {
-        let mut page = Page::new(workers, Some(2.0), workers);
-        let growth = grow_and_finish(&mut page, &link, 0, 0, None, false);
-        let replica = growth.replica();
+        let mut page = Page::new(workers, Some(2.0), workers as u64);
+        grow_and_finish(
+            &mut page,
+            "murex-cabritii",
+            "&form.resolution=40",
+            0,
+            0,
+            None,
+            false,
+        );
+        let replica = page.replica();
         let made =
             files(|| Shell::of(replica.for_export().unwrap(), &spec, preset, size()).unwrap());
         assert!(made == expected, "the files made with {workers} workers");
@@ -257,10 +253,10 @@ fn grown_in_requests_the_shell_is_the_one_grown_alone() {
         ("kawaguchi-coral", ""),
         ("implicit-whorl", "&form.resolution=48"),
     ] {
-        let (link, spec) = link_of(id, extra);
+        let (_, spec) = link_of(id, extra);
         let mut page = Page::new(2, Some(2.0), 3);
-        let growth = grow_and_finish(&mut page, &link, 30, 7, None, false);
-        let replica = growth.replica();
+        grow_and_finish(&mut page, id, extra, 30, 7, None, false);
+        let replica = page.replica();
         let reference = alone(&spec, 30, 7);
         assert_eq!(
             replica.snapshot().content_hash(),
@@ -278,14 +274,22 @@ fn grown_in_requests_the_shell_is_the_one_grown_alone() {
 
 #[test]
 fn a_worker_that_dies_is_replaced_and_its_work_done_again_to_the_same_bits() {
-    let (link, spec) = link_of("murex-cabritii", "&form.resolution=40");
+    let (_, spec) = link_of("murex-cabritii", "&form.resolution=40");
     let reference = alone(&spec, 0, 0);
-    // The session's worker dies after a third of the growth; a job's worker while pieces are
-    // made.
+    // The session's worker throws after a third of the growth; a job's worker while pieces
+    // are made.
     let mut page = Page::new(3, Some(3.0), 5);
-    let growth = grow_and_finish(&mut page, &link, 12, 20, Some(4), true);
-    let replica = growth.replica();
-    assert_eq!(page.pool.deaths(), 2);
+    grow_and_finish(
+        &mut page,
+        "murex-cabritii",
+        "&form.resolution=40",
+        12,
+        20,
+        Some(4),
+        true,
+    );
+    assert_eq!(page.workers.pool.deaths(), 2);
+    let replica = page.replica();
     assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()));
     assert_eq!(
         replica.snapshot().content_hash(),
@@ -297,53 +301,55 @@ fn a_worker_that_dies_is_replaced_and_its_work_done_again_to_the_same_bits() {
     );
 }
 
-/// The shell of `link` as the page grows it when the sessions' worker answers Load, is sent a
-/// Grow and dies before answering it: the page has the Load's reply in hand, and takes it in
-/// before it resumes the lost session (`resume_first` false, as the page does) or after.
-fn loaded_then_replaced(link: &str, resume_first: bool) -> Result<GrowthSession, String> {
-    let mut page = Page::new(1, None, 0);
-    let mut growth = GrowthSession::load(1, link.into(), &mut |r| page.pool.submit(r));
-    let (load, loaded) = page.next_reply().expect("the shell is built");
-    assert!(growth.grow(5, 4.0, &mut |r| page.pool.submit(r)));
-    page.send();
-    let lost = page.kill(0);
-    assert!(matches!(lost[..], [Request::Grow { .. }]), "{lost:?}");
-    if resume_first {
-        growth.resume(&lost, &mut |r| page.pool.submit(r));
-    }
-    growth.take(&load, loaded, &mut |r| page.pool.submit(r))?;
-    if !resume_first {
-        growth.resume(&lost, &mut |r| page.pool.submit(r));
-    }
-    loop {
-        if page.pool.in_flight() == 0 {
-            growth.finish(&mut |r| page.pool.submit(r));
-        }
-        let Some((request, reply)) = page.next_reply() else {
-            break;
-        };
-        growth.take(&request, reply, &mut |r| page.pool.submit(r))?;
-    }
-    Ok(growth)
-}
-
 #[test]
 fn replies_sent_before_the_sessions_worker_died_are_taken_in_before_it_is_resumed() {
     let (link, spec) = link_of("kawaguchi-horn", "");
     let reference = alone(&spec, 0, 0);
-    let growth = loaded_then_replaced(&link, false).expect("in step");
-    let replica = growth.replica();
-    assert!(replica.is_done() && growth.settled());
+    // The worker answers the Load, is sent a Grow and throws before answering it: the page
+    // has the Load's reply in hand when it learns of the death, in the same frame.
+    let mut page = Page::new(1, None, 0);
+    page.command(ViewCommand::Load {
+        shell: PresetSpec::try_from(link.clone()).expect("a link"),
+        finish: false,
+    });
+    page.workers.dispatch(0.0).expect("reads back");
+    page.workers
+        .work(0, f64::INFINITY, 0, &mut Pcg64::seed_from_u64(0));
+    page.command(ViewCommand::Grow(5));
+    page.workers.dispatch(0.0).expect("reads back");
+    page.workers.throw(0, 1);
+    page.command(ViewCommand::Finish);
+    page.settle();
+    let replica = page.replica();
+    assert!(replica.is_done());
     assert_eq!(replica.mesh_hash(), Some(reference.mesh_hash()));
     assert_eq!(
         replica.pattern_hash(),
         reference.pattern().map(|p| p.hash())
     );
-    // Resumed before the Load's reply is in, the shell is built twice, and the second copy
-    // does not continue the first: the words Kawaguchi's horn stopped with, once in three
-    // runs of the WebKit smoke suite, before the page took replies first.
+    // Resumed before the Load's reply is in, the shell would be built twice, and the second
+    // copy would not continue the first: the words Kawaguchi's horn stopped with, once in
+    // three runs of the WebKit smoke suite, before the page took replies first.
+    let mut host = Host::default();
+    let mut sent = Vec::new();
+    let mut growth = GrowthSession::load(1, link, &mut |r| sent.push(r));
+    host.push(1, sent.remove(0));
+    let (_, loaded) = host.work(&clock(), Budget::Unbounded).remove(0);
+    let load = Request::Load {
+        session: 1,
+        link: growth.link().to_string(),
+    };
+    assert!(growth.grow(5, 4.0, &mut |_| {}), "lost with the worker");
+    growth.resume(&[], &mut |r| sent.push(r));
+    assert!(growth.finish(&mut |_| {}), "the page went on to finish it");
+    let mut fresh = Host::default();
+    fresh.push(2, sent.remove(0));
+    let (_, again) = fresh.work(&clock(), Budget::Unbounded).remove(0);
+    growth
+        .take(&load, loaded, &mut |_| {})
+        .expect("the first copy");
     assert_eq!(
-        loaded_then_replaced(&link, true).err().as_deref(),
+        growth.take(&load, again, &mut |_| {}).err().as_deref(),
         Some("a worker's pattern rows start at 0 where the page holds 1")
     );
 }
@@ -359,7 +365,7 @@ fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
     ];
     for (job, (id, extra)) in ids.iter().enumerate() {
         let (link, _) = link_of(id, extra);
-        page.pool.submit(Request::Whole {
+        page.workers.pool.submit(Request::Whole {
             job: job as u32,
             link,
         });
@@ -380,7 +386,7 @@ fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
             return map;
         };
         for index in map.to_compute() {
-            page.pool.submit(Request::Tile {
+            page.workers.pool.submit(Request::Tile {
                 job: index as u32,
                 link: map.tiles()[index].link.clone(),
                 rows: map.rows as u32,
@@ -390,7 +396,7 @@ fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
     };
     let mut shared = map(Some(&mut page));
     let mut wholes = 0;
-    while let Some((_, reply)) = page.next_reply() {
+    for reply in page.settle() {
         match reply {
             Reply::Grown { job, result } => {
                 let whole = result.expect("grows");

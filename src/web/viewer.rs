@@ -15,7 +15,7 @@ use super::activity;
 use super::canvases::{lose_context, object_url, png};
 use super::clock::now;
 use super::debug::{self, Loss};
-use super::recovery::{RESTORE_WAIT_MS, Reopened, Reopening};
+use super::recovery::{Attempt, Reopened, attempt};
 use super::webcodecs::{self, VideoFrame};
 use super::workers::Workers;
 use crate::generator::{Advance, GROWTH_BUDGET_MS};
@@ -26,6 +26,7 @@ use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
 use crate::view::draw_pacing::{DrawPacing, FrameDraw};
 use crate::view::recording::FrameAsk;
+use crate::work::device_survival::{Loss as DeviceLoss, Open, Survival};
 use crate::work::file_writer::{FileStage, FileWriter, Needs};
 use crate::work::message::{Reply, Request, WholeShell};
 use crate::work::viewer_command::ViewCommand;
@@ -143,11 +144,9 @@ pub struct Viewer {
     workers: Rc<RefCell<Workers>>,
     /// The clear colour, as sRGB bytes (for a renderer opened again).
     background: [u8; 3],
-    /// A renderer being opened after the device was lost, and when the loss was seen.
-    reopening: Option<Reopening>,
-    lost_at: Option<f64>,
-    /// Why no renderer could be opened again: the viewer draws no more.
-    gone: Option<String>,
+    /// How its graphics device is kept (the core decides), and a renderer being opened again.
+    survival: Survival,
+    reopening: Option<Attempt>,
     /// The picture asked for as a file, once the browser has read it from the canvas.
     picture_read: Rc<RefCell<Option<Result<String, String>>>>,
     /// A file of the shell being written.
@@ -207,9 +206,8 @@ impl Viewer {
             recorded: None,
             workers,
             background,
+            survival: Survival::default(),
             reopening: None,
-            lost_at: None,
-            gone: None,
             picture_read: Rc::default(),
             writer: FileWriter::default(),
         }
@@ -308,57 +306,39 @@ impl Viewer {
         taken
     }
 
-    /// Keeps a graphics device: when the browser took the renderer's away, opens another in
-    /// the background (on the same canvas, or a fresh one; see `recovery.rs`) and, once it is
-    /// open, uploads the shell grown so far to it. Called once a frame before anything is drawn.
+    /// Keeps a graphics device as the core's [`Survival`] decides: when the browser took the
+    /// renderer's away, opens another in the background (on the same canvas, or a fresh one the
+    /// page gives) and, once it is open, uploads the shell grown so far to it. Called once a
+    /// frame before anything is drawn.
     pub fn survive(&mut self) -> Device {
-        if let Some(gone) = &self.gone {
-            return Device::Gone(gone.clone());
+        let loss = self.drawing.as_ref().and_then(|d| {
+            d.renderer.lost().map(|lost| DeviceLoss {
+                reason: lost.reason,
+                restored: lost.restored,
+                webgl: d.renderer.backend() == "WebGL2",
+            })
+        });
+        let answer = self.reopening.as_ref().and_then(|a| a.borrow_mut().take());
+        if answer.is_some() {
+            self.reopening = None;
         }
-        let reason = self.loss_reason();
-        if let Some(reopening) = &mut self.reopening {
-            return match reopening.take() {
-                None if reopening.needs_canvas() => Device::NeedsCanvas(reason),
-                None => Device::Reopening(reason),
-                Some(Ok(reopened)) => {
-                    self.reopening = None;
-                    self.lost_at = None;
-                    let backend = reopened.renderer.backend().to_string();
-                    self.install(reopened);
-                    Device::Reopened(backend)
-                }
-                Some(Err(e)) => {
-                    self.reopening = None;
-                    let gone = format!(
-                        "The graphics device was lost ({reason}) and none could be opened again: \
-                         {e}"
-                    );
-                    self.gone = Some(gone.clone());
-                    Device::Gone(gone)
-                }
-            };
-        }
-        let Some(d) = &self.drawing else {
-            return Device::Ready;
+        let (said, reopened) = match answer {
+            Some(Ok(reopened)) => (Some(Ok(())), Some(reopened)),
+            Some(Err(e)) => (Some(Err(e)), None),
+            None => (None, None),
         };
-        let Some(loss) = d.renderer.lost() else {
-            return Device::Ready;
-        };
-        let since = *self.lost_at.get_or_insert_with(now);
-        let webgl = d.renderer.backend() == "WebGL2";
-        if webgl && !loss.restored && now() - since < RESTORE_WAIT_MS {
-            // The browser may give the context back (webglcontextrestored): wait a little.
-            return Device::Reopening(loss.reason);
+        let (device, open) = self.survival.frame(now(), loss.as_ref(), said);
+        if let (Some(Open::Same), Some(d)) = (open, &self.drawing) {
+            self.reopening = Some(attempt(d.canvas.clone()));
         }
-        self.reopening = Some(Reopening::start(d.canvas.clone(), webgl && !loss.restored));
-        Device::Reopening(loss.reason)
-    }
-
-    fn loss_reason(&self) -> String {
-        self.drawing
-            .as_ref()
-            .and_then(|d| d.renderer.lost())
-            .map_or_else(|| "no reason given".to_string(), |l| l.reason)
+        match (device, reopened) {
+            (Device::Reopened(_), Some(reopened)) => {
+                let backend = reopened.renderer.backend().to_string();
+                self.install(reopened);
+                Device::Reopened(backend)
+            }
+            (device, _) => device,
+        }
     }
 
     /// Draws with a renderer opened again: the shell's buffers and texture are made anew and
@@ -384,8 +364,8 @@ impl Viewer {
     /// The fresh canvas the viewer asked for ([`Device::NeedsCanvas`]), to open a renderer
     /// on.
     pub fn give_canvas(&mut self, canvas: Canvas) {
-        if let Some(reopening) = &mut self.reopening {
-            reopening.give_canvas(canvas);
+        if self.survival.canvas_given() == Some(Open::Fresh) {
+            self.reopening = Some(attempt(canvas));
         }
     }
 
@@ -444,7 +424,7 @@ impl Viewer {
             if let Some(why) = d.unseen() {
                 return Err(format!("Nothing drawn reaches the screen: {why}."));
             }
-            if self.reopening.is_some() || d.renderer.lost().is_some() {
+            if self.survival.reopening() || d.renderer.lost().is_some() {
                 return Ok(false);
             }
         }

@@ -125,7 +125,7 @@ impl GrowthSession {
                 shell,
                 delta,
             } if ours(session) => {
-                self.pending -= 1;
+                self.answered()?;
                 let advance = self
                     .replica
                     .loaded(shell.clone(), delta)
@@ -134,7 +134,7 @@ impl GrowthSession {
             }
             Reply::Refused { session, message } if ours(session) => return Err(message),
             Reply::Grew { session, delta } if ours(session) => {
-                self.pending -= 1;
+                self.answered()?;
                 self.replica.apply(delta).map_err(|e| e.to_string())?
             }
             Reply::Apart {
@@ -143,7 +143,7 @@ impl GrowthSession {
                 pieces,
                 hash,
             } if ours(session) => {
-                self.pending -= 1;
+                self.answered()?;
                 for (group, ids) in pieces.groups.iter().enumerate() {
                     send(Request::Pieces {
                         job: group as u32,
@@ -161,7 +161,7 @@ impl GrowthSession {
                 vertices,
                 indices,
             } if ours(session) => {
-                self.pending -= 1;
+                self.answered()?;
                 let mesh = self.replica.mesh();
                 if (vertices as usize, indices as usize)
                     != (mesh.vertices.len(), mesh.indices.len())
@@ -186,6 +186,17 @@ impl GrowthSession {
             _ => return Ok(Took::Nothing),
         };
         Ok(Took::Advanced(advance))
+    }
+
+    /// One request of the session answered. An answer to nothing asked is refused in words:
+    /// counted, it would leave the shell owing answers for ever (the count wraps in a release
+    /// build), and so never settled, never grown on.
+    fn answered(&mut self) -> Result<(), String> {
+        self.pending = self
+            .pending
+            .checked_sub(1)
+            .ok_or("a worker answered more than the page asked of it")?;
+        Ok(())
     }
 
     /// The worker holding the shell was replaced, losing `lost` unanswered (its requests and

@@ -12,6 +12,7 @@
 //! too ([`status_readout::Readout`]). What a viewer decides without its canvas is its core
 //! state, [`viewer_state::ViewerState`]: the web runner only applies it.
 
+pub mod device_survival;
 pub(crate) mod edge_slots;
 pub mod file_writer;
 pub mod growth_session;

@@ -33,7 +33,11 @@ const CHROMIUM_FLAGS = [
  */
 function hooks() {
   if (window.__seen) return;
-  window.__seen = { errors: [], files: {} };
+  window.__seen = { errors: [], files: {}, frames: 0 };
+  // Counts the animation frames the browser gives the page: a page that never starts growing
+  // says in a timeout's message whether it was given any.
+  const frame = () => { window.__seen.frames += 1; requestAnimationFrame(frame); };
+  requestAnimationFrame(frame);
   const error = console.error.bind(console);
   console.error = (...args) => { window.__seen.errors.push(args.map(String).join(' ')); error(...args); };
   window.addEventListener('error', (e) => window.__seen.errors.push(String(e.message)));
@@ -73,10 +77,20 @@ function freePort() {
   });
 }
 
-/** What a page shows of itself, for a timeout's message: its signals and its status lines. */
+/**
+ * What a page shows of itself, for a timeout's message: its signals, its status lines, the
+ * animation frames it was given, whether it is visible, and its errors.
+ */
 function shown() {
   const text = (id) => document.getElementById(id)?.textContent?.trim() ?? '';
-  return JSON.stringify({ ...document.body.dataset, workers: text('workers-status'), message: text('message') });
+  return JSON.stringify({
+    ...document.body.dataset,
+    workers: text('workers-status'),
+    message: text('message'),
+    frames: window.__seen?.frames,
+    visibility: document.visibilityState,
+    errors: window.__seen?.errors,
+  });
 }
 
 /** A page of any engine, around `driver` (goto, run, element PNG, click, logged errors). */
