@@ -5,11 +5,11 @@
 
 use seashells_core::generator::Generator;
 use seashells_core::presets::{preset, presets};
-use seashells_core::share::breeding::{Breeding, PARENT};
 use seashells_core::share::lineage::{Lineage, MAX_CHOICES, OFFSPRING, RATES};
 use seashells_core::share::link::{decode, flatten};
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::fields::Kind;
+use seashells_core::variation::breeding::{Breeding, PARENT};
 use seashells_core::view::picture::{TILE_PIXELS, picture_spec};
 use std::collections::BTreeMap;
 
@@ -175,7 +175,7 @@ fn a_higher_rate_moves_the_same_numbers_further() {
             let Some(f) = fast.changes(i).iter().find(|f| f.field.key == s.field.key) else {
                 continue;
             };
-            let far = |c: &seashells_core::share::breeding::Change| match c.field.kind {
+            let far = |c: &seashells_core::variation::breeding::Change| match c.field.kind {
                 Kind::Real { log: true, .. } if c.from > 0.0 => (c.to / c.from).ln().abs(),
                 _ => (c.to - c.from).abs(),
             };

@@ -6,12 +6,12 @@
 use seashells_core::forms::sweep::raup::Raup;
 use seashells_core::presets::preset;
 use seashells_core::share::link::{decode, flatten};
-use seashells_core::share::parameter_map::{
-    Axis, PATIENCE_S, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
-};
-use seashells_core::share::tile::Tile;
 use seashells_core::spec::fields::field;
 use seashells_core::spec::form::Form;
+use seashells_core::variation::parameter_map::{
+    Axis, PATIENCE_S, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
+};
+use seashells_core::variation::tile::Tile;
 
 fn value(spec: &seashells_core::spec::ShellSpec, key: &str) -> f64 {
     flatten(&serde_json::to_value(spec).unwrap())[key]

@@ -9,7 +9,7 @@ use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
-use crate::share::breeding::{Breeding, PARENT};
+use crate::variation::breeding::{Breeding, PARENT};
 use wasm_bindgen::JsCast;
 use web_sys::HtmlInputElement;
 

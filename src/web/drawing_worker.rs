@@ -1,4 +1,4 @@
-//! The entry of the worker that draws the page's main view (`www/view-worker.js` loads this
+//! The entry of the worker that draws the page's main view (`www/drawing-worker.js` loads this
 //! same module): handed the page's canvas as an `OffscreenCanvas`, it runs the [`Viewer`] and a
 //! pool of workers of its own for the sessions, and does what the page's commands ask. Each of
 //! the page's animation frames ends with a tick, on which the worker keeps the device, takes in
@@ -69,7 +69,7 @@ fn get(object: &JsValue, key: &str) -> Option<JsValue> {
 /// Starts the worker: from now on it takes the page's messages. Panics are posted to the page
 /// as its crash message.
 #[wasm_bindgen]
-pub fn view_worker_start() {
+pub fn drawing_worker_start() {
     std::panic::set_hook(Box::new(|info| {
         console_error_panic_hook::hook(info);
         post(

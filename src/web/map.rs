@@ -13,12 +13,12 @@ use super::panel::label;
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::presets::Preset;
-use crate::share::parameter_map::{
-    Axis, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
-};
-use crate::share::tile::Picture;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
+use crate::variation::parameter_map::{
+    Axis, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
+};
+use crate::variation::tile::Picture;
 use crate::work::message::Request;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlInputElement, HtmlOptionElement, HtmlSelectElement};

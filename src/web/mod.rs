@@ -35,7 +35,7 @@ use record::Support;
 use std::cell::RefCell;
 use std::rc::Rc;
 use viewer::Viewer;
-use viewer_handle::{ViewWorker, ViewerHandle};
+use viewer_handle::{DrawingWorker, ViewerHandle};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{
@@ -171,7 +171,7 @@ async fn main_viewer(
 ) -> Result<ViewerHandle, String> {
     let (element, note) = if viewer_handle::in_worker() {
         let started = match canvases::hand_over(&element) {
-            Ok(offscreen) => ViewWorker::start(offscreen, true, background).await,
+            Ok(offscreen) => DrawingWorker::start(offscreen, true, background).await,
             Err(e) => Err(e),
         };
         match started {

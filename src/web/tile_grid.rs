@@ -5,8 +5,8 @@
 
 use super::dom::{append, attr, clear, create, typed};
 use super::page::{element, signal};
-use crate::share::tile::Picture;
-use crate::share::tile::Tile;
+use crate::variation::tile::Picture;
+use crate::variation::tile::Tile;
 use std::cell::Cell;
 use wasm_bindgen::{Clamped, JsCast};
 use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlImageElement, ImageData};

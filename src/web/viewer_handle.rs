@@ -50,7 +50,7 @@ struct Inbox {
 }
 
 /// The main viewer in a worker, as the page sees it.
-pub struct ViewWorker {
+pub struct DrawingWorker {
     worker: Worker,
     inbox: Rc<RefCell<Inbox>>,
     backend: String,
@@ -70,7 +70,7 @@ pub enum ViewerHandle {
     /// On the page's own thread.
     Here(Box<Viewer>),
     /// In a worker.
-    Worker(ViewWorker),
+    Worker(DrawingWorker),
 }
 
 /// Whether this page draws its main view in a worker: where module workers can hold an
@@ -84,7 +84,7 @@ pub fn in_worker() -> bool {
     !asked_page && has("OffscreenCanvas") && has("Worker")
 }
 
-impl ViewWorker {
+impl DrawingWorker {
     /// Starts the drawing worker on `canvas` (transferred to it) and waits until it has opened
     /// its renderer: the backend, or why it could not.
     pub async fn start(
@@ -94,9 +94,9 @@ impl ViewWorker {
     ) -> Result<Self, String> {
         let options = WorkerOptions::new();
         options.set_type(WorkerType::Module);
-        options.set_name("seashells-view");
+        options.set_name("seashells-drawing");
         // The page's query goes with it: the worker's pool reads its switches (`workers=N`).
-        let url = format!("./view-worker.js{}", scope::search());
+        let url = format!("./drawing-worker.js{}", scope::search());
         let worker = Worker::new_with_options(&url, &options)
             .map_err(|_| "the drawing worker could not start".to_string())?;
         let inbox: Rc<RefCell<Inbox>> = Rc::default();
@@ -222,7 +222,7 @@ impl ViewWorker {
     }
 }
 
-impl Drop for ViewWorker {
+impl Drop for DrawingWorker {
     fn drop(&mut self) {
         self.worker.set_onmessage(None);
         self.worker.set_onerror(None);

@@ -12,8 +12,8 @@ use crate::generator::{Advance, EdgeRuns, Generator, within};
 use crate::generator::{RimLengths, pattern_alone};
 use crate::mesh::{Bounds, Mesh};
 use crate::share::link;
-use crate::share::parameter_map::TileWork;
 use crate::spec::ShellSpec;
+use crate::variation::parameter_map::TileWork;
 use crate::view::preview::{Preview, PreviewState};
 use std::collections::VecDeque;
 

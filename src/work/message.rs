@@ -8,7 +8,7 @@ use super::slotted_edge::EdgeWrites;
 use super::wire::{self, WireError};
 use crate::mesh::{Bounds, Capacity, Mesh, Vertex};
 use crate::shape::{LineGrid, Pieces};
-use crate::share::tile::Picture;
+use crate::variation::tile::Picture;
 use crate::view::preview::PreviewState;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};

@@ -11,12 +11,12 @@ use super::status_readout::{Readout, Say};
 use super::viewer_command::{PresetSpec, ViewCommand};
 use super::viewer_status::{Device, ViewStatus};
 use crate::presets::Preset;
-use crate::share::breeding::Breeding;
 use crate::share::link::{self, Decoded};
 use crate::share::presentation::Presentation;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
+use crate::variation::breeding::Breeding;
 
 /// Quiet time after an edit before the address bar is updated, milliseconds.
 pub const URL_DELAY_MS: f64 = 300.0;

@@ -8,7 +8,7 @@
 // forced through test-only hooks exported by the wasm module (src/web/debug.rs), the context lost
 // with WEBGL_lose_context by another (the drawing worker's canvas is offscreen, so the test
 // cannot reach its context), the worker made to fail by test-only switches of
-// www/view-worker.js. Screenshots after each recovery are kept in tests/page/screenshots/ for
+// www/drawing-worker.js. Screenshots after each recovery are kept in tests/page/screenshots/ for
 // people to look at.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -235,7 +235,7 @@ for (const backend of ['WebGL2', 'WebGPU']) {
 }
 
 // A drawing worker that hangs before it opens, one that hangs later, and one whose frames the
-// GPU never finishes (the test-only switches of www/view-worker.js): each time the page says so,
+// GPU never finishes (the test-only switches of www/drawing-worker.js): each time the page says so,
 // draws on its own thread instead, and the shell is drawn there.
 for (const [switchName, why] of [
   ['hang-view=0', /said nothing in 20 s/],

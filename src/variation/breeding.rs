@@ -9,14 +9,14 @@
 //! (`&breed=0.4/3,0.4/7,0.5`: the third offspring at rate 0.4, then the seventh, and the next
 //! offspring at 0.5), and replayed from it.
 
-use super::lineage::{KEY, Lineage, OFFSPRING};
-use super::link;
 use super::parameter_map::{Axis, parameters};
 use super::tile::{Tile, Variant};
 use crate::fnv::Fnv;
 use crate::forms::sweep::raup::Coordinate;
 use crate::pattern::noise::Noise;
 use crate::presets::Preset;
+use crate::share::lineage::{KEY, Lineage, OFFSPRING};
+use crate::share::link;
 use crate::spec::fields::{Field, Kind, Section, display};
 use crate::spec::{Problem, ShellSpec};
 

@@ -8,7 +8,7 @@
 // opens a renderer), as a worker caught in an endless loop would; `stall-view` makes every
 // frame it hands to the GPU look unfinished forever (a WebGL fence never signalled), as a
 // context that opens but never presents would.
-import init, { view_worker_start } from './pkg/seashells.js';
+import init, { drawing_worker_start } from './pkg/seashells.js';
 
 const query = new URLSearchParams(self.location.search);
 const hangAt = query.has('hang-view') ? Number(query.get('hang-view')) : Infinity;
@@ -29,7 +29,7 @@ const hangIfAsked = () => {
 const early = [];
 self.onmessage = (event) => early.push(event);
 await init();
-view_worker_start();
+drawing_worker_start();
 const take = self.onmessage;
 self.onmessage = (event) => {
   hangIfAsked();

@@ -2,10 +2,10 @@
 //! them: a variant of a shell, read exactly as a link's values would be, with its link, its
 //! picture once computed, and what became of the values that made it.
 
-use super::link;
 use crate::forms::sweep::raup::whorls_apart;
 use crate::pattern::run::PatternRun;
 use crate::presets::Preset;
+use crate::share::link;
 use crate::spec::form::Form;
 use crate::spec::{Problem, ShellSpec};
 use serde::{Deserialize, Serialize};
