@@ -18,6 +18,7 @@ pub mod file_writer;
 pub mod growth_session;
 pub mod host;
 pub mod message;
+pub mod picture_queue;
 pub mod planar_update;
 pub mod pool;
 pub mod replica;

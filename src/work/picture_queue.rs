@@ -1,0 +1,307 @@
+//! The pictures the page asks of its pool and draws one a frame: the gallery's cards (asked
+//! while the gallery is shown, waiting while it is not) and the tiles of a grid of shells (the
+//! parameter map over a shape's parameters, breeding's offspring), each grown whole by a
+//! worker as fine as its picture shows. A picture drawn just before the graphics device was
+//! lost may be blank (the browser tells of a loss a little after the fact), so those drawn
+//! within [`LOSS_NOTICE_MS`] of a loss are asked again. Decided here; `web/gallery.rs` draws
+//! what this hands it and keeps the pictures' addresses.
+
+use super::message::{Request, WholeShell};
+use super::pool::Pool;
+use crate::presets::{Preset, presets};
+use crate::share::link;
+use crate::spec::ShellSpec;
+use crate::view::picture::{CARD_PIXELS, TILE_PIXELS, picture_spec};
+use std::collections::VecDeque;
+
+/// Milliseconds within which the browser is taken to report a lost device.
+pub const LOSS_NOTICE_MS: f64 = 2000.0;
+
+/// Where a picture goes: a gallery card's, or a tile of a grid of shells (the parameter map
+/// over a shape's parameters, or breeding), by the tile's job number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Place {
+    Card,
+    /// A tile by its job number, `small` where the grid shows many (the map's 64) rather
+    /// than a few large (breeding's nine).
+    Tile {
+        job: u32,
+        small: bool,
+    },
+}
+
+impl Place {
+    /// Pixels across the picture as drawn.
+    pub fn pixels(self) -> u32 {
+        match self {
+            Place::Card => CARD_PIXELS,
+            Place::Tile { .. } => TILE_PIXELS,
+        }
+    }
+
+    /// Whether the picture is drawn multisampled. A small tile is not: drawn at 128 pixels
+    /// and shown at about 100 among 63 others, it is smoothed about as much by the browser's
+    /// scaling, and one sample a pixel draws it in a third of the time on a software
+    /// rasterizer. Breeding's tiles are shown larger than drawn, and multisampled.
+    pub fn multisampled(self) -> bool {
+        !matches!(self, Place::Tile { small: true, .. })
+    }
+}
+
+/// A picture asked of the pool: where it goes, the shell and the link it is grown from, and
+/// the job number it was asked with.
+#[derive(Clone, Debug)]
+pub struct Wanted {
+    pub job: u32,
+    pub place: Place,
+    pub preset: &'static Preset,
+    pub spec: ShellSpec,
+    pub link: String,
+}
+
+/// The pictures asked, grown and drawn lately.
+#[derive(Default)]
+pub struct PictureQueue {
+    /// The pictures not drawn yet.
+    left: Vec<Wanted>,
+    /// Whether the pool has been asked for the cards' since the gallery was last shown.
+    asked: bool,
+    /// Shells grown and not drawn yet.
+    waiting: Vec<(Wanted, WholeShell)>,
+    /// Pictures drawn within [`LOSS_NOTICE_MS`], and when.
+    lately: VecDeque<(Wanted, f64)>,
+    /// The job number of the next picture asked.
+    next_job: u32,
+}
+
+impl PictureQueue {
+    /// A queue holding every preset's card.
+    pub fn of_cards() -> Self {
+        let mut queue = Self::default();
+        for preset in presets() {
+            queue.want(Place::Card, preset, &preset.spec);
+        }
+        queue
+    }
+
+    /// Adds the picture of `spec` (a variant of `preset`) to those to draw, its mesh as fine as
+    /// a picture shows; returns it to be asked of the pool.
+    fn want(&mut self, place: Place, preset: &'static Preset, spec: &ShellSpec) -> &Wanted {
+        let spec = picture_spec(spec, place.pixels());
+        let link = link::encode(preset, &spec);
+        self.push(place, preset, spec, link)
+    }
+
+    fn push(
+        &mut self,
+        place: Place,
+        preset: &'static Preset,
+        spec: ShellSpec,
+        link: String,
+    ) -> &Wanted {
+        let wanted = Wanted {
+            job: self.next_job,
+            place,
+            preset,
+            link,
+            spec,
+        };
+        self.next_job = self.next_job.wrapping_add(1);
+        self.left.push(wanted);
+        self.left.last().expect("just pushed")
+    }
+
+    fn submit(pool: &mut Pool, wanted: &Wanted) {
+        pool.submit(Request::Whole {
+            job: wanted.job,
+            link: wanted.link.clone(),
+        });
+    }
+
+    /// Asks the pool for the cards' pictures not drawn yet (once while the gallery is shown).
+    pub fn ask_cards(&mut self, pool: &mut Pool) {
+        if std::mem::replace(&mut self.asked, true) {
+            return;
+        }
+        for wanted in self.left.iter().filter(|w| w.place == Place::Card) {
+            Self::submit(pool, wanted);
+        }
+    }
+
+    /// A tile's picture of `spec` (a variant of `preset`): the spec as fine as a tile shows, and
+    /// the link it is grown from (a picture drawn lately from the same link can be shown at
+    /// once instead of asked).
+    pub fn tile_picture(preset: &'static Preset, spec: &ShellSpec) -> (ShellSpec, String) {
+        let spec = picture_spec(spec, TILE_PIXELS);
+        let link = link::encode(preset, &spec);
+        (spec, link)
+    }
+
+    /// Asks the pool for the picture of tile `job` (`small`: one of many, [`Place::Tile`]):
+    /// `picture`, the [`Self::tile_picture`] of a shell of `preset`.
+    pub fn ask_tile(
+        &mut self,
+        job: u32,
+        small: bool,
+        preset: &'static Preset,
+        picture: (ShellSpec, String),
+        pool: &mut Pool,
+    ) {
+        let (spec, link) = picture;
+        let wanted = self.push(Place::Tile { job, small }, preset, spec, link);
+        Self::submit(pool, wanted);
+    }
+
+    /// Asks the pool again for a picture that may have been drawn blank by a lost device.
+    pub fn ask_again(&mut self, wanted: &Wanted, pool: &mut Pool) {
+        let again = self.want(wanted.place, wanted.preset, &wanted.spec);
+        Self::submit(pool, again);
+    }
+
+    /// Whether the pool's job `job` is a picture for `place`.
+    fn job_for(&self, job: u32, place: impl Fn(Place) -> bool) -> bool {
+        self.left.iter().any(|w| w.job == job && place(w.place))
+    }
+
+    /// The gallery was left: the cards' pictures not yet sent to a worker wait until it is
+    /// shown again.
+    pub fn pause(&mut self, pool: &mut Pool) {
+        pool.cancel(
+            |r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, |p| p == Place::Card)),
+        );
+        self.asked = false;
+    }
+
+    /// The grid of shells was closed or drawn anew: its tiles' pictures are drawn no more.
+    pub fn drop_tiles(&mut self, pool: &mut Pool) {
+        let tile = |p: Place| matches!(p, Place::Tile { .. });
+        pool.cancel(|r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, tile)));
+        self.left.retain(|w| !tile(w.place));
+        self.waiting.retain(|(w, _)| !tile(w.place));
+        self.lately.retain(|(w, _)| !tile(w.place));
+    }
+
+    /// A worker grew the shell of picture `job`: it waits to be drawn. A tile whose shell could
+    /// not be grown is returned with the reason; a job no longer wanted changes nothing.
+    pub fn take(&mut self, job: u32, result: Result<WholeShell, String>) -> Option<(u32, String)> {
+        let at = self.left.iter().position(|w| w.job == job)?;
+        let wanted = self.left.remove(at);
+        match (result, wanted.place) {
+            (Ok(whole), _) => {
+                self.waiting.push((wanted, whole));
+                None
+            }
+            (Err(why), Place::Tile { job, .. }) => Some((job, why)),
+            (Err(_), Place::Card) => None,
+        }
+    }
+
+    /// The pictures' device is not ready (lost, or being opened again): what was drawn just
+    /// before may be blank, and is asked again. Returns those asked again.
+    pub fn device_lost(&mut self, pool: &mut Pool) -> Vec<Wanted> {
+        let lost: Vec<Wanted> = self.lately.drain(..).map(|(w, _)| w).collect();
+        for wanted in &lost {
+            self.ask_again(wanted, pool);
+        }
+        lost
+    }
+
+    /// The next shell to draw at `now`, one a frame (reading a picture back waits for the GPU,
+    /// and the page answers the user between two); pictures drawn longer ago than a loss is
+    /// noticed are no longer watched.
+    pub fn next(&mut self, now: f64) -> Option<(Wanted, WholeShell)> {
+        let noticed = now - LOSS_NOTICE_MS;
+        while self.lately.front().is_some_and(|(_, at)| *at < noticed) {
+            self.lately.pop_front();
+        }
+        self.waiting.pop()
+    }
+
+    /// `wanted` was drawn at `now`.
+    pub fn drawn(&mut self, wanted: Wanted, now: f64) {
+        self.lately.push_back((wanted, now));
+    }
+
+    /// Whether every card's picture is drawn, and the last of them long enough ago that a
+    /// lost device would have been reported.
+    pub fn finished(&self) -> bool {
+        let card = |w: &Wanted| w.place == Place::Card;
+        !self.left.iter().any(card)
+            && !self.waiting.iter().any(|(w, _)| card(w))
+            && !self.lately.iter().any(|(w, _)| card(w))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::work::host::{Budget, Host};
+    use crate::work::message::Reply;
+
+    /// The whole shell of the request `job` of the pool, grown by a host.
+    fn grown(pool: &mut Pool) -> Vec<(u32, Result<WholeShell, String>)> {
+        let mut host = Host::default();
+        for send in pool.dispatch(0.0) {
+            host.push(send.ticket, send.request);
+        }
+        host.work(&|| 0.0, Budget::Unbounded)
+            .into_iter()
+            .filter_map(|(_, reply)| match reply {
+                Reply::Grown { job, result } => Some((job, result)),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn cards_are_asked_once_while_the_gallery_shows_and_wait_while_it_does_not() {
+        let mut queue = PictureQueue::of_cards();
+        let mut pool = Pool::new(1);
+        queue.ask_cards(&mut pool);
+        queue.ask_cards(&mut pool);
+        let asked = pool.waiting();
+        assert_eq!(asked, presets().len(), "each card once");
+        queue.pause(&mut pool);
+        assert_eq!(pool.waiting(), 0, "cancelled while the gallery is left");
+        queue.ask_cards(&mut pool);
+        assert_eq!(pool.waiting(), asked, "asked again when it is shown");
+        assert!(!queue.finished());
+    }
+
+    #[test]
+    fn a_picture_drawn_just_before_a_loss_is_asked_again_and_one_drawn_long_before_is_not() {
+        let mut queue = PictureQueue::default();
+        let mut pool = Pool::new(1);
+        let stripes = crate::presets::preset("stripes").unwrap();
+        let picture = || PictureQueue::tile_picture(stripes, &stripes.spec);
+        queue.ask_tile(3, true, stripes, picture(), &mut pool);
+        queue.ask_tile(4, true, stripes, picture(), &mut pool);
+        for (job, result) in grown(&mut pool) {
+            assert_eq!(queue.take(job, result), None);
+        }
+        let (first, _) = queue.next(0.0).expect("grown");
+        queue.drawn(first, 0.0);
+        let (second, _) = queue.next(LOSS_NOTICE_MS + 1.0).expect("grown");
+        queue.drawn(second.clone(), LOSS_NOTICE_MS + 1.0);
+        // The first was drawn long enough ago to be watched no more.
+        let again = queue.device_lost(&mut pool);
+        assert_eq!(again.len(), 1);
+        assert_eq!(again[0].place, second.place);
+        assert_eq!(pool.waiting(), 1, "asked again of the pool");
+        queue.drop_tiles(&mut pool);
+        assert_eq!(pool.waiting(), 0, "a grid closed draws no more");
+        assert!(queue.next(0.0).is_none());
+    }
+
+    #[test]
+    fn a_tile_that_cannot_grow_says_why_and_a_job_no_longer_wanted_changes_nothing() {
+        let mut queue = PictureQueue::default();
+        let mut pool = Pool::new(1);
+        let stripes = crate::presets::preset("stripes").unwrap();
+        let picture = PictureQueue::tile_picture(stripes, &stripes.spec);
+        queue.ask_tile(7, false, stripes, picture, &mut pool);
+        assert_eq!(queue.take(0, Err("no".into())), Some((7, "no".to_string())));
+        assert_eq!(queue.take(0, Err("again".into())), None, "taken once");
+        assert_eq!(queue.take(99, Err("never asked".into())), None);
+    }
+}
