@@ -171,6 +171,76 @@ impl RecordingPlan {
     }
 }
 
+/// Frames waiting in the encoder before the recording waits for it.
+pub const MAX_QUEUE: u32 = 4;
+
+/// What paces a recording's frames.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Pace {
+    /// An encoder that takes frames as fast as they come: `queued` wait in it now.
+    Encoder { queued: u32 },
+    /// A recorder of the canvas in real time, started at `started` and read at `now`
+    /// (milliseconds): a frame is drawn when the clock reaches its timestamp.
+    RealTime { started: f64, now: f64 },
+}
+
+/// Where a recording stands: the next frame to capture, the turntable's turn so far, whether
+/// a frame is asked of the viewer and not yet drawn, and whether every frame is in.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Progress {
+    next: usize,
+    turned: f32,
+    asked: bool,
+    flushing: bool,
+}
+
+impl Progress {
+    /// Frames captured so far.
+    pub fn frames_done(&self) -> usize {
+        self.next
+    }
+
+    /// Whether every frame is captured (the encoder is finishing).
+    pub fn flushing(&self) -> bool {
+        self.flushing
+    }
+
+    /// The next frame of `plan` to ask of the viewer, when it is time to: none is asked and
+    /// not yet drawn, every frame is not yet in, and `pace` lets it (the encoder has room, or
+    /// the clock has reached its timestamp).
+    pub fn ask(&mut self, plan: &RecordingPlan, pace: Pace) -> Option<FrameAsk> {
+        if self.flushing || self.asked {
+            return None;
+        }
+        let waiting = match pace {
+            Pace::Encoder { queued } => queued > MAX_QUEUE,
+            Pace::RealTime { started, now } => {
+                now < started + plan.timestamp_us(self.next) as f64 / 1000.0
+            }
+        };
+        if waiting {
+            return None;
+        }
+        self.asked = true;
+        Some(plan.ask(self.next, self.turned))
+    }
+
+    /// The frame asked was drawn and captured; returns whether it was the last (the encoder
+    /// is to finish).
+    pub fn captured(&mut self, plan: &RecordingPlan) -> bool {
+        self.asked = false;
+        self.turned = plan.turn_at(self.next);
+        self.next += 1;
+        self.flushing = self.next == plan.frames();
+        self.flushing
+    }
+
+    /// The frame asked could not be drawn or captured (the recording fails).
+    pub fn missed(&mut self) {
+        self.asked = false;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -261,5 +331,56 @@ mod tests {
         assert_eq!(keys, [0, 60]);
         assert_eq!(plan.file_name("turbinate"), "turbinate-720p30.webm");
         assert_eq!(plan.bitrate(), 3_317_760);
+    }
+
+    #[test]
+    fn a_frame_is_asked_once_at_the_pace_of_the_encoder_or_the_clock_until_the_last() {
+        let plan = RecordingPlan::new(
+            3,
+            200.0,
+            RecordingOptions {
+                size: VideoSize::P360,
+                fps: 30,
+                turntable_s: 0,
+            },
+        );
+        let mut progress = Progress::default();
+        let room = Pace::Encoder { queued: 0 };
+        assert_eq!(
+            progress.ask(
+                &plan,
+                Pace::Encoder {
+                    queued: MAX_QUEUE + 1
+                }
+            ),
+            None
+        );
+        let first = progress.ask(&plan, room).expect("room in the encoder");
+        assert_eq!(first.timestamp_us, 0);
+        assert_eq!(progress.ask(&plan, room), None, "asked once until drawn");
+        progress.missed();
+        assert!(
+            progress.ask(&plan, room).is_some(),
+            "asked again after a miss"
+        );
+        let mut last = false;
+        for _ in 0..plan.frames() {
+            last = progress.captured(&plan);
+            if !last {
+                let early = Pace::RealTime {
+                    started: 0.0,
+                    now: plan.timestamp_us(progress.frames_done()) as f64 / 1000.0 - 1.0,
+                };
+                assert_eq!(progress.ask(&plan, early), None, "not before its time");
+                let due = Pace::RealTime {
+                    started: 0.0,
+                    now: plan.timestamp_us(progress.frames_done()) as f64 / 1000.0,
+                };
+                assert!(progress.ask(&plan, due).is_some());
+            }
+        }
+        assert!(last && progress.flushing());
+        assert_eq!(progress.frames_done(), plan.frames());
+        assert_eq!(progress.ask(&plan, room), None, "every frame is in");
     }
 }

@@ -15,7 +15,9 @@ use super::webcodecs::{
     self, CanvasCaptureTrack, Context2d, EncodedVideoChunk, VideoEncoder, VideoFrame, describe,
 };
 use crate::export::webm::{VideoCodec, WebmWriter};
-use crate::view::recording::{FrameAsk, RecordingOptions, RecordingPlan, VideoSize};
+use crate::view::recording::{
+    FrameAsk, Pace, Progress, RecordingOptions, RecordingPlan, VideoSize,
+};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
@@ -23,8 +25,6 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
 use web_sys::{HtmlCanvasElement, HtmlProgressElement, HtmlSelectElement};
 
-/// Frames waiting in the encoder before the recording waits for it.
-const MAX_QUEUE: u32 = 4;
 /// Milliseconds of video in each piece `MediaRecorder` hands over.
 const RECORDER_SLICE_MS: i32 = 1000;
 /// What `MediaRecorder` may write, in order of preference.
@@ -181,16 +181,10 @@ pub struct Recording {
     preset: &'static str,
     sink: Sink,
     collected: Rc<RefCell<Collected>>,
-    /// The next frame to capture.
-    next: usize,
-    /// The turntable's turn so far, radians.
-    turned: f32,
+    /// Where it stands: the frames asked and captured (the core paces them).
+    progress: Progress,
     /// When it started, for `MediaRecorder`'s real-time pace.
     started: f64,
-    /// Every frame is captured; waiting for the encoder to finish.
-    flushing: bool,
-    /// The next frame is asked of the viewer and not yet drawn.
-    asked: bool,
 }
 
 fn codec_sink(
@@ -329,11 +323,8 @@ impl Recording {
             preset,
             sink,
             collected,
-            next: 0,
-            turned: 0.0,
+            progress: Progress::default(),
             started: now(),
-            flushing: false,
-            asked: false,
         })
     }
 
@@ -344,7 +335,7 @@ impl Recording {
 
     /// Frames captured so far.
     pub fn frames_done(&self) -> usize {
-        self.next
+        self.progress.frames_done()
     }
 
     /// Where the recording stands, once a frame: failed, working, or every frame encoded.
@@ -352,56 +343,55 @@ impl Recording {
         if let Some(e) = self.collected.borrow_mut().error.take() {
             return Step::Failed(e);
         }
-        if self.flushing && self.collected.borrow().finished {
+        if self.progress.flushing() && self.collected.borrow().finished {
             Step::Done
         } else {
             Step::Working
         }
     }
 
-    /// The next video frame to ask of the viewer, when it is time to: none is asked and not
-    /// yet drawn, the encoder has room (or, for `MediaRecorder`'s real-time pace, the clock has
-    /// reached it).
+    /// The next video frame to ask of the viewer, when it is time to, as the core's
+    /// [`Progress`] paces it: by the encoder's queue, or `MediaRecorder`'s real time.
     pub fn ask(&mut self) -> Option<FrameAsk> {
-        if self.flushing || self.asked {
-            return None;
-        }
-        let waiting = match &self.sink {
-            Sink::Codec { encoder, .. } => encoder.encode_queue_size() > MAX_QUEUE,
-            Sink::Stream { .. } => {
-                now() < self.started + self.plan.timestamp_us(self.next) as f64 / 1000.0
-            }
+        let pace = match &self.sink {
+            Sink::Codec { encoder, .. } => Pace::Encoder {
+                queued: encoder.encode_queue_size(),
+            },
+            Sink::Stream { .. } => Pace::RealTime {
+                started: self.started,
+                now: now(),
+            },
         };
-        if waiting {
-            return None;
-        }
-        self.asked = true;
-        Some(self.plan.ask(self.next, self.turned))
+        self.progress.ask(&self.plan, pace)
     }
 
     /// Takes the frame asked for, as the viewer drew it (or why it could not), and hands it to
     /// the encoder.
     pub fn took(&mut self, frame: Result<VideoFrame, String>) -> Result<(), String> {
-        self.asked = false;
-        let frame = frame?;
-        let captured = self.capture(&frame);
-        frame.close();
-        captured?;
-        self.turned = self.plan.turn_at(self.next);
-        self.next += 1;
-        if self.next == self.plan.frames() {
+        let captured = frame.and_then(|frame| {
+            let captured = self.capture(&frame);
+            frame.close();
+            captured
+        });
+        if let Err(e) = captured {
+            self.progress.missed();
+            return Err(e);
+        }
+        if self.progress.captured(&self.plan) {
             self.end();
         }
         Ok(())
     }
 
-    /// Hands frame `next`, just drawn, to the encoder (or draws it on the canvas
+    /// Hands the next frame, just drawn, to the encoder (or draws it on the canvas
     /// `MediaRecorder` records).
     fn capture(&self, frame: &VideoFrame) -> Result<(), String> {
         match &self.sink {
             Sink::Codec { encoder, .. } => {
-                let options =
-                    webcodecs::object(&[("keyFrame", self.plan.is_keyframe(self.next).into())]);
+                let options = webcodecs::object(&[(
+                    "keyFrame",
+                    self.plan.is_keyframe(self.progress.frames_done()).into(),
+                )]);
                 encoder
                     .encode(frame, &options)
                     .map_err(|e| format!("the frame could not be encoded ({})", describe(&e)))
@@ -418,7 +408,6 @@ impl Recording {
 
     /// Every frame is captured: lets the encoder finish.
     fn end(&mut self) {
-        self.flushing = true;
         match &self.sink {
             Sink::Codec { encoder, .. } => {
                 let flushed = JsFuture::from(encoder.flush());
@@ -541,17 +530,17 @@ pub fn show_recording(recording: Option<&Recording>) {
         element("record-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
     {
         bar.set_max(frames as f64);
-        bar.set_value(r.next as f64);
+        bar.set_value(r.progress.frames_done() as f64);
     }
-    signal("recordFrames", &r.next.to_string());
+    signal("recordFrames", &r.progress.frames_done().to_string());
     set_text(
         "record-status",
-        &if r.flushing {
+        &if r.progress.flushing() {
             format!("Finishing the file ({frames} frames)…")
         } else {
             format!(
                 "Recording frame {} of {frames} ({}×{}, {} a second{})…",
-                r.next + 1,
+                r.progress.frames_done() + 1,
                 r.plan.width,
                 r.plan.height,
                 r.plan.fps,

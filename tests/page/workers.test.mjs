@@ -2,15 +2,16 @@
 // of 1, 2 or 4 workers (`workers=N`, a debug parameter of the page's address; with 4 the
 // finish is the GLB export's, asked while the shell grows, and the file is the command
 // line's) and on the page's own thread (`workers=0`, the fallback) has the same mesh and
-// pattern hashes; a value changed mid-growth cancels what was in flight, so the shell ends as
-// a fresh load of the new link, and one changed on the grown shell remeshes it whole at once;
-// workers made to throw (`crash-workers=N`, test-only) or to hang (`hang-workers=N`) are
+// pattern hashes; workers made to throw (`crash-workers=N`, test-only) or to hang (`hang-workers=N`) are
 // replaced, their work redone to the same bits, and the page says so the second time (and
 // where none answers anything, the shell grows on the thread that draws it); and a
 // pattern being previewed when its worker throws (`debug_crash_worker_on_fill`, a test-only
 // hook of the wasm module) is previewed whole all the same. The workers grow the shell and
 // never touch the GPU, so these run on WebGL2 alone (the backend every engine can give); the
-// drawing on WebGPU is the other suites' (drawing, growth, implicit, survive).
+// drawing on WebGPU is the other suites' (drawing, growth, implicit, survive). What a value
+// changed mid-growth does (the old growth's replies change nothing, the shell ends as the new
+// link's; a grown implicit shell is remeshed whole at once) is proven natively, in any
+// interleaving, by tests/simulator.rs and work::shell_change's tests.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -84,45 +85,6 @@ test(`the Murex finished by 1, 2 or 4 workers or on the page's thread is the sam
       assert.equal(runs[workers].mesh, runs[1].mesh);
     }
     assert.match(runs[1].meshHash, /^[0-9a-f]{16}$/);
-  } finally {
-    await close();
-  }
-});
-
-test(`a value changed while the Murex grows cancels the old growth on ${backend}`, async () => {
-  const { browser, base, close } = await session(backend);
-  try {
-    const { page, errors } = await open(browser, `${base}?workers=2#${MUREX}&growth.speed=2`);
-    await waitForState(page, ['growing']);
-    await page.waitForFunction(() => Number(document.body.dataset.rows) >= 40, null, { timeout: 120_000 });
-    const number = page.locator('[data-key="form.resolution"] input.number');
-    await number.fill('40');
-    await number.press('Enter');
-    await page.waitForFunction(() => location.hash.includes('form.resolution=40'));
-    await page.locator('#shell').click();
-    await page.keyboard.press('End');
-    const edited = await waitForState(page, ['grown', 'error'], 180_000);
-    assert.equal(edited.state, 'grown');
-    const link = await page.evaluate(() => location.hash.slice(1));
-    // A value changed on the grown shell, growth paused: it is remeshed whole at once, with
-    // no End pressed (grown again from its apex, it would wait at its first rows).
-    await page.locator('#shell').click();
-    await page.keyboard.press('Space');
-    await page.waitForFunction(() => document.body.dataset.playing === 'false');
-    await number.fill('44');
-    await number.press('Enter');
-    await page.waitForFunction(() => location.hash.includes('form.resolution=44'));
-    const remeshed = await waitForState(page, ['grown', 'error'], 180_000);
-    assert.equal(remeshed.state, 'grown');
-    const remeshedLink = await page.evaluate(() => location.hash.slice(1));
-    assert.deepEqual(errors, []);
-    await page.close();
-    const fresh = await finished(browser, base, 'workers=2', link);
-    assert.equal(edited.meshHash, fresh.meshHash, 'the edited shell is the new link\'s');
-    assert.equal(edited.patternHash, fresh.patternHash);
-    const freshRemeshed = await finished(browser, base, 'workers=1', remeshedLink);
-    assert.equal(remeshed.meshHash, freshRemeshed.meshHash, 'the remeshed shell is the new link\'s');
-    assert.equal(remeshed.patternHash, freshRemeshed.patternHash);
   } finally {
     await close();
   }
