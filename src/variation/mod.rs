@@ -5,5 +5,6 @@
 //! a tile: its link, and its picture once computed.
 
 pub mod breeding;
+pub mod map_plan;
 pub mod parameter_map;
 pub mod tile;

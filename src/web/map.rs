@@ -15,8 +15,9 @@ use super::workers::Workers;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
+use crate::variation::map_plan::{self, MapPlan};
 use crate::variation::parameter_map::{
-    Axis, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters, side_for,
+    Axis, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters,
 };
 use crate::variation::tile::Picture;
 use crate::work::message::Request;
@@ -199,7 +200,8 @@ impl MapView {
         }
     }
 
-    /// Starts a map of `spec` over the axes the controls describe, or says why it cannot.
+    /// Starts a map of `spec` over the axes the controls describe, as the core plans it, or
+    /// says why it cannot.
     pub fn draw(
         &mut self,
         preset: &'static Preset,
@@ -214,101 +216,47 @@ impl MapView {
             x.axis(self.kind, count)
                 .and_then(|x| Ok((x, y.axis(self.kind, count)?)))
         };
-        let (x, y) = match axes(side()) {
-            Ok((x, y)) if x.field.key == y.field.key => {
-                return self.refuse("Choose two different parameters.");
-            }
-            Ok(axes) => axes,
-            Err(e) => return self.refuse(&format!("{e}.")),
-        };
         // A machine that drew the last map's shells slowly gets fewer of them.
         if let Some(pace) = debug::forced_pace() {
             self.pace = Some(pace);
         }
-        let count = side_for(self.pace, side());
-        let fewer = (x.shapes() || y.shapes()) && count < side();
-        let (x, y) = match fewer.then(|| axes(count)) {
-            Some(Ok(axes)) => axes,
-            _ => (x, y),
+        let planned = map_plan::plan(preset, spec, axes, side(), self.pace, pictures.draws());
+        let MapPlan {
+            mut map,
+            labels,
+            status,
+        } = match planned {
+            Ok(planned) => planned,
+            Err(why) => return self.refuse(&why),
         };
-        let mut map = ParameterMap::new(preset, spec, x, y);
-        if map.shells() && !pictures.draws() {
-            return self.refuse(
-                "This browser draws no 3D here, so the map shows patterns only: choose two \
-                 parameters of the pattern model.",
-            );
-        }
         self.stop(workers, pictures);
         let shows = if map.shells() {
             Shows::Shell
         } else {
             Shows::Pattern
         };
-        for (index, tile) in map.tiles().iter().enumerate() {
-            let (vx, vy) = map.values(index);
-            let mut label = format!(
-                "{} = {}, {} = {}",
-                symbol(map.x.field),
-                display(vx),
-                symbol(map.y.field),
-                display(vy)
-            );
+        for (tile, label) in map.tiles().iter().zip(&labels) {
             let mut classes = Vec::new();
-            if tile.apart {
+            if label.apart {
                 classes.push("apart");
-                label.push_str(" (whorls apart: open coiling, rare among real shells)");
             }
-            let here: Vec<&str> = map
-                .landmarks
-                .iter()
-                .filter(|(at, _)| *at == index)
-                .map(|(_, p)| p.name.as_str())
-                .collect();
-            let names = here.join(", ");
-            if !here.is_empty() {
-                label.push_str(&format!(" (here: {names})"));
-            }
-            let current = map.current == Some(index);
-            if current {
+            if label.current {
                 classes.push("current");
-                label.push_str(" (nearest this shell)");
             }
-            let a = self
-                .grid
-                .add(Some(&format!("#{}", tile.link)), &label, &classes, shows);
-            if current {
+            let a = self.grid.add(
+                Some(&format!("#{}", tile.link)),
+                &label.text,
+                &classes,
+                shows,
+            );
+            if label.current {
                 attr(&a, "aria-current", "true");
             }
-            if !here.is_empty() {
-                append(&a, &[&create("span", "landmark", Some(&names))]);
+            if !label.landmarks.is_empty() {
+                append(&a, &[&create("span", "landmark", Some(&label.landmarks))]);
             }
         }
-        let each = if map.shells() {
-            "each the whole shell".to_string()
-        } else {
-            format!("{} rows each", map.rows)
-        };
-        let clamped: Vec<String> = [&map.x.note, &map.y.note]
-            .into_iter()
-            .flatten()
-            .map(|note| format!(" {note}."))
-            .collect();
-        let slow = match self.pace {
-            Some(pace) if fewer => format!(
-                " {count} × {count} tiles: this machine drew the last map's shells at {pace:.1} s \
-                 each."
-            ),
-            _ => String::new(),
-        };
-        set_text(
-            "map-status",
-            &format!(
-                "{} across, {} down; {each}. Choose a tile to open that shell.{}{slow}",
-                symbol(map.x.field),
-                symbol(map.y.field),
-                clamped.concat()
-            ),
-        );
+        set_text("map-status", &status);
         let asked = map.to_compute();
         self.filling_since = map.shells().then(|| (now(), asked.len()));
         for index in asked {
@@ -382,13 +330,5 @@ impl MapView {
             self.pace = Some((now() - since) / 1000.0 / asked as f64);
         }
         signal_filled("map", map.finished());
-    }
-}
-
-fn symbol(field: &Field) -> &'static str {
-    if field.symbol.is_empty() {
-        field.name
-    } else {
-        field.symbol
     }
 }
