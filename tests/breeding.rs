@@ -245,3 +245,27 @@ fn every_presets_offspring_are_links_that_reopen_and_grow() {
     }
     assert!(kinds_grown.len() >= 4, "{kinds_grown:?}");
 }
+
+#[test]
+fn the_parent_keeps_itself_and_each_offspring_says_what_it_changed_and_breeds_on() {
+    let oliva = preset("oliva-porphyria").unwrap();
+    let (breeding, _) = Breeding::new(oliva, &oliva.spec, &Lineage::default());
+    let (parent, keep) = breeding.label(PARENT);
+    assert_eq!(parent, "The parent, generation 1: open it to keep it");
+    assert_eq!(keep.as_deref(), Some(breeding.parent().link.as_str()));
+    for index in (0..breeding.tiles().len()).filter(|&i| i != PARENT) {
+        let (label, href) = breeding.label(index);
+        let child = Breeding::child(index).unwrap();
+        assert!(
+            label.starts_with(&format!("Offspring {child}: ")),
+            "{label}"
+        );
+        for change in breeding.changes(index) {
+            assert!(label.contains(&change.to_string()), "{label}");
+        }
+        let opens = href.expect("an offspring that grows opens");
+        let decoded = decode(&opens);
+        assert_eq!(decoded.lineage.map(|l| l.chosen.len()), Some(1), "{opens}");
+    }
+    assert!(breeding.status().starts_with("Generation 1."));
+}

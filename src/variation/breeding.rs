@@ -348,6 +348,42 @@ impl Breeding {
         &self.tiles
     }
 
+    /// What tile `index` says of itself, and the link it opens (`None` for an offspring whose
+    /// values cannot grow): the parent keeps itself; an offspring, what it changed from the
+    /// parent, breeds the next generation from it.
+    pub fn label(&self, index: usize) -> (String, Option<String>) {
+        let tile = &self.tiles[index];
+        match Self::child(index) {
+            None => (
+                format!(
+                    "The parent, generation {}: open it to keep it",
+                    self.generation()
+                ),
+                Some(tile.link.clone()),
+            ),
+            Some(child) => {
+                let changes: Vec<String> = self
+                    .changes(index)
+                    .iter()
+                    .map(ToString::to_string)
+                    .collect();
+                let href = tile
+                    .failure
+                    .is_none()
+                    .then(|| self.link(&self.lineage.choose(child)));
+                (format!("Offspring {child}: {}", changes.join("; ")), href)
+            }
+        }
+    }
+
+    /// The status line under the offspring.
+    pub fn status(&self) -> String {
+        format!(
+            "Generation {}. Choose an offspring to breed from it; the parent is in the middle.",
+            self.generation()
+        )
+    }
+
     /// The parent: the shell the lineage has come to.
     pub fn parent(&self) -> &Tile {
         &self.tiles[PARENT]

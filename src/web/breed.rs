@@ -78,31 +78,11 @@ impl BreedView {
         }
         let mut drawn = Vec::new();
         for (index, tile) in breeding.tiles().iter().enumerate() {
-            let (label, href, classes) = match Breeding::child(index) {
-                None => (
-                    format!(
-                        "The parent, generation {}: open it to keep it",
-                        breeding.generation()
-                    ),
-                    Some(tile.link.clone()),
-                    vec!["parent"],
-                ),
-                Some(child) => {
-                    let changes: Vec<String> = breeding
-                        .changes(index)
-                        .iter()
-                        .map(ToString::to_string)
-                        .collect();
-                    let href = tile
-                        .failure
-                        .is_none()
-                        .then(|| breeding.link(&breeding.lineage.choose(child)));
-                    (
-                        format!("Offspring {child}: {}", changes.join("; ")),
-                        href,
-                        Vec::new(),
-                    )
-                }
+            let (label, href) = breeding.label(index);
+            let classes = if index == PARENT {
+                vec!["parent"]
+            } else {
+                Vec::new()
             };
             let href = href.map(|h| format!("#{h}"));
             let a = self
@@ -129,14 +109,7 @@ impl BreedView {
         for index in drawn {
             breeding.shown(index, Ok(()));
         }
-        set_text(
-            "breed-status",
-            &format!(
-                "Generation {}. Choose an offspring to breed from it; the parent is in the \
-                 middle.",
-                breeding.generation()
-            ),
-        );
+        set_text("breed-status", &breeding.status());
         signal_filled("breed", breeding.finished());
         self.breeding = Some(breeding);
     }
