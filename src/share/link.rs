@@ -50,6 +50,11 @@ pub struct Decoded {
     pub problems: Vec<Problem>,
 }
 
+/// Every leaf of `spec` by its dotted path, as a link writes it.
+pub fn leaves(spec: &ShellSpec) -> BTreeMap<String, Value> {
+    flatten(&to_value(spec))
+}
+
 /// Every leaf of a serialised spec by its dotted path; lists are leaves.
 pub fn flatten(value: &Value) -> BTreeMap<String, Value> {
     fn walk(value: &Value, prefix: &str, out: &mut BTreeMap<String, Value>) {
@@ -259,8 +264,8 @@ fn parent_mut<'a>(root: &'a mut Value, parent: &str) -> Option<&'a mut Map<Strin
 
 /// Writes the link fragment (without '#') for `spec`, relative to `preset`.
 pub fn encode(preset: &Preset, spec: &ShellSpec) -> String {
-    let base = flatten(&to_value(&preset.spec));
-    let current = flatten(&to_value(spec));
+    let base = leaves(&preset.spec);
+    let current = leaves(spec);
     let changed: Vec<(&String, String)> = current
         .iter()
         .map(|(k, v)| (k, format_value(v)))

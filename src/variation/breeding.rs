@@ -246,8 +246,7 @@ fn offspring(
         variant.set(Ok(pairs));
         // A repair that undid a change (the preset's whole form put back where it would have
         // too many trunks, say) leaves the parent: drawn again.
-        let leaves =
-            link::flatten(&serde_json::to_value(&variant.spec).expect("a spec serialises"));
+        let leaves = link::leaves(&variant.spec);
         let undone = changes
             .iter()
             .any(|c| leaves.get(c.field.key).and_then(|v| v.as_f64()) != Some(c.to));

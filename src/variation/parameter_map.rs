@@ -14,7 +14,7 @@ use crate::forms::sweep::raup::{Coordinate, Raup};
 use crate::generator::{RimLengths, pattern_alone};
 use crate::pattern::run::PatternRun;
 use crate::presets::{Preset, presets};
-use crate::share::link::flatten;
+use crate::share::link::leaves;
 use crate::spec::Problem;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, RAUP, display, fields};
@@ -233,7 +233,7 @@ fn value_of(spec: &ShellSpec, leaves: &BTreeMap<String, Value>, field: &Field) -
 /// The numeric parameters of the form of `spec` and of its pattern model, in the panel's order,
 /// and Raup's coordinates of a swept shell, with their values: what a map can span.
 pub fn parameters(spec: &ShellSpec) -> Vec<(&'static Field, f64)> {
-    let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
+    let leaves = leaves(spec);
     mappable(spec.form.kind())
         .filter_map(|f| Some((f, value_of(spec, &leaves, f)?)))
         .collect()
@@ -341,7 +341,7 @@ impl ParameterMap {
         }
         let rows = (spec.growth.rows as usize).min(spec.pattern.cells.max(1) as usize);
         let tile_of = |spec: &ShellSpec| {
-            let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
+            let leaves = leaves(spec);
             let at = |axis: &Axis| axis.nearest(value_of(spec, &leaves, axis.field)?);
             at(&x).zip(at(&y)).map(|(i, j)| j * x.values.len() + i)
         };

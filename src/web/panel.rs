@@ -5,7 +5,7 @@
 //! slider also hands back every value it passes while it is dragged.
 
 use super::dom::{append, attr, clear, create, typed};
-use crate::share::link::{flatten, format_value};
+use crate::share::link::{format_value, leaves};
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Kind, Section, display, fields};
 use crate::work::session::Edit;
@@ -39,7 +39,7 @@ pub struct Panel {
 
 /// The fields the spec has, in table order.
 fn present(spec: &ShellSpec) -> (Vec<&'static Field>, BTreeMap<String, Value>) {
-    let leaves = flatten(&serde_json::to_value(spec).expect("a spec always serialises"));
+    let leaves = leaves(spec);
     let fields = fields(spec.form.kind())
         .filter(|f| leaves.contains_key(f.key) && !ELSEWHERE.contains(&f.key))
         .collect();

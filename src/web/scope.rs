@@ -25,6 +25,18 @@ pub(crate) fn search() -> String {
         .unwrap_or_default()
 }
 
+/// The value of `key` in the address's query (`?workers=2&view=page`), if it is there.
+pub(crate) fn query(key: &str) -> Option<String> {
+    search()
+        .trim_start_matches('?')
+        .split('&')
+        .find_map(|pair| {
+            pair.strip_prefix(key)?
+                .strip_prefix('=')
+                .map(str::to_string)
+        })
+}
+
 /// `navigator.hardwareConcurrency`: the logical processors the browser says it has (1 if it
 /// says nothing).
 pub(crate) fn cores() -> usize {

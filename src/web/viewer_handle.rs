@@ -76,10 +76,7 @@ pub enum ViewerHandle {
 /// Whether this page draws its main view in a worker: where module workers can hold an
 /// `OffscreenCanvas`, unless the address asks for the page's thread (`view=page`).
 pub fn in_worker() -> bool {
-    let asked_page = scope::search()
-        .trim_start_matches('?')
-        .split('&')
-        .any(|pair| pair == "view=page");
+    let asked_page = scope::query("view").as_deref() == Some("page");
     let has = |name: &str| Reflect::has(&js_sys::global(), &name.into()).unwrap_or(false);
     !asked_page && has("OffscreenCanvas") && has("Worker")
 }

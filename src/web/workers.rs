@@ -106,11 +106,7 @@ const WORKER_GROWTH_MS: f64 = 24.0;
 
 /// The page address's query parameter `key`, as a number.
 fn query_number(key: &str) -> Option<usize> {
-    scope::search()
-        .trim_start_matches('?')
-        .split('&')
-        .find_map(|pair| pair.strip_prefix(key)?.strip_prefix('='))
-        .and_then(|v| v.parse().ok())
+    scope::query(key).and_then(|v| v.parse().ok())
 }
 
 /// Starts a worker named `name` for slot `slot` in generation `generation`, its events going
