@@ -10,6 +10,9 @@
 // before the browser's own download, which differs between engines and their headed modes),
 // and the console errors and uncaught exceptions seen since the page was opened.
 import { spawn } from 'node:child_process';
+import { closeSync, openSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { createServer } from 'node:net';
 import { PNG } from 'pngjs';
 import { chromium } from 'playwright-core';
@@ -225,9 +228,27 @@ async function firefoxEngine() {
  * that a driver that stops answering is killed with its windows. `call` sends one WebDriver
  * command and gives up after `timeout` ms.
  */
+/**
+ * Where WebKitWebDriver and its browsers write what they say (a web process that crashed says
+ * so there; one that hangs does not): the tail is added to an error of a page that crashed or
+ * hung, to tell the two apart.
+ */
+const WEBKIT_LOG = join(tmpdir(), `seashells-webkit-${process.pid}.log`);
+
+/** The last `lines` lines the WebKit driver and its browsers wrote. */
+function webkitSaid(lines = 40) {
+  try {
+    return readFileSync(WEBKIT_LOG, 'utf8').trimEnd().split('\n').slice(-lines).join('\n');
+  } catch {
+    return '(nothing)';
+  }
+}
+
 async function webkitDriver() {
   const port = await freePort();
-  const driver = spawn('WebKitWebDriver', [`--port=${port}`], { stdio: 'ignore', detached: true });
+  const log = openSync(WEBKIT_LOG, 'a');
+  const driver = spawn('WebKitWebDriver', [`--port=${port}`], { stdio: ['ignore', log, log], detached: true });
+  closeSync(log);
   const call = async (method, path, body, timeout = 300_000) => {
     const response = await fetch(`http://127.0.0.1:${port}${path}`, {
       method,
@@ -236,7 +257,10 @@ async function webkitDriver() {
       signal: AbortSignal.timeout(timeout),
     });
     const { value } = await response.json();
-    if (value && value.error) throw new Error(`WebKitWebDriver ${path}: ${value.error}: ${value.message}`);
+    if (value && value.error) {
+      const said = /crash or hang/.test(value.message) ? `\nWebKit said:\n${webkitSaid()}` : '';
+      throw new Error(`WebKitWebDriver ${path}: ${value.error}: ${value.message}${said}`);
+    }
     return value;
   };
   for (let tries = 0; ; tries += 1) {
