@@ -191,10 +191,11 @@ impl Generator {
         self.rows_done
     }
 
-    /// Whether growth has ended: fully grown, or stopped by a failure.
+    /// Whether growth has ended: fully grown, or stopped by a failure, the shape grown to the row
+    /// where the pattern stopped.
     pub fn is_done(&self) -> bool {
-        self.failure.is_some()
-            || (self.rows_done >= self.rows && self.shape.steps_done() >= self.shape.steps())
+        (self.failure.is_some() || self.rows_done >= self.rows)
+            && self.shape.steps_done() >= self.target_step()
     }
 
     /// Why growth stopped early (the pattern diverged), in words.
@@ -355,11 +356,16 @@ impl Generator {
         }
     }
 
-    /// Grows to the end at once.
+    /// Grows to the end at once: to the last row, or to the row where the pattern stopped (the
+    /// shape stops there too, however growth was cut into calls before).
     pub fn finish(&mut self) {
         self.advance_pattern(self.rows);
         self.hash.take();
-        self.shape.finish(&mut self.mesh, &mut self.edge);
+        if self.failure.is_some() {
+            self.grow_shape();
+        } else {
+            self.shape.finish(&mut self.mesh, &mut self.edge);
+        }
     }
 
     /// Grows to the end at once, but for the pieces of the shape's growth it returns (see
@@ -369,6 +375,10 @@ impl Generator {
     pub fn finish_apart(&mut self) -> Option<Pieces> {
         self.advance_pattern(self.rows);
         self.hash.take();
+        if self.failure.is_some() {
+            self.grow_shape();
+            return None;
+        }
         self.shape.finish_apart(&mut self.mesh, &mut self.edge)
     }
 

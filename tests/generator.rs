@@ -63,4 +63,27 @@ fn a_diverging_pattern_stops_growth_with_a_message() {
     );
     assert!(g.is_done());
     assert!(g.rows_done() < spec.growth.rows as usize);
+    // The shape stops where the pattern stopped, however growth was cut into calls: finished
+    // at once, a row a call, seven rows a call (the stop in the middle of one), or a few
+    // milliseconds' budget a call. Finished at once, it once grew the whole shape; cut into
+    // calls, the shape stopped at the row of the stop, so the page's shell was not the link's.
+    let alone = g.mesh_hash();
+    for rows in [1, 7] {
+        let mut cut = Generator::new(&spec).unwrap();
+        while !cut.is_done() {
+            cut.advance(rows);
+        }
+        assert_eq!(cut.mesh_hash(), alone, "{rows} rows a call");
+        cut.finish();
+        assert_eq!(cut.mesh_hash(), alone, "{rows} rows a call, then finished");
+    }
+    let mut budgeted = Generator::new(&spec).unwrap();
+    let mut reads = 0;
+    while !budgeted.is_done() {
+        budgeted.advance_while(50, || {
+            reads += 1;
+            reads % 3 != 0
+        });
+    }
+    assert_eq!(budgeted.mesh_hash(), alone, "budgeted");
 }

@@ -37,6 +37,7 @@ use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::device_survival::{Loss, Open, Survival};
 use seashells_core::work::session::{Edit, Effect, Session};
+use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_message::{decode_command, encode_command};
 use seashells_core::work::viewer_state::{ScreenChange, ViewerState};
@@ -45,11 +46,16 @@ use std::collections::{HashMap, VecDeque};
 use std::sync::{Mutex, OnceLock};
 
 /// The shells a run opens: one of each kind of growth (a swept shell with its pattern, one
-/// whose pattern grows on its edge, the automaton, Kawaguchi's chambers and branches, an
-/// implicit shell whose finish is shared out among the pool in pieces), made small to be
-/// quick.
-const SHELLS: [(&str, &str); 6] = [
+/// whose pattern diverges and stops it, one whose pattern grows on its edge, the automaton,
+/// Kawaguchi's chambers and branches, an implicit shell whose finish is shared out among the
+/// pool in pieces), made small to be quick.
+const SHELLS: [(&str, &str); 7] = [
     ("stripes", "&growth.rows=90&pattern.cells=64"),
+    // A pattern that diverges: growth stops, and says why once.
+    (
+        "oliva-porphyria",
+        "&growth.rows=120&pattern.cells=64&pattern.model.kappa=0&pattern.model.rho=5",
+    ),
     ("stripes-growing-edge", "&growth.rows=90"),
     ("ca-waves", "&growth.rows=90"),
     ("kawaguchi-horn", ""),
@@ -158,6 +164,8 @@ struct Page {
     asked_frames: usize,
     drawn_frames: usize,
     gpu: Gpu,
+    /// The words the page said while each shell (by its session) was shown.
+    said: Vec<(u32, String)>,
 }
 
 /// What the drawing worker says of one of its frames.
@@ -207,6 +215,7 @@ impl Page {
             asked_frames: 0,
             drawn_frames: 0,
             gpu: Gpu::default(),
+            said: Vec::new(),
         }
     }
 
@@ -217,6 +226,11 @@ impl Page {
             match effect {
                 Effect::View(command) => self.send(command, lag),
                 Effect::StopRecording(_) => self.stop_recording(lag),
+                Effect::Say(Say::Show(words)) => {
+                    if let Some(shell) = &self.session.status().shell {
+                        self.said.push((shell.session, words));
+                    }
+                }
                 _ => {}
             }
         }
@@ -610,6 +624,16 @@ impl Page {
         let shown = self.session.status().shell.as_ref().ok_or("no status")?;
         if (shown.mesh_hash, shown.pattern_hash) != (Some(mesh), pattern) {
             return Err(format!("the page says {shown:?}"));
+        }
+        if let Some(failure) = &shown.failure {
+            let times = self
+                .said
+                .iter()
+                .filter(|(session, words)| *session == shown.session && words == failure)
+                .count();
+            if times != 1 {
+                return Err(format!("\"{failure}\" was said {times} times"));
+            }
         }
         if self.uploaded != Some(replica.rows_done()) {
             return Err(format!(
