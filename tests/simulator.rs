@@ -14,7 +14,8 @@
 //! worker's messages do), some twice; workers throw, hang, send bytes nobody can read, or
 //! never start; the tab sleeps for seconds between frames; the browser takes the graphics
 //! device away (a WebGL context it may give back, once or twice, or a WebGPU device), and an
-//! opening of a renderer again fails. Lost messages are not simulated: a
+//! opening of a renderer again fails; the drawing worker fails and the view moves to the
+//! page's thread, clicks going on meanwhile. Lost messages are not simulated: a
 //! worker's channel to the page loses nothing while the worker lives, and one that dies is
 //! simulated.
 //!
@@ -138,6 +139,12 @@ enum Step {
     Restore,
     /// The next renderer opened again fails.
     FailOpen,
+    /// The drawing worker fails: the view moves to a viewer on the page's thread, with the
+    /// page's own pool, which opens `frames` frames later; what is asked meanwhile goes to the
+    /// worker that failed.
+    Fallback {
+        frames: u8,
+    },
 }
 
 /// The page: its session, the drawing worker's viewer and pool, the workers, the messages
@@ -164,8 +171,12 @@ struct Page {
     asked_frames: usize,
     drawn_frames: usize,
     gpu: Gpu,
-    /// The words the page said while each shell (by its session) was shown.
-    said: Vec<(u32, String)>,
+    /// The words the page said while each shell (by its viewer and session) was shown.
+    said: Vec<(u32, u32, String)>,
+    /// Viewers that took the drawing worker's place so far (each numbers its sessions afresh).
+    viewers: u32,
+    /// The frame a viewer on the page's thread opens in, after the drawing worker failed.
+    moving: Option<u64>,
 }
 
 /// What the drawing worker says of one of its frames.
@@ -216,6 +227,8 @@ impl Page {
             drawn_frames: 0,
             gpu: Gpu::default(),
             said: Vec::new(),
+            viewers: 0,
+            moving: None,
         }
     }
 
@@ -228,7 +241,7 @@ impl Page {
                 Effect::StopRecording(_) => self.stop_recording(lag),
                 Effect::Say(Say::Show(words)) => {
                     if let Some(shell) = &self.session.status().shell {
-                        self.said.push((shell.session, words));
+                        self.said.push((self.viewers, shell.session, words));
                     }
                 }
                 _ => {}
@@ -284,6 +297,14 @@ impl Page {
     fn run_frame(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
         self.frame += 1;
         self.now += FRAME_MS;
+        if let Some(opens) = self.moving {
+            if self.frame < opens {
+                // The page waits for the viewer it is opening; the old pool's workers go on.
+                self.workers.work(self.frame, FRAME_MS, lag, rng);
+                return Ok(());
+            }
+            self.install();
+        }
         self.session.hold(self.covered, self.recording);
         self.apply(lag);
         self.page_takes_frames()?;
@@ -411,6 +432,26 @@ impl Page {
         device
     }
 
+    /// The viewer on the page's thread takes the failed drawing worker's place: a fresh
+    /// renderer and the page's own pool, nothing of the old worker's messages, and the session
+    /// tells it what it told the old one (the shell grows again from its apex).
+    fn install(&mut self) {
+        self.moving = None;
+        self.viewers += 1;
+        self.state = ViewerState::new(true, true, self.now);
+        self.workers = Workers::new(self.workers.count().max(1));
+        self.to_viewer.clear();
+        self.to_page.clear();
+        self.gpu = Gpu {
+            reopened: self.gpu.reopened,
+            ..Gpu::default()
+        };
+        self.uploaded = None;
+        self.stop_recording(0);
+        self.session.viewer_replaced([255, 255, 255]);
+        self.apply(0);
+    }
+
     /// The page takes in the drawing worker's frames that reached it: the status of a frame
     /// made before the last load reached the viewer is not of the shell shown.
     fn page_takes_frames(&mut self) -> Result<(), Failure> {
@@ -535,6 +576,11 @@ impl Page {
                 }
             }
             Step::FailOpen => self.gpu.fail_next = true,
+            Step::Fallback { frames } => {
+                if self.moving.is_none() {
+                    self.moving = Some(self.frame + 1 + u64::from(*frames));
+                }
+            }
         }
         self.apply(0);
         self.check()
@@ -629,7 +675,9 @@ impl Page {
             let times = self
                 .said
                 .iter()
-                .filter(|(session, words)| *session == shown.session && words == failure)
+                .filter(|(viewer, session, words)| {
+                    (*viewer, *session) == (self.viewers, shown.session) && words == failure
+                })
                 .count();
             if times != 1 {
                 return Err(format!("\"{failure}\" was said {times} times"));
@@ -718,6 +766,9 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
             },
             39 => Step::Restore,
             40 => Step::FailOpen,
+            41 => Step::Fallback {
+                frames: pick(30) as u8,
+            },
             _ => Step::Twice { slot: byte },
         };
         steps.push(step);

@@ -488,6 +488,7 @@ impl Session {
     pub fn viewer_replaced(&mut self, background: [u8; 3]) {
         self.held = false;
         self.loads = 0;
+        self.readout.viewer_replaced();
         self.view(ViewCommand::Layout(self.presentation.layout));
         self.view(ViewCommand::Background(background));
         self.status = ViewStatus::default();
@@ -631,6 +632,37 @@ mod tests {
         session.route("#v=1&preset=turbinate", false, 1.0);
         assert!(!session.is_current(1), "a frame of the stripes");
         assert!(session.is_current(2));
+    }
+
+    #[test]
+    fn a_stop_is_said_again_of_the_shell_a_new_viewer_grows_under_the_same_number() {
+        let diverging = "#v=1&preset=oliva-porphyria&pattern.model.kappa=0&pattern.model.rho=5";
+        let mut session = opened(diverging);
+        let stopped = ViewStatus {
+            shell: Some(crate::work::viewer_status::ShellStatus {
+                session: 1,
+                done: true,
+                failure: Some("The pattern stopped.".into()),
+                ..Default::default()
+            }),
+            preview: None,
+        };
+        let said = |session: &mut Session| {
+            session
+                .take_effects()
+                .iter()
+                .filter(|e| matches!(e, Effect::Say(Say::Show(w)) if w == "The pattern stopped."))
+                .count()
+        };
+        session.viewed(stopped.clone(), true, 0.0);
+        assert_eq!(said(&mut session), 1);
+        session.viewed(stopped.clone(), true, 1.0);
+        assert_eq!(said(&mut session), 0, "said once");
+        // The view moved to the page's thread: its pool numbers the regrown shell 1 again.
+        session.viewer_replaced([255; 3]);
+        session.take_effects();
+        session.viewed(stopped, true, 2.0);
+        assert_eq!(said(&mut session), 1, "the regrown shell's stop is said");
     }
 
     #[test]

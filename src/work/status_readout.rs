@@ -77,6 +77,16 @@ impl FrameShown {
 }
 
 impl Readout {
+    /// Another viewer took the old one's place: its sessions are numbered afresh, so that a
+    /// stop said of the old one's shell numbered as the new one's must not keep the new one's
+    /// from being said; the progress bar starts again too. The device's recoveries still count.
+    pub fn viewer_replaced(&mut self) {
+        *self = Self {
+            recoveries: self.recoveries,
+            ..Self::default()
+        };
+    }
+
     /// What to show of `status` after a frame that drew the shell (`drawn`) or did not, at
     /// time `now` (milliseconds). Settled is said false at once, but true only with the rows it
     /// settled on, in a frame that shows them: a test reading the rows once settled reads the
