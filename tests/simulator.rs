@@ -14,8 +14,8 @@
 //! worker's messages do), some twice; workers throw, hang, send bytes nobody can read, or
 //! never start; the tab sleeps for seconds between frames; the browser takes the graphics
 //! device away (a WebGL context it may give back, once or twice, or a WebGPU device), and an
-//! opening of a renderer again fails; the drawing worker fails and the view moves to the
-//! page's thread, clicks going on meanwhile. Lost messages are not simulated: a
+//! opening of a renderer again fails; the drawing worker fails, or spins until the page finds
+//! it out by its silence, and the view moves to the page's thread, clicks going on meanwhile. Lost messages are not simulated: a
 //! worker's channel to the page loses nothing while the worker lives, and one that dies is
 //! simulated.
 //!
@@ -37,6 +37,7 @@ use seashells_core::share::link;
 use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::device_survival::{Loss, Open, Survival};
+use seashells_core::work::drawing_link::DrawingLink;
 use seashells_core::work::session::{Edit, Effect, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
@@ -145,6 +146,8 @@ enum Step {
     Fallback {
         frames: u8,
     },
+    /// The drawing worker spins for ever: the page must find it out by its silence.
+    HangDrawing,
 }
 
 /// The page: its session, the drawing worker's viewer and pool, the workers, the messages
@@ -175,8 +178,13 @@ struct Page {
     said: Vec<(u32, u32, String)>,
     /// Viewers that took the drawing worker's place so far (each numbers its sessions afresh).
     viewers: u32,
+    /// What the page last said of the shell's state (`data-state`).
+    shown_state: String,
     /// The frame a viewer on the page's thread opens in, after the drawing worker failed.
     moving: Option<u64>,
+    /// What the page has heard of the drawing worker, and whether the worker hangs.
+    link: DrawingLink,
+    drawing_hung: bool,
 }
 
 /// What the drawing worker says of one of its frames.
@@ -228,7 +236,10 @@ impl Page {
             gpu: Gpu::default(),
             said: Vec::new(),
             viewers: 0,
+            shown_state: String::new(),
             moving: None,
+            link: DrawingLink::default(),
+            drawing_hung: false,
         }
     }
 
@@ -239,6 +250,7 @@ impl Page {
             match effect {
                 Effect::View(command) => self.send(command, lag),
                 Effect::StopRecording(_) => self.stop_recording(lag),
+                Effect::Signal("state", state) => self.shown_state = state,
                 Effect::Say(Say::Show(words)) => {
                     if let Some(shell) = &self.session.status().shell {
                         self.said.push((self.viewers, shell.session, words));
@@ -308,6 +320,12 @@ impl Page {
         self.session.hold(self.covered, self.recording);
         self.apply(lag);
         self.page_takes_frames()?;
+        self.link.ticked(self.now);
+        if self.drawing_hung || self.moving.is_some() {
+            // The drawing worker spins, or is being replaced: its workers go on.
+            self.workers.work(self.frame, FRAME_MS, lag, rng);
+            return Ok(());
+        }
         while let Some((_, bytes)) = self.to_viewer.front().filter(|(at, _)| *at <= self.frame) {
             let command = decode_command(bytes).map_err(|e| e.to_string())?;
             self.to_viewer.pop_front();
@@ -437,6 +455,8 @@ impl Page {
     /// tells it what it told the old one (the shell grows again from its apex).
     fn install(&mut self) {
         self.moving = None;
+        self.drawing_hung = false;
+        self.link = DrawingLink::default();
         self.viewers += 1;
         self.state = ViewerState::new(true, true, self.now);
         self.workers = Workers::new(self.workers.count().max(1));
@@ -455,24 +475,32 @@ impl Page {
     /// The page takes in the drawing worker's frames that reached it: the status of a frame
     /// made before the last load reached the viewer is not of the shell shown.
     fn page_takes_frames(&mut self) -> Result<(), Failure> {
+        let mut reports = Vec::new();
         while let Some((_, report)) = self.to_page.front().filter(|(at, _)| *at <= self.frame) {
-            let report_loads = report.loads;
-            let Some((_, report)) = self.to_page.pop_front() else {
-                break;
-            };
+            self.link.heard(self.now, Some(&report.device));
+            if let Some((_, report)) = self.to_page.pop_front() {
+                reports.push(report);
+            }
+        }
+        if self.link.took(!reports.is_empty(), self.now).is_err() {
+            // The drawing worker is taken for hung: the view moves to the page's thread.
+            self.moving.get_or_insert(self.frame + 1);
+            return Ok(());
+        }
+        if self.session.device(self.link.device()).is_err() {
+            // No device can be opened again: the page says so, and draws no more.
+            self.gpu.gone = true;
+            return Ok(());
+        }
+        self.apply(0);
+        for report in reports {
             if report.recorded && self.recording {
                 self.drawn_frames += 1;
             }
-            if self.session.device(report.device).is_err() {
-                // No device can be opened again: the page says so, and draws no more.
-                self.gpu.gone = true;
-                return Ok(());
-            }
-            self.apply(0);
             let Some((status, drawn)) = report.frame else {
                 continue;
             };
-            if !self.session.is_current(report_loads) {
+            if !self.session.is_current(report.loads) {
                 continue;
             }
             if let (Some(shell), Some((preset, _))) = (&status.shell, self.session.current())
@@ -576,6 +604,7 @@ impl Page {
                 }
             }
             Step::FailOpen => self.gpu.fail_next = true,
+            Step::HangDrawing => self.drawing_hung = true,
             Step::Fallback { frames } => {
                 if self.moving.is_none() {
                     self.moving = Some(self.frame + 1 + u64::from(*frames));
@@ -634,9 +663,12 @@ impl Page {
             }
             let status = self.session.status();
             let drawn_all = !self.recording || self.drawn_frames >= self.asked_frames;
+            // Grown whole, every answer in, the view at rest, and the page says so.
+            let said = matches!(self.shown_state.as_str(), "grown" | "stopped");
             if let Some(shell) = &status.shell
                 && shell.finished()
                 && drawn_all
+                && said
             {
                 break;
             }
@@ -724,7 +756,7 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
     }];
     for _ in 0..count {
         let byte = pick(256) as u8;
-        let step = match pick(44) {
+        let step = match pick(46) {
             0..=14 => Step::Frames {
                 count: 1 + pick(12) as u8,
                 lag: pick(4) as u8,
@@ -769,6 +801,7 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
             41 => Step::Fallback {
                 frames: pick(30) as u8,
             },
+            42 => Step::HangDrawing,
             _ => Step::Twice { slot: byte },
         };
         steps.push(step);
@@ -776,11 +809,13 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
     (workers, steps)
 }
 
-/// What a run went through: renderers opened again, workers replaced.
+/// What a run went through: renderers opened again, workers replaced, views moved to the
+/// page's thread.
 #[derive(Default)]
 struct Went {
     reopened: usize,
     replaced: usize,
+    moved: u32,
 }
 
 /// Runs `steps` on a page of `workers` workers, and lets it settle.
@@ -794,6 +829,7 @@ fn run(workers: usize, steps: &[Step]) -> Result<Went, Failure> {
     Ok(Went {
         reopened: page.gpu.reopened,
         replaced: page.workers.pool.deaths(),
+        moved: page.viewers,
     })
 }
 
@@ -865,6 +901,7 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
             Ok(run) => {
                 went.reopened += run.reopened;
                 went.replaced += run.replaced;
+                went.moved += run.moved;
             }
             Err(failed) => {
                 // Quiet while the runs that shrink it panic in their turn.
@@ -881,12 +918,14 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
         }
     }
     if seeds.len() >= 60 {
-        // The faults happen: runs that never lose a device or a worker would prove nothing.
+        // The faults happen: runs that never lose a device, a worker or the drawing worker
+        // would prove nothing.
         assert!(
-            went.reopened > 0 && went.replaced > 0,
-            "{} renderers opened again, {} workers replaced in {} runs",
+            went.reopened > 0 && went.replaced > 0 && went.moved > 0,
+            "{} renderers opened again, {} workers replaced, {} views moved in {} runs",
             went.reopened,
             went.replaced,
+            went.moved,
             seeds.len()
         );
     }
@@ -943,6 +982,30 @@ fn the_runs_that_found_bugs_grow_their_shell() {
             ],
         ),
     ];
+    let runs = runs.into_iter().chain([
+        // The only worker hung at the end of growth: the fresh one's answer that settled the
+        // shell changed nothing drawn, so no frame was drawn to show it, and the page never
+        // said the shell was grown.
+        (
+            1,
+            vec![
+                Step::Open {
+                    shell: 2,
+                    finish: false,
+                },
+                frames(11, 0, 1_474_110_732),
+                frames(10, 2, 1_211_070_541),
+                Step::Twice { slot: 212 },
+                frames(12, 3, 1_837_117_431),
+                frames(3, 3, 3_316_333_614),
+                frames(1, 3, 1_364_195_196),
+                Step::Throw { slot: 238 },
+                frames(5, 0, 1_165_351_009),
+                frames(8, 0, 1_236_702_955),
+                Step::Hang { slot: 47 },
+            ],
+        ),
+    ]);
     for (workers, steps) in runs {
         assert_eq!(failure(workers, &steps), None, "{steps:#?}");
     }

@@ -12,13 +12,13 @@ use super::scope;
 use super::viewer::{ViewFrame, Viewer};
 use super::webcodecs::VideoFrame;
 use crate::render::Canvas;
+use crate::work::drawing_link::DrawingLink;
 use crate::work::message::{Reply, Request};
 use crate::work::viewer_command::ViewCommand;
 use crate::work::viewer_message::{PoolNews, ViewerNews, decode_news, encode_command};
 use crate::work::viewer_status::Device;
 use js_sys::{Array, Promise, Reflect, Uint8Array};
 use std::cell::RefCell;
-use std::collections::VecDeque;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
@@ -30,23 +30,16 @@ use web_sys::{
 /// Milliseconds the drawing worker is given to open its renderer (it loads the WebAssembly
 /// module first) before the page draws on its own thread.
 const START_MS: i32 = 20_000;
-/// Milliseconds the drawing worker may go without a word while the page sends it frames before
-/// the page takes it for hung and draws on its own thread.
-const SILENT_MS: f64 = 15_000.0;
 
 /// The news a drawing worker sent since the page last looked.
 #[derive(Default)]
 struct Inbox {
     news: Vec<(ViewerNews, Option<VideoFrame>)>,
-    /// Each change of its device's state, in order, and the last one sent: the page goes
-    /// through every one (saying the device was lost, then that it is back), however many of
-    /// the worker's frames one of the page's takes in.
-    devices: VecDeque<Device>,
-    last_device: Option<Device>,
+    /// What the page has heard of the worker: its device's changes, its silences (the core
+    /// decides what they mean).
+    link: DrawingLink,
     /// The worker failed to load or threw outside the viewer (why).
     error: Option<String>,
-    /// When it last said anything.
-    heard: f64,
 }
 
 /// The main viewer in a worker, as the page sees it.
@@ -54,13 +47,8 @@ pub struct DrawingWorker {
     worker: Worker,
     inbox: Rc<RefCell<Inbox>>,
     backend: String,
-    device: Device,
     /// It panicked (and the page shows so).
     crashed: bool,
-    /// A fresh canvas was given since it last asked for one.
-    gave_canvas: bool,
-    /// Whether the page has sent it a frame since it last said anything.
-    ticked: bool,
     _on_message: Closure<dyn FnMut(MessageEvent)>,
     _on_error: Closure<dyn FnMut(ErrorEvent)>,
 }
@@ -108,15 +96,13 @@ impl DrawingWorker {
                 .filter(|f| !f.is_undefined())
                 .map(JsCast::unchecked_into::<VideoFrame>);
             let mut inbox = to.borrow_mut();
-            inbox.heard = now();
             match decode_news(&Uint8Array::new(&bytes).to_vec()) {
                 Ok(news) => {
-                    if let ViewerNews::Frame { device, .. } = &news
-                        && inbox.last_device.as_ref() != Some(device)
-                    {
-                        inbox.last_device = Some(device.clone());
-                        inbox.devices.push_back(device.clone());
-                    }
+                    let device = match &news {
+                        ViewerNews::Frame { device, .. } => Some(device),
+                        _ => None,
+                    };
+                    inbox.link.heard(now(), device);
                     let opened = matches!(news, ViewerNews::Opened(_));
                     inbox.news.push((news, frame));
                     if opened && let Some(resolve) = wake.borrow_mut().take() {
@@ -124,6 +110,7 @@ impl DrawingWorker {
                     }
                 }
                 Err(e) => {
+                    inbox.link.heard(now(), None);
                     inbox
                         .error
                         .get_or_insert(format!("the drawing worker's news was misread: {e}"));
@@ -166,10 +153,7 @@ impl DrawingWorker {
             worker,
             inbox,
             backend: String::new(),
-            device: Device::Ready,
             crashed: false,
-            gave_canvas: false,
-            ticked: false,
             _on_message: on_message,
             _on_error: on_error,
         };
@@ -270,31 +254,13 @@ impl ViewerHandle {
             ViewerHandle::Worker(w) => {
                 let mut inbox = w.inbox.borrow_mut();
                 if let Some(e) = inbox.error.take() {
-                    inbox.devices.push_back(Device::Gone(e));
+                    inbox.link.failed(e);
                 }
-                if let Some(next) = inbox.devices.pop_front() {
-                    w.device = next;
+                let device = inbox.link.device();
+                if let Device::Reopened(backend) = &device {
+                    w.backend.clone_from(backend);
                 }
-                match w.device.clone() {
-                    // Said once: the frames after it are drawn as usual.
-                    Device::Reopened(backend) => {
-                        w.backend.clone_from(&backend);
-                        w.device = Device::Ready;
-                        Device::Reopened(backend)
-                    }
-                    // Asked once: the worker asks until the canvas reaches it.
-                    Device::NeedsCanvas(why) if !w.gave_canvas => {
-                        w.gave_canvas = true;
-                        Device::NeedsCanvas(why)
-                    }
-                    Device::NeedsCanvas(why) => Device::Reopening(why),
-                    device => {
-                        if !matches!(device, Device::Reopening(_)) {
-                            w.gave_canvas = false;
-                        }
-                        device
-                    }
-                }
+                device
             }
         }
     }
@@ -326,10 +292,7 @@ impl ViewerHandle {
     /// page's frame sent.
     pub fn tick(&mut self) {
         if let ViewerHandle::Worker(w) = self {
-            if !w.ticked {
-                w.ticked = true;
-                w.inbox.borrow_mut().heard = now();
-            }
+            w.inbox.borrow_mut().link.ticked(now());
             let message = js_sys::Object::new();
             let _ = Reflect::set(&message, &"tick".into(), &JsValue::TRUE);
             w.post(&message, &Array::new());
@@ -363,14 +326,8 @@ impl ViewerHandle {
             ViewerHandle::Worker(w) => {
                 let mut taken = Taken::default();
                 let mut inbox = w.inbox.borrow_mut();
-                if !inbox.news.is_empty() {
-                    w.ticked = false;
-                } else if w.ticked && now() - inbox.heard > SILENT_MS {
-                    return Err(format!(
-                        "the drawing worker has not answered for {} s",
-                        SILENT_MS / 1000.0
-                    ));
-                }
+                let any = !inbox.news.is_empty();
+                inbox.link.took(any, now())?;
                 for (news, video) in inbox.news.drain(..) {
                     match news {
                         ViewerNews::Frame {

@@ -410,7 +410,7 @@ impl ViewerState {
 
     /// Takes in a worker's reply to `request`: a reply about another shell than this one's is
     /// dropped. Fails with the words to show when the shell cannot be built or grown.
-    pub fn take(&mut self, request: &Request, reply: Reply, pool: &mut Pool) -> Result<(), String> {
+    fn take(&mut self, request: &Request, reply: Reply, pool: &mut Pool) -> Result<(), String> {
         let Some(g) = &mut self.growing else {
             return Ok(());
         };
@@ -437,6 +437,7 @@ impl ViewerState {
         sessions_lost: Option<Vec<Request>>,
         pool: &mut Pool,
     ) -> Result<(), String> {
+        let settled = self.settled();
         for (request, reply) in replies {
             if let Err(message) = self.take(&request, reply, pool) {
                 self.unload();
@@ -446,7 +447,19 @@ impl ViewerState {
         if let Some(lost) = sessions_lost {
             self.resume(&lost, pool);
         }
+        if self.settled() != settled {
+            // Every answer is in, or one is owed again: a frame shows it, even when nothing
+            // drawn changed (a fresh worker standing where the copy does, a worker replaced
+            // that owed the last answer of a shell grown whole), or the page would never say
+            // the shell is grown.
+            self.dirty = true;
+        }
         Ok(())
+    }
+
+    /// Whether the shell shown stands where its worker left it, nothing asked unanswered.
+    fn settled(&self) -> bool {
+        self.growing.as_ref().is_some_and(|g| g.growth.settled())
     }
 
     /// The worker holding the shell was replaced, losing `lost` unanswered: the shell is grown
@@ -630,7 +643,7 @@ impl ViewerState {
                 && !g.growth.replica().is_done()
                 && g.preview.is_none()
         });
-        let settled = self.growing.as_ref().is_some_and(|g| g.growth.settled());
+        let settled = self.settled();
         if let Some(rows) = self.playback.rows_to_ask(growing, settled) {
             let budget = growth_budget(budget_ms, now - self.last_frame).max(min_growth_ms);
             self.grow(u32::try_from(rows).unwrap_or(u32::MAX), budget, pool);
