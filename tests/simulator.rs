@@ -295,6 +295,26 @@ impl Page {
                             advance.rows
                         ));
                     }
+                    // What the renderer reads, as the copy stands now, is there.
+                    let replica = self.state.shell().ok_or("no shell")?.replica();
+                    let (mesh, edge) = (replica.mesh(), replica.edge().mesh());
+                    let edge_runs = advance.edge.iter().flat_map(|e| {
+                        let vertices = e.vertices.iter().map(|r| (r.end, edge.vertices.len()));
+                        vertices.chain(e.indices.iter().map(|r| (r.end, edge.indices.len())))
+                    });
+                    let within = [
+                        (advance.vertices.end, mesh.vertices.len()),
+                        (advance.indices.end, mesh.indices.len()),
+                        (advance.rows.end * replica.cells() * 4, replica.rgba().len()),
+                    ]
+                    .into_iter()
+                    .chain(edge_runs)
+                    .all(|(end, len)| end <= len);
+                    if !within {
+                        return Err(format!(
+                            "the renderer was handed {advance:?}, beyond the copy"
+                        ));
+                    }
                     self.uploaded = Some(advance.rows.end);
                 }
             }

@@ -25,7 +25,7 @@ use seashells_core::work::message::{Delta, Progress, Reply, Request, decode_repl
 use seashells_core::work::replica::Replica;
 use seashells_core::work::slotted_edge::{EdgeRun, EdgeWrites, Slot};
 use seashells_core::work::viewer_command::{PresetSpec, ViewCommand};
-use seashells_core::work::viewer_state::ViewerState;
+use seashells_core::work::viewer_state::{ScreenChange, ViewerState};
 use std::cell::Cell;
 
 /// A clock that moves on by a millisecond each time it is read, so that budgets run out
@@ -592,4 +592,49 @@ fn edge_writes_that_do_not_fit_their_edge_are_refused_by_their_key() {
     let advance = replica.apply(delta).expect("in step");
     assert_eq!(advance.edge.unwrap().indices, vec![0..3]);
     assert_eq!(replica.edge().joined().indices, vec![0, 1, 2]);
+}
+
+/// Whether every range `change` asks the renderer to read is in `replica` as it stands.
+fn within(change: &ScreenChange, replica: &Replica) -> bool {
+    let ScreenChange::Rows(advance) = change else {
+        return true;
+    };
+    let (mesh, edge) = (replica.mesh(), replica.edge().mesh());
+    let edge_runs = advance.edge.iter().flat_map(|e| {
+        let vertices = e.vertices.iter().map(|r| (r.end, edge.vertices.len()));
+        vertices.chain(e.indices.iter().map(|r| (r.end, edge.indices.len())))
+    });
+    [
+        (advance.vertices.end, mesh.vertices.len()),
+        (advance.indices.end, mesh.indices.len()),
+        (advance.rows.end * replica.cells() * 4, replica.rgba().len()),
+    ]
+    .into_iter()
+    .chain(edge_runs)
+    .all(|(end, len)| end <= len)
+}
+
+#[test]
+fn growth_taken_in_from_several_replies_hands_the_renderer_only_what_the_copy_holds() {
+    // A Grow and the Finish after it answered in one frame: the Grow's edge was gone by the
+    // time the renderer read it (the page panicked in `shell_buffers.rs` on the implicit whorl).
+    let (link, _) = link_of("implicit-whorl", "");
+    let mut page = Page::new(1, None, 4);
+    page.command(ViewCommand::Load {
+        shell: PresetSpec::try_from(link).expect("a link"),
+        finish: false,
+    });
+    page.settle();
+    page.viewer.take_screen();
+    for rows in [3, 5, 8] {
+        page.command(ViewCommand::Grow(rows));
+    }
+    page.command(ViewCommand::Finish);
+    while !page.workers.idle() {
+        page.frame();
+        for change in page.viewer.take_screen() {
+            assert!(within(&change, page.replica()), "{change:?}");
+        }
+    }
+    assert!(page.replica().is_done());
 }

@@ -16,7 +16,7 @@ use super::replica::Replica;
 use super::viewer_command::{PointerChange, ViewCommand};
 use super::viewer_status::{ShellStatus, ViewStatus};
 use crate::export::estimate::Counts;
-use crate::generator::Advance;
+use crate::generator::{Advance, EdgeRuns};
 use crate::mesh::Bounds;
 use crate::pattern::run::planar_rows;
 use crate::presets::Preset;
@@ -31,8 +31,9 @@ use crate::view::preview::PreviewState;
 use crate::view::recording::FrameAsk;
 use glam::DVec3;
 
-/// What the renderer is to take from the shell shown, in the order it changed. Each change is
-/// read from the state as it stands when it is applied, right after the call that made it.
+/// What the renderer is to take from the shell shown, in the order it changed, read from the
+/// state as it stands when it is applied (after the call that made it: growth taken in from
+/// several replies is one [`ScreenChange::Rows`]).
 #[derive(Clone, Debug, PartialEq)]
 pub enum ScreenChange {
     /// The shell was built: buffers of its capacity, its pattern texture and its look.
@@ -491,6 +492,18 @@ impl ViewerState {
                 },
                 PlanarUpdate::Follow(advance.rows.end as u32),
             ]);
+        }
+        // Advances not yet applied are merged into one, read from the copy as it stands when
+        // applied: the copy only grows, so their ranges join, but the edge of an earlier one
+        // may be gone (a shell finished apart has none), so a merged edge is the whole edge now.
+        if let Some(ScreenChange::Rows(pending)) = self.screen.last_mut() {
+            pending.vertices.end = advance.vertices.end;
+            pending.indices.end = advance.indices.end;
+            pending.rows.end = advance.rows.end;
+            if pending.edge.is_some() || advance.edge.is_some() {
+                pending.edge = Some(EdgeRuns::whole(g.growth.replica().edge().mesh()));
+            }
+            return;
         }
         self.screen.push(ScreenChange::Rows(advance));
     }

@@ -53,7 +53,8 @@ test('an implicit shell grows in wasm into the very mesh the command line writes
     ]) {
       const { page, errors } = await open(browser, `${base}#${link}`);
       const grown = await finishGrowth(page);
-      assert.equal(grown.state, 'grown', await page.textContent('#message'));
+      const said = `${await page.textContent('#message')} ${await page.textContent('#crash-text')}`;
+      assert.equal(grown.state, 'grown', `${link}: ${said}`);
       const out = nativeMesh(link).said;
       assert.match(out, new RegExp(`: ${grown.mesh}, hash ${grown.meshHash}, \\d+ bytes$`, 'm'),
         `${link}: wasm ${grown.mesh} ${grown.meshHash}, native ${out}`);
