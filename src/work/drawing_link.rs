@@ -58,7 +58,9 @@ impl DrawingLink {
         }
         match self.device.clone().unwrap_or(Device::Ready) {
             Device::Reopened(backend) => {
+                // A device lost again at once asks for another fresh canvas.
                 self.device = Some(Device::Ready);
+                self.gave_canvas = false;
                 Device::Reopened(backend)
             }
             Device::NeedsCanvas(why) if !self.gave_canvas => {
@@ -129,6 +131,17 @@ mod tests {
         link.heard(1.0, Some(&Device::Ready));
         link.heard(2.0, Some(&Device::NeedsCanvas("lost again".into())));
         link.device();
+        assert_eq!(link.device(), Device::NeedsCanvas("lost again".into()));
+    }
+
+    #[test]
+    fn a_device_lost_again_right_after_it_was_opened_again_gets_another_canvas() {
+        let mut link = DrawingLink::default();
+        link.heard(0.0, Some(&Device::NeedsCanvas("lost".into())));
+        assert_eq!(link.device(), Device::NeedsCanvas("lost".into()));
+        link.heard(1.0, Some(&Device::Reopened("WebGL2".into())));
+        link.heard(2.0, Some(&Device::NeedsCanvas("lost again".into())));
+        assert_eq!(link.device(), Device::Reopened("WebGL2".into()));
         assert_eq!(link.device(), Device::NeedsCanvas("lost again".into()));
     }
 

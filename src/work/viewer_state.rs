@@ -189,11 +189,6 @@ impl ViewerState {
         self.layout
     }
 
-    /// Whether growth plays.
-    pub fn playing(&self) -> bool {
-        self.playback.playing
-    }
-
     /// Whether the page shows something else over the shell: nothing grows or is drawn.
     pub fn held(&self) -> bool {
         self.held
