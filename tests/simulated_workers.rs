@@ -10,10 +10,12 @@
 
 use rand_core::Rng;
 use rand_pcg::Pcg64;
+use seashells_core::generator::Advance;
 use seashells_core::view::draw_pacing::HEAVY_BYTES;
 use seashells_core::work::host::{Budget, Host};
 use seashells_core::work::message::{decode_reply, decode_request, encode_reply, encode_request};
 use seashells_core::work::pool::{Polled, Pool, SESSIONS, WorkerEvent};
+use seashells_core::work::replica::Replica;
 use std::cell::Cell;
 use std::collections::VecDeque;
 
@@ -236,4 +238,22 @@ impl Workers {
             worker.twice_next = true;
         }
     }
+}
+
+/// Whether every range `advance` asks the renderer to read is in `replica` as it stands: what
+/// the simulator and the tests of growth off the page's thread check of every upload.
+pub fn within_copy(advance: &Advance, replica: &Replica) -> bool {
+    let (mesh, edge) = (replica.mesh(), replica.edge().mesh());
+    let edge_runs = advance.edge.iter().flat_map(|e| {
+        let vertices = e.vertices.iter().map(|r| (r.end, edge.vertices.len()));
+        vertices.chain(e.indices.iter().map(|r| (r.end, edge.indices.len())))
+    });
+    [
+        (advance.vertices.end, mesh.vertices.len()),
+        (advance.indices.end, mesh.indices.len()),
+        (advance.rows.end * replica.cells() * 4, replica.rgba().len()),
+    ]
+    .into_iter()
+    .chain(edge_runs)
+    .all(|(end, len)| end <= len)
 }

@@ -28,7 +28,7 @@
 //! that still fails; `SEASHELLS_SIM_SEED=N` replays one seed, `SEASHELLS_SIM_RUNS=N` runs more
 //! (`make fuzz`).
 
-use crate::simulated_workers::Workers;
+use crate::simulated_workers::{Workers, within_copy};
 use rand_core::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use seashells_core::generator::{GROWTH_BUDGET_MS, Generator};
@@ -297,20 +297,7 @@ impl Page {
                     }
                     // What the renderer reads, as the copy stands now, is there.
                     let replica = self.state.shell().ok_or("no shell")?.replica();
-                    let (mesh, edge) = (replica.mesh(), replica.edge().mesh());
-                    let edge_runs = advance.edge.iter().flat_map(|e| {
-                        let vertices = e.vertices.iter().map(|r| (r.end, edge.vertices.len()));
-                        vertices.chain(e.indices.iter().map(|r| (r.end, edge.indices.len())))
-                    });
-                    let within = [
-                        (advance.vertices.end, mesh.vertices.len()),
-                        (advance.indices.end, mesh.indices.len()),
-                        (advance.rows.end * replica.cells() * 4, replica.rgba().len()),
-                    ]
-                    .into_iter()
-                    .chain(edge_runs)
-                    .all(|(end, len)| end <= len);
-                    if !within {
+                    if !within_copy(&advance, replica) {
                         return Err(format!(
                             "the renderer was handed {advance:?}, beyond the copy"
                         ));
