@@ -4,37 +4,19 @@
 // Messages that come while the module loads wait for it.
 //
 // Test-only (tests/page/survive.test.mjs), from the page's query, which the worker's address
-// carries: `hang-view=N` makes the worker spin forever on the page's N-th message (0: before it
-// opens a renderer), as a worker caught in an endless loop would; `stall-view` makes every
-// frame it hands to the GPU look unfinished forever (a WebGL fence never signalled), as a
-// context that opens but never presents would.
+// carries: `stall-view` makes every frame the worker hands to the GPU look unfinished forever
+// (a WebGL fence never signalled), as a context that opens but never presents would.
 import init, { drawing_worker_start } from './pkg/seashells.js';
 
-const query = new URLSearchParams(self.location.search);
-const hangAt = query.has('hang-view') ? Number(query.get('hang-view')) : Infinity;
-if (query.has('stall-view')) {
+if (new URLSearchParams(self.location.search).has('stall-view')) {
   const UNSIGNALED = 0x9118;
   WebGL2RenderingContext.prototype.getSyncParameter = () => UNSIGNALED;
 }
-
-let taken = 0;
-const hangIfAsked = () => {
-  if (taken++ >= hangAt) {
-    for (;;) {
-      // Never answers (test-only hang-view switch).
-    }
-  }
-};
 
 const early = [];
 self.onmessage = (event) => early.push(event);
 await init();
 drawing_worker_start();
-const take = self.onmessage;
-self.onmessage = (event) => {
-  hangIfAsked();
-  take(event);
-};
 for (const event of early.splice(0)) {
   self.onmessage(event);
 }
