@@ -29,6 +29,7 @@ mod workers;
 
 use crate::export::Download;
 use crate::render::Canvas;
+use crate::work::shortcuts::{self, Press, Shortcut, Target};
 use crate::work::viewer_command::{PointerChange, ViewCommand};
 use app::App;
 use record::Support;
@@ -295,24 +296,6 @@ fn on_click(id: &str, app: &Shared, handler: impl Fn(&mut App) + 'static) -> Res
     }
 }
 
-/// The tag of the element a key press goes to, in lower case.
-fn target_tag(e: &KeyboardEvent) -> String {
-    e.target()
-        .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
-        .map(|t| t.tag_name().to_ascii_lowercase())
-        .unwrap_or_default()
-}
-
-/// Whether a key press goes to a field that takes text or a choice.
-fn editing(e: &KeyboardEvent) -> bool {
-    matches!(target_tag(e).as_str(), "input" | "select" | "textarea")
-}
-
-/// Whether a key press belongs to a form field or control rather than to the page's shortcuts.
-fn typing(e: &KeyboardEvent) -> bool {
-    editing(e) || matches!(target_tag(e).as_str(), "button" | "summary" | "a")
-}
-
 /// Listens to the shell's canvas: orbit, zoom, reset (again on a fresh canvas that replaced it).
 fn listen_canvas(app: &Shared, canvas: &EventTarget) -> Result<(), JsValue> {
     on(canvas, "pointerdown", app, |a, e: PointerEvent| {
@@ -453,44 +436,32 @@ fn listen(app: &Shared) -> Result<(), JsValue> {
         }
     })?;
     on(&document, "keydown", app, |a, e: KeyboardEvent| {
-        if e.ctrl_key() || e.meta_key() || e.alt_key() || !a.has_shell() {
-            return;
-        }
+        let target = e
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+            .map_or(Target::Page, |t| Target::of_tag(&t.tag_name()));
         let key = e.key();
-        let arrow = match key.as_str() {
-            "ArrowLeft" => Some((-1, 0)),
-            "ArrowRight" => Some((1, 0)),
-            "ArrowUp" => Some((0, -1)),
-            "ArrowDown" => Some((0, 1)),
-            _ => None,
+        let press = Press {
+            key: &key,
+            modified: e.ctrl_key() || e.meta_key() || e.alt_key(),
+            target,
+            shell_shown: a.has_shell(),
+            covered: a.covered(),
         };
-        // Over the map or the offspring, the arrows move among the tiles (links), but not in
-        // the fields.
-        if let Some((dx, dy)) = arrow.filter(|_| a.covered() && !editing(&e)) {
-            a.step_tiles(dx, dy);
-            e.prevent_default();
+        let Some(shortcut) = shortcuts::shortcut(press) else {
             return;
-        }
-        // Escape leaves the map or breeding from any of their controls.
-        if key == "Escape" && a.covered() {
-            a.escape();
-            e.prevent_default();
-            return;
-        }
-        if typing(&e) {
-            return;
-        }
-        match key.as_str() {
-            " " => a.toggle_playing(),
-            "r" => a.restart(),
-            "s" | "ArrowRight" => a.step(),
-            "e" | "End" => a.finish(),
-            "c" => a.reset_camera(),
-            "v" => a.toggle_views(),
-            "f" => a.toggle_fullscreen(),
-            "+" | "=" => a.set_speed(a.speed() * 1.5),
-            "-" => a.set_speed(a.speed() / 1.5),
-            _ => return,
+        };
+        match shortcut {
+            Shortcut::Tiles(dx, dy) => a.step_tiles(dx, dy),
+            Shortcut::Leave => a.escape(),
+            Shortcut::PlayPause => a.toggle_playing(),
+            Shortcut::Restart => a.restart(),
+            Shortcut::Step => a.step(),
+            Shortcut::Finish => a.finish(),
+            Shortcut::ResetCamera => a.reset_camera(),
+            Shortcut::ToggleViews => a.toggle_views(),
+            Shortcut::Fullscreen => a.toggle_fullscreen(),
+            Shortcut::Speed(change) => a.set_speed(change.of(a.speed())),
         }
         e.prevent_default();
     })?;

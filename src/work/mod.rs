@@ -25,6 +25,7 @@ pub mod pool;
 pub mod replica;
 pub mod session;
 pub mod shell_change;
+pub mod shortcuts;
 pub mod slotted_edge;
 pub mod status_readout;
 pub mod viewer_command;
