@@ -30,7 +30,7 @@ use super::map::MapView;
 use super::page::{self, element, set_text, show_message, signal};
 use super::panel::{OnChange, Panel};
 use super::planar::PlanarView;
-use super::record::{self, Recording, Step, Support};
+use super::record::{self, Recording, Step};
 use super::share_panel;
 use super::shown_size::ShownSize;
 use super::viewer::Viewer;
@@ -45,6 +45,7 @@ use crate::share::presentation::{Layout, Presentation};
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
+use crate::work::recording::{Ended, Support};
 use crate::work::session::{Edit, Effect, Session};
 use crate::work::status_readout::Say;
 use crate::work::viewer_command::ViewCommand;
@@ -423,15 +424,7 @@ impl App {
         signal("encoder", support.signal());
         set_text("record-status", &support.note());
         if let Some(button) = element("record") {
-            dom::attr(
-                &button,
-                "aria-disabled",
-                if matches!(*support, Support::Nothing(_)) {
-                    "true"
-                } else {
-                    "false"
-                },
-            );
+            dom::attr(&button, "aria-disabled", &support.refused().to_string());
         }
     }
 
@@ -442,10 +435,7 @@ impl App {
             return;
         }
         let support = self.support.borrow().clone();
-        if matches!(
-            support,
-            Support::Unasked | Support::Checking | Support::Nothing(_)
-        ) {
+        if !support.may_record() {
             set_text("record-status", &support.note());
             return;
         }
@@ -453,9 +443,11 @@ impl App {
             return;
         };
         self.apply();
-        let rows = spec.growth.rows.max(2) as usize;
-        let speed = spec.growth.speed;
-        let plan = RecordingPlan::new(rows, speed, record::options());
+        let plan = RecordingPlan::new(
+            spec.growth.rows.max(2) as usize,
+            spec.growth.speed,
+            record::options(),
+        );
         let size = (plan.width, plan.height);
         match Recording::start(plan, preset.id, &support) {
             Ok(recording) => {
@@ -465,30 +457,26 @@ impl App {
                 record::show_recording(Some(&recording));
                 self.recording = Some(recording);
             }
-            Err(e) => {
-                signal("record", "failed");
-                set_text(
-                    "record-status",
-                    &format!("The recording could not start: {e}."),
-                );
-            }
+            Err(e) => self.ended(Ended::NotStarted(e)),
         }
     }
 
     /// Stops a recording under way, keeping nothing of it, and says why.
     pub fn stop_recording(&mut self, why: &str) {
-        let Some(recording) = self.recording.take() else {
-            return;
-        };
-        recording.cancel();
+        if let Some(recording) = self.recording.take() {
+            recording.cancel();
+            self.ended(Ended::Cancelled(why.into()));
+        }
+    }
+
+    /// A recording ended (or never began): the view goes back to the page's size and the page
+    /// says how it ended.
+    fn ended(&mut self, ended: Ended) {
         self.viewer.command(ViewCommand::RecordAt(None));
         fix_canvas(false);
         record::show_recording(None);
-        signal("record", "cancelled");
-        set_text(
-            "record-status",
-            &format!("Recording cancelled: {why}. Nothing was saved."),
-        );
+        signal("record", ended.signal());
+        set_text("record-status", &ended.words());
     }
 
     /// One animation frame of a recording under way: the frame the viewer drew (`recorded`)
@@ -517,34 +505,23 @@ impl App {
             recording.plan().frames(),
             recording.plan().duration_us() as f64 / 1e6,
         );
-        self.viewer.command(ViewCommand::RecordAt(None));
-        fix_canvas(false);
-        record::show_recording(None);
         signal("recordFrames", &recording.frames_done().to_string());
-        let outcome = match step {
-            Step::Done => recording.save(),
+        let ended = match step {
+            Step::Done => match recording.save() {
+                Ok(name) => Ended::Saved {
+                    name,
+                    frames,
+                    seconds,
+                },
+                Err(e) => Ended::Failed(e),
+            },
             Step::Failed(e) => {
                 recording.cancel();
-                Err(e)
+                Ended::Failed(e)
             }
             Step::Working => unreachable!("handled above"),
         };
-        match outcome {
-            Ok(name) => {
-                signal("record", "saved");
-                set_text(
-                    "record-status",
-                    &format!("Saved {name}: {frames} frames, {seconds:.2} s."),
-                );
-            }
-            Err(e) => {
-                signal("record", "failed");
-                set_text(
-                    "record-status",
-                    &format!("The recording failed: {e}. Nothing was saved."),
-                );
-            }
-        }
+        self.ended(ended);
     }
 
     /// Starts a download of the shell shown (written over the next frames).

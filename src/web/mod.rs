@@ -29,10 +29,10 @@ mod workers;
 
 use crate::export::Download;
 use crate::render::Canvas;
+use crate::work::recording::Support;
 use crate::work::shortcuts::{self, Press, Shortcut, Target};
 use crate::work::viewer_command::{PointerChange, ViewCommand};
 use app::App;
-use record::Support;
 use std::cell::RefCell;
 use std::rc::Rc;
 use viewer::Viewer;

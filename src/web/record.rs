@@ -18,6 +18,7 @@ use crate::export::webm::{VideoCodec, WebmWriter};
 use crate::view::recording::{
     FrameAsk, Pace, Progress, RecordingOptions, RecordingPlan, VideoSize,
 };
+use crate::work::recording::{self, Support};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
@@ -35,62 +36,11 @@ const RECORDER_TYPES: [&str; 4] = [
     "video/mp4",
 ];
 
-/// What this browser can record with. The browser is asked when Record is first pressed, not
-/// when the page opens: asking wakes the browser's media stack, which costs every visitor
-/// time, and WebKitGTK 2.50 on Debian 12 crashes the page's process as soon as it is asked.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Support {
-    /// Not asked yet.
-    Unasked,
-    /// Not known yet (the encoders are being asked).
-    Checking,
-    /// WebCodecs with this codec, frame-exact.
-    WebCodecs(VideoCodec),
-    /// `MediaRecorder` writing this type, in real time.
-    MediaRecorder(String),
-    /// Nothing: why.
-    Nothing(String),
-}
-
-impl Support {
-    /// The page's signal (`data-encoder`).
-    pub fn signal(&self) -> &str {
-        match self {
-            Support::Unasked => "unasked",
-            Support::Checking => "checking",
-            Support::WebCodecs(codec) => codec.name(),
-            Support::MediaRecorder(_) => "MediaRecorder",
-            Support::Nothing(_) => "none",
-        }
-    }
-
-    /// What the page says about recording here, before anything is recorded.
-    pub fn note(&self) -> String {
-        match self {
-            Support::Unasked => {
-                "Records every frame of the growth; Record first asks the browser for a video \
-                 encoder."
-                    .into()
-            }
-            Support::Checking => "Asking the browser for a video encoder…".into(),
-            Support::WebCodecs(codec) => format!(
-                "Records every frame of the growth, however slow this machine: {} in WebM.",
-                codec.name()
-            ),
-            Support::MediaRecorder(mime) => format!(
-                "This browser has no WebCodecs video encoder, so the video is recorded in real \
-                 time with MediaRecorder ({mime}): on a slow machine it is uneven."
-            ),
-            Support::Nothing(why) => format!("This browser cannot record video: {why}."),
-        }
-    }
-}
-
 /// Asks the browser what it can record with: the first codec of [`VideoCodec::PREFERENCE`]
 /// its `VideoEncoder` takes at the largest size and rate offered, else `MediaRecorder`.
 pub async fn probe() -> Support {
-    let has_encoder = webcodecs::has("VideoEncoder");
-    if has_encoder {
+    let encoder = if webcodecs::has("VideoEncoder") {
+        let mut taken = None;
         for codec in VideoCodec::PREFERENCE {
             let (width, height) = VideoSize::P1080.pixels();
             let config = webcodecs::object(&[
@@ -106,22 +56,22 @@ pub async fn probe() -> Support {
                 .and_then(|a| js_sys::Reflect::get(&a, &"supported".into()).ok())
                 .is_some_and(|s| s.is_truthy());
             if supported {
-                return Support::WebCodecs(codec);
+                taken = Some(codec);
+                break;
             }
         }
-    }
-    if webcodecs::has("MediaRecorder")
-        && let Some(mime) = RECORDER_TYPES
-            .iter()
-            .find(|t| web_sys::MediaRecorder::is_type_supported(t))
-    {
-        return Support::MediaRecorder(mime.to_string());
-    }
-    Support::Nothing(if has_encoder {
-        "its VideoEncoder takes none of VP9, VP8 and AV1, and it has no MediaRecorder".into()
+        Some(taken)
     } else {
-        "it has neither WebCodecs' VideoEncoder nor MediaRecorder".into()
-    })
+        None
+    };
+    let recorder = webcodecs::has("MediaRecorder")
+        .then(|| {
+            RECORDER_TYPES
+                .iter()
+                .find(|t| web_sys::MediaRecorder::is_type_supported(t))
+        })
+        .flatten();
+    Support::answered(encoder, recorder.copied())
 }
 
 /// The options chosen on the page.
@@ -535,22 +485,6 @@ pub fn show_recording(recording: Option<&Recording>) {
     signal("recordFrames", &r.progress.frames_done().to_string());
     set_text(
         "record-status",
-        &if r.progress.flushing() {
-            format!("Finishing the file ({frames} frames)…")
-        } else {
-            format!(
-                "Recording frame {} of {frames} ({}×{}, {} a second{})…",
-                r.progress.frames_done() + 1,
-                r.plan.width,
-                r.plan.height,
-                r.plan.fps,
-                if matches!(r.sink, Sink::Stream { .. }) {
-                    ", in real time with MediaRecorder: this browser has no WebCodecs video \
-                     encoder, so on a slow machine the video is uneven"
-                } else {
-                    ""
-                }
-            )
-        },
+        &recording::under_way(&r.plan, &r.progress, matches!(r.sink, Sink::Stream { .. })),
     );
 }

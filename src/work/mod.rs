@@ -22,6 +22,7 @@ pub mod message;
 pub mod picture_queue;
 pub mod planar_update;
 pub mod pool;
+pub mod recording;
 pub mod replica;
 pub mod session;
 pub mod shell_change;
