@@ -372,14 +372,14 @@ impl Page {
                 {
                     frame.map_err(|e| format!("a recording's frame was refused: {e}"))?;
                     recorded = true;
-                    self.state.drawn(self.now);
+                    self.state.recorded(self.now);
                 }
             } else if self
                 .state
                 .frame(self.now, GROWTH_BUDGET_MS, 24.0, &mut self.workers.pool)
             {
                 drawn = true;
-                self.state.drawn(self.now);
+                self.state.drawn();
             }
         }
         self.screen()?;

@@ -453,7 +453,7 @@ impl Viewer {
         let Some(d) = &mut self.drawing else {
             // Nothing to draw on: what changed is shown all the same (the planar view, the
             // status).
-            self.state.drawn(now());
+            self.state.drawn();
             return Ok(true);
         };
         // After megabytes of uploads, or while the GPU still works on earlier frames, the
@@ -465,7 +465,7 @@ impl Viewer {
         if let Some(g) = self.state.shell() {
             d.draw(g, self.state.layout())?;
         }
-        self.state.drawn(now());
+        self.state.drawn();
         Ok(true)
     }
 
@@ -551,7 +551,7 @@ impl Viewer {
         let g = self.state.shell().ok_or("no shell is loaded")?;
         let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
         d.draw(g, self.state.layout())?;
-        self.state.drawn(now());
+        self.state.recorded(now());
         let init = webcodecs::object(&[
             ("timestamp", (ask.timestamp_us as f64).into()),
             ("duration", (ask.duration_us as f64).into()),

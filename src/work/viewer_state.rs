@@ -205,9 +205,18 @@ impl ViewerState {
         self.dirty = true;
     }
 
-    /// The picture was drawn as it stands.
-    pub fn drawn(&mut self, now: f64) {
+    /// The picture was drawn as it stands. The time between frames still counts from the
+    /// start of the last frame: where drawing holds the thread (WebGL on the page's thread, a
+    /// software rasterizer), the camera eases by the wall time that passed, drawing included,
+    /// and settles in as many seconds as it would at 60 frames a second.
+    pub fn drawn(&mut self) {
         self.dirty = false;
+    }
+
+    /// A recording's frame was drawn at `now`: the next frame's interval counts from it, for
+    /// a recording grows and turns the camera by its plan, not by the clock.
+    pub fn recorded(&mut self, now: f64) {
+        self.drawn();
         self.last_frame = self.last_frame.max(now);
     }
 
