@@ -1,17 +1,12 @@
-//! The download menu: every file the page offers for the shell shown (GLB first, then PLY,
-//! 3MF, OBJ, STL, the picture and the pattern), each with its size, and the size that GLB
-//! and 3MF files are made at. The viewer writes a file where its copy of the shell is
-//! (`work/file_writer.rs`), a frame's budget at a time; the page shows where it stands, with a
-//! progress bar while it takes longer than a frame, then offers it as a download. What cannot
-//! be exported (nothing grown yet, a shell that stopped, an open surface as 3MF, a size out
-//! of bounds) is said in words. `<body data-download>`: finishing (an implicit shell still
-//! growing is grown whole first), writing, offered, refused (empty before any).
+//! The download menu on the page: the core's [`DownloadMenu`] decides (one file at a time,
+//! its progress, its size, what cannot be exported and why); this applies what it returns and
+//! offers each file written as a download.
 
 use super::clock::now;
 use super::page::{self, element, set_text, show_message, signal};
 use crate::export::Download;
-use crate::export::estimate::{Counts, Size};
 use crate::export::print_size::PrintSize;
+use crate::work::download_menu::{DownloadMenu, MenuShown, Message};
 use crate::work::file_writer::{Body, FileStage};
 use crate::work::viewer_command::ViewCommand;
 use crate::work::viewer_status::ShellStatus;
@@ -21,66 +16,32 @@ use web_sys::{
     HtmlProgressElement, Url,
 };
 
-/// Least time between two updates of the sizes shown while the shell grows.
-const SIZES_EVERY_MS: f64 = 500.0;
-/// What the size field is called in messages.
-const SIZE: &str = "Size";
-
-/// The download menu, and whether a file is under way.
+/// The download menu.
 #[derive(Default)]
-pub struct Downloads {
-    busy: bool,
-    /// The counts the sizes shown were estimated from, and when.
-    shown: Option<(Counts, f64)>,
-}
+pub struct Downloads(DownloadMenu);
 
 impl Downloads {
     /// What to ask the viewer for the file `what` of the shell it shows, at the size the
     /// field asks for; a message says why when it cannot be made.
     pub fn start(&mut self, what: Download) -> Option<ViewCommand> {
-        if self.busy {
-            return None;
-        }
-        let size = match what {
-            Download::Mesh(format) if format.sized() => size(),
-            _ => Ok(PrintSize::default()),
-        };
-        match size {
-            Ok(size) => {
-                self.busy = true;
-                set_buttons_enabled(false);
-                Some(ViewCommand::WriteFile { what, size })
-            }
-            Err(e) => {
-                refuse(&e);
-                None
-            }
-        }
+        let size_mm = element("download-size")
+            .and_then(|e| e.dyn_into::<HtmlInputElement>().ok())
+            .map_or(PrintSize::DEFAULT_MM, |i| i.value_as_number());
+        let (command, shown) = self.0.start(what, size_mm);
+        apply(shown);
+        command
     }
 
     /// Shows where the file asked for stands (`None`: none is asked for), and offers it once it
     /// is written.
-    pub fn show(&mut self, writing: Option<FileStage>) {
-        let Some(writing) = writing else {
-            return;
-        };
-        let offered = match writing {
-            FileStage::Finishing => {
-                signal("download", "finishing");
-                page::hide_message();
-                return;
-            }
-            FileStage::Writing { name, done } => {
-                signal("download", "writing");
-                page::hide_message();
-                show_progress(Some((&name, done)));
-                return;
-            }
-            FileStage::Written(file) => match file.body {
-                Body::Bytes(bytes) => {
-                    show_size(file.what, &format!("{} MB", megabytes(bytes.len() as f64)));
-                    offer(&file.name, file.what.mime(), &bytes)
-                }
+    pub fn show(&mut self, stage: Option<FileStage>) {
+        let Some(stage) = stage else { return };
+        let mut shown = self.0.stage(stage);
+        let file = shown.offer.take();
+        apply(shown);
+        if let Some(file) = file {
+            let offered = match file.body {
+                Body::Bytes(bytes) => offer(&file.name, file.what.mime(), &bytes),
                 Body::Url(url) => {
                     let offered = offer_url(&file.name, &url);
                     // The picture's object URL is no longer needed once the click has started
@@ -88,112 +49,56 @@ impl Downloads {
                     let _ = Url::revoke_object_url(&url);
                     offered
                 }
-            },
-            FileStage::Refused(e) => Err(e),
-        };
-        self.busy = false;
-        show_progress(None);
-        set_buttons_enabled(true);
-        match offered {
-            Ok(()) => {
-                page::hide_message();
-                signal("download", "offered");
-            }
-            Err(e) => refuse(&e),
+            };
+            apply(self.0.offered(offered));
         }
     }
 
     /// The viewer that was writing a file is gone (it moved to another thread): the file is
     /// refused with `why`, and may be asked again.
     pub fn abandon(&mut self, why: &str) {
-        if self.busy {
-            self.show(Some(FileStage::Refused(why.to_string())));
-        }
+        apply(self.0.abandon(why));
     }
 
-    /// Shows each file's size for the shell `shell`, when it has changed (at most every half
-    /// second while the shell grows).
+    /// Shows each file's size for the shell `shell`, when it has changed.
     pub fn show_sizes(&mut self, shell: &ShellStatus) {
-        let counts = shell.counts;
-        let t = now();
-        if self
-            .shown
-            .is_some_and(|(c, at)| c == counts || (!shell.done && t - at < SIZES_EVERY_MS))
-            || self.busy
-        {
-            return;
+        show_sizes(&self.0.sizes(shell, now()));
+    }
+}
+
+fn show_sizes(sizes: &[(Download, String)]) {
+    for (what, text) in sizes {
+        set_text(&format!("size-{}", what.name()), text);
+    }
+}
+
+/// Shows what the menu decided.
+fn apply(shown: MenuShown) {
+    if let Some(value) = shown.signal {
+        signal("download", value);
+    }
+    match shown.message {
+        Some(Message::Show(words)) => show_message(&words),
+        Some(Message::Hide) => page::hide_message(),
+        None => {}
+    }
+    show_sizes(&shown.sizes);
+    if let Some(progress) = shown.progress {
+        let bar =
+            element("download-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok());
+        if let Some(bar) = bar {
+            bar.set_value(progress.as_ref().map_or(0.0, |p| p.0));
+            bar.set_hidden(progress.is_none());
         }
-        self.shown = Some((counts, t));
+        set_text("download-status", progress.as_ref().map_or("", |p| &p.1));
+    }
+    if let Some(enabled) = shown.buttons {
         for what in Download::ALL {
-            let text = match what.estimate(&counts) {
-                Some(Size::Bytes(bytes)) => format!("≈ {} MB", megabytes(bytes as f64)),
-                Some(Size::Pixels(w, h)) => format!("{w} × {h}"),
-                None => "none".to_string(),
-            };
-            show_size(what, &text);
-        }
-    }
-}
-
-/// Says why the download could not be made.
-fn refuse(why: &str) {
-    signal("download", "refused");
-    show_message(&format!("The download could not be made: {why}."));
-}
-
-/// Shows `text` as the size of the file `what`.
-fn show_size(what: Download, text: &str) {
-    set_text(&format!("size-{}", what.name()), text);
-}
-
-/// Bytes in megabytes, to two significant figures (three from 10 MB).
-fn megabytes(bytes: f64) -> String {
-    let mb = bytes / 1e6;
-    if mb >= 10.0 {
-        format!("{mb:.0}")
-    } else if mb >= 0.1 {
-        format!("{mb:.1}")
-    } else {
-        format!("{mb:.2}")
-    }
-}
-
-/// The size (largest side) the field asks for, refused out of bounds by name.
-fn size() -> Result<PrintSize, String> {
-    let input = element("download-size").and_then(|e| e.dyn_into::<HtmlInputElement>().ok());
-    let mm = input.map_or(PrintSize::DEFAULT_MM, |i| i.value_as_number());
-    PrintSize::new(mm, SIZE).map_err(|e| e.to_string())
-}
-
-fn set_buttons_enabled(enabled: bool) {
-    for what in Download::ALL {
-        if let Some(b) = element(&format!("download-{}", what.name()))
-            .and_then(|e| e.dyn_into::<HtmlButtonElement>().ok())
-        {
-            b.set_disabled(!enabled);
-        }
-    }
-}
-
-/// Shows the progress of the file `name` (from 0 to 1), or hides it.
-fn show_progress(progress: Option<(&str, f64)>) {
-    let bar = element("download-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok());
-    match progress {
-        Some((name, done)) => {
-            if let Some(bar) = bar {
-                bar.set_value(done);
-                bar.set_hidden(false);
+            if let Some(b) = element(&format!("download-{}", what.name()))
+                .and_then(|e| e.dyn_into::<HtmlButtonElement>().ok())
+            {
+                b.set_disabled(!enabled);
             }
-            set_text(
-                "download-status",
-                &format!("Writing {name}… {:.0} %", done * 100.0),
-            );
-        }
-        None => {
-            if let Some(bar) = bar {
-                bar.set_hidden(true);
-            }
-            set_text("download-status", "");
         }
     }
 }

@@ -13,6 +13,7 @@
 //! state, [`viewer_state::ViewerState`]: the web runner only applies it.
 
 pub mod device_survival;
+pub mod download_menu;
 pub mod drawing_link;
 pub(crate) mod edge_slots;
 pub mod file_writer;
