@@ -112,9 +112,10 @@ SOAK_ENGINES ?= chromium,firefox,webkit
 test-engines-soak: build deps-browser tested-cli
 	@for engine in $$(echo $(SOAK_ENGINES) | tr , ' '); do \
 	  for run in $$(seq 1 $(SOAK_RUNS)); do \
+	    start=$$(date +%s); \
 	    SEASHELLS=$(TESTED_CLI) ENGINES=$$engine $(XVFB) node --test tests/page/engines.test.mjs > /tmp/seashells-soak.log 2>&1 \
-	      || { tail -40 /tmp/seashells-soak.log; echo "soak: $$engine failed run $$run of $(SOAK_RUNS)"; exit 1; }; \
-	    echo "soak: $$engine passed run $$run of $(SOAK_RUNS)"; \
+	      || { tail -40 /tmp/seashells-soak.log; echo "soak: $$engine failed run $$run of $(SOAK_RUNS) (whole log: /tmp/seashells-soak.log)"; exit 1; }; \
+	    echo "soak: $$engine passed run $$run of $(SOAK_RUNS) in $$(( $$(date +%s) - start )) s"; \
 	  done; \
 	done
 

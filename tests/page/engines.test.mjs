@@ -35,15 +35,6 @@ const DRAWN_IN = { chromium: 'worker', firefox: 'worker', webkit: 'page' };
  */
 const AUTOMATION_HANG = /The view is drawn on the page's thread: the drawing worker said nothing in 20 s/;
 
-/**
- * WebKitGTK driven here fails a page now and then in two ways not explained yet (see
- * docs/browsers.md, "WebKitGTK: two failures not explained yet"): its web process crashes
- * while a lost context is survived; a page never starts growing. Each was seen once in tens
- * of page loads and neither came back in 14 to 50 runs of the same test alone. A WebKit test
- * that fails so is run once more in a fresh window, and says so; failing twice fails.
- */
-const WEBKIT_UNEXPLAINED = /session deleted because of page crash or hang|waiting for state growing,grown,error/;
-
 /** One shell of every form, at full speed (the Murex on a coarse grid, to be quick). */
 const SHELLS = [
   ['a sweep with its pattern on a growing edge', 'oliva-porphyria-growing-edge', ''],
@@ -85,19 +76,6 @@ for (const engine of ONLY) {
       server?.close();
     });
 
-    /** A test of a page, run once more on WebKit after a failure of [`WEBKIT_UNEXPLAINED`]. */
-    function pageTest(name, body) {
-      test(name, async () => {
-        try {
-          await body();
-        } catch (e) {
-          if (engine !== 'webkit' || !WEBKIT_UNEXPLAINED.test(String(e?.message ?? e))) throw e;
-          console.log(`webkit: "${name}" failed (${e.message}); run once more in a fresh window`);
-          await body();
-        }
-      });
-    }
-
     /** Opens `fragment` in a new page of this engine. */
     async function open(fragment) {
       const page = await browser.newPage(VIEWPORT);
@@ -105,7 +83,7 @@ for (const engine of ONLY) {
       return page;
     }
 
-    pageTest('the gallery lists every shell and draws its cards', async () => {
+    test('the gallery lists every shell and draws its cards', async () => {
       const page = await open('');
       try {
         const state = await page.waitForState(['gallery', 'error']);
@@ -126,7 +104,7 @@ for (const engine of ONLY) {
       }
     });
 
-    pageTest("the parameter map over Raup's W and T draws its 64 shells", async () => {
+    test("the parameter map over Raup's W and T draws its 64 shells", async () => {
       const page = await open('#v=1&preset=turbinate');
       try {
         await page.waitForState(['growing', 'grown']);
@@ -143,7 +121,7 @@ for (const engine of ONLY) {
       }
     });
 
-    pageTest('breeding draws the parent among its eight offspring, and a choice breeds the next', async () => {
+    test('breeding draws the parent among its eight offspring, and a choice breeds the next', async () => {
       const page = await open('#v=1&preset=turbinate&breed=0.4');
       const drawn = () => [...document.querySelectorAll('#breed-grid img')].every((img) => img.complete && img.naturalWidth === 128);
       try {
@@ -163,7 +141,7 @@ for (const engine of ONLY) {
 
     const fallbacks = [];
     for (const [form, id, extra] of SHELLS) {
-      pageTest(`${form} grows and is drawn in the viewer`, async () => {
+      test(`${form} grows and is drawn in the viewer`, async () => {
         const page = await open(`#v=1&preset=${id}&growth.speed=200${extra}`);
         try {
           const started = await page.waitForState(['growing', 'grown', 'error']);
@@ -190,9 +168,11 @@ for (const engine of ONLY) {
       if (fallbacks.length > 0) console.log(`${engine}: ${fallbacks.join(', ')} drawn on the page's thread (the worker's pool hung under WebDriver)`);
     });
 
-    pageTest("an edit in the panel restarts growth and changes the address, which gives the native core's pattern", async () => {
+    test("an edit in the panel restarts growth and changes the address, which gives the native core's pattern", async () => {
       const page = await open('#v=1&preset=oliva-porphyria&growth.speed=200');
       try {
+        await page.waitForState(['growing', 'grown']);
+        await page.click('#finish');
         const first = await page.waitForState(['grown'], 600_000);
         await page.evaluate(() => {
           const slider = document.querySelector('[data-key="pattern.model.d_a"] input.slider');
@@ -202,6 +182,7 @@ for (const engine of ONLY) {
         });
         await page.waitFor(() => location.hash.includes('pattern.model.d_a=0.15'), null, 30_000, 'the edited address');
         const link = await page.evaluate(() => location.hash);
+        await page.click('#finish');
         const grown = await page.waitForState(['grown'], 600_000);
         assert.notEqual(grown.patternHash, first.patternHash, 'a new diffusion gives a new pattern');
         assert.equal(grown.patternHash, nativePattern(link.slice(1)), 'the same bits as the native core');
@@ -211,7 +192,7 @@ for (const engine of ONLY) {
       }
     });
 
-    pageTest("Kawaguchi's four views show a line drawing in every quarter", async () => {
+    test("Kawaguchi's four views show a line drawing in every quarter", async () => {
       const page = await open('#v=1&preset=kawaguchi-shell&material.drawing=lines&view=four&growth.speed=200');
       try {
         const state = await page.waitForState(['grown'], 600_000);
@@ -235,7 +216,7 @@ for (const engine of ONLY) {
       }
     });
 
-    pageTest('a lost WebGL context that never comes back is survived on a fresh canvas', async () => {
+    test('a lost WebGL context that never comes back is survived on a fresh canvas', async () => {
       // The test-only hook cannot take the context of Firefox's drawing worker: there the
       // worker's `OffscreenCanvas.getContext('webgl2')` gives null once wgpu holds the context
       // (a plain worker of Firefox does get it back, and sees webglcontextlost when it is lost).
@@ -261,7 +242,7 @@ for (const engine of ONLY) {
       }
     });
 
-    pageTest('the GLB download passes the Khronos glTF validator', async () => {
+    test('the GLB download passes the Khronos glTF validator', async () => {
       const page = await open('#v=1&preset=kawaguchi-horn&growth.speed=200');
       try {
         await page.waitForState(['grown'], 600_000);
