@@ -9,14 +9,10 @@
 //! [`crate::view::draw_pacing`]). Where workers cannot start (or with `workers=0`), one host
 //! runs on the thread of the pool's owner (the page's, or the worker that draws the view) a
 //! frame's budget at a time, and [`Workers::status`] says so.
-//! Nothing here writes on the page: the page shows what these return.
-//!
-//! Test-only: `crash-workers=N` in the query makes the first N workers started throw on their
-//! first request, and `hang-workers=N` the next N spin forever on theirs without answering (see
-//! `www/worker.js`); with `hang-workers` a worker is held to hang after a fifth of each
-//! request's allowance (3 s for a step or a job, 12 s for building or regrowing a shell), so
-//! that a page test finds it out in seconds. `debug_crash_worker_on_fill` (`debug.rs`) makes
-//! the worker holding the sessions throw when next asked for rows of a previewed pattern.
+//! Nothing here writes on the page: the page shows what these return. The pool's size and its
+//! test-only faults come from the address's query, as [`PoolPlan`] reads it;
+//! `debug_crash_worker_on_fill` (`debug.rs`) makes the worker holding the sessions throw when
+//! next asked for rows of a previewed pattern.
 
 use super::clock::now;
 use super::debug;
@@ -24,7 +20,9 @@ use super::scope;
 use crate::view::draw_pacing::HEAVY_BYTES;
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Request, decode_reply, encode_request};
-use crate::work::pool::{Polled, Pool, Replaced, SESSIONS, WorkerEvent, size_for};
+use crate::work::pool::{
+    Faults, Polled, Pool, PoolPlan, Replaced, SESSIONS, WorkerEvent, local_status,
+};
 use js_sys::{Array, Uint8Array};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -49,32 +47,6 @@ impl Drop for Slot {
     }
 }
 
-/// Workers left to start that fail on their first request (test-only): first those that
-/// throw, then those that hang.
-#[derive(Clone, Copy, Default)]
-struct Faults {
-    throws: usize,
-    hangs: usize,
-}
-
-impl Faults {
-    /// The name of the next worker to start: one `www/worker.js` makes fail, or its own.
-    fn next_name(&mut self) -> &'static str {
-        if self.throws > 0 {
-            self.throws -= 1;
-            "seashells-throw"
-        } else if self.hangs > 0 {
-            self.hangs -= 1;
-            "seashells-hang"
-        } else {
-            "seashells"
-        }
-    }
-}
-
-/// The share of each request's allowance a worker gets under the `hang-workers` switch.
-const TEST_PATIENCE: f64 = 0.2;
-
 /// Where requests are worked on.
 enum Backend {
     Workers {
@@ -96,17 +68,6 @@ pub struct Workers {
     worker_growth_ms: f64,
     /// Where the shells grow, in words for the status line.
     status: String,
-}
-
-/// Least milliseconds a worker grows the shell per request: off the page's thread a request
-/// may take longer than the page's own frame budget, for fewer round trips, while a change of
-/// value still waits at most this long behind the growth under way (see "Who runs where" in
-/// `docs/design/architecture.md` for the measurement).
-const WORKER_GROWTH_MS: f64 = 24.0;
-
-/// The page address's query parameter `key`, as a number.
-fn query_number(key: &str) -> Option<usize> {
-    scope::query(key).and_then(|v| v.parse().ok())
 }
 
 /// Starts a worker named `name` for slot `slot` in generation `generation`, its events going
@@ -147,20 +108,14 @@ fn spawn(slot: usize, generation: u32, inbox: &Inbox, name: &str) -> Result<Slot
 impl Workers {
     /// The pool this browser gets, or the page's own thread where workers cannot start.
     pub fn start(budget_ms: f64) -> Self {
-        let size = query_number("workers")
-            .unwrap_or_else(|| size_for(scope::cores()))
-            .min(8);
-        let mut faults = Faults {
-            throws: query_number("crash-workers").unwrap_or(0),
-            hangs: query_number("hang-workers").unwrap_or(0),
-        };
-        let patience = if faults.hangs > 0 { TEST_PATIENCE } else { 1.0 };
+        let plan = PoolPlan::from_query(scope::query, scope::cores());
+        let (size, mut faults) = (plan.size, plan.faults);
         let local = |why: &str| Self {
             pool: Pool::new(1),
             backend: Backend::Local(Box::default()),
             budget_ms,
             worker_growth_ms: budget_ms,
-            status: local_status(why),
+            status: local_status(scope::thread_name(), why),
         };
         if size == 0 {
             return local("workers are off (workers=0 in the address)");
@@ -180,18 +135,15 @@ impl Workers {
             }
         }
         Self {
-            status: format!(
-                "Growing on {size} worker{}.",
-                if size == 1 { "" } else { "s" }
-            ),
-            pool: Pool::new(size).with_patience(patience),
+            status: plan.status(),
+            pool: Pool::new(size).with_patience(plan.patience),
             backend: Backend::Workers {
                 slots,
                 inbox,
                 faults,
             },
             budget_ms,
-            worker_growth_ms: query_number("grow-budget").map_or(WORKER_GROWTH_MS, |ms| ms as f64),
+            worker_growth_ms: plan.worker_growth_ms,
         }
     }
 
@@ -209,7 +161,7 @@ impl Workers {
     }
 
     /// The least milliseconds one request grows the shell for: none on the page's thread (a
-    /// frame's budget), [`WORKER_GROWTH_MS`] on a worker.
+    /// frame's budget), the plan's least growth on a worker ([`PoolPlan`]).
     pub fn min_growth_ms(&self) -> f64 {
         match self.backend {
             Backend::Local(_) => 0.0,
@@ -315,18 +267,14 @@ impl Workers {
     fn run_here(&mut self, polled: &mut Polled, why: String) {
         self.backend = Backend::Local(Box::default());
         self.worker_growth_ms = self.budget_ms;
-        self.status = local_status(&format!(
-            "workers could not run here (each stopped before answering: {why})"
-        ));
+        self.status = local_status(
+            scope::thread_name(),
+            &format!("workers could not run here (each stopped before answering: {why})"),
+        );
         polled.replaced = Some(Replaced {
             deaths: self.pool.deaths(),
             why,
             given_up: Some(self.status.clone()),
         });
     }
-}
-
-/// The status line where the pool's owner's thread grows the shells: why.
-fn local_status(why: &str) -> String {
-    format!("Growing on {}: {why}.", scope::thread_name())
 }

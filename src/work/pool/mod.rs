@@ -9,6 +9,8 @@
 
 mod dispatch;
 mod events;
+mod plan;
 
 pub use dispatch::{JOBS_PER_WORKER, Pool, SESSIONS, Send, size_for};
 pub use events::{Polled, Replaced, WorkerEvent};
+pub use plan::{Faults, PoolPlan, local_status};
