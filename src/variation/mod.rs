@@ -8,3 +8,4 @@ pub mod breeding;
 pub mod map_plan;
 pub mod parameter_map;
 pub mod tile;
+pub mod tile_grid;

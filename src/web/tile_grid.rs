@@ -1,18 +1,14 @@
 //! A grid of tiles on the page, as the parameter map and breeding lay them out: each tile a
-//! link with its picture, drawn as the pool's answers come. Every set of tiles takes a fresh
-//! range of job numbers shared by all grids, so that a picture of an older set, or of another
-//! grid, finds no tile here.
+//! link with its picture, drawn as the pool's answers come. Its numbering, focus and marks are
+//! the core's [`TileSet`] and [`crate::variation::tile_grid::TileMarks`].
 
 use super::dom::{append, attr, clear, create, typed};
 use super::page::{element, signal};
-use crate::variation::tile::Picture;
-use crate::variation::tile::Tile;
+use crate::variation::tile::{Picture, Tile};
+use crate::variation::tile_grid::{self, TileSet};
 use std::cell::Cell;
 use wasm_bindgen::{Clamped, JsCast};
 use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlImageElement, ImageData};
-
-/// Tiles of one set (the low bits of a tile's job number; a map's `SIDE × SIDE` fit).
-const TILES_PER_SET: u32 = 256;
 
 thread_local! {
     /// The number of the next set of tiles, over all grids of the page.
@@ -31,7 +27,7 @@ pub enum Shows {
 pub struct TileGrid {
     id: &'static str,
     tiles: Vec<Element>,
-    set: u32,
+    set: TileSet,
 }
 
 impl TileGrid {
@@ -40,7 +36,7 @@ impl TileGrid {
         Self {
             id,
             tiles: Vec::new(),
-            set: u32::MAX,
+            set: TileSet::new(u32::MAX),
         }
     }
 
@@ -50,11 +46,7 @@ impl TileGrid {
             clear(&grid);
         }
         self.tiles.clear();
-        self.set = NEXT_SET.with(|next| {
-            let set = next.get();
-            next.set((set + 1) % (u32::MAX / TILES_PER_SET));
-            set
-        });
+        self.set = TileSet::new(NEXT_SET.with(|next| next.replace(TileSet::after(next.get()))));
     }
 
     /// Adds a tile that links to `href` (none: it cannot be chosen), named by `label`, with the
@@ -70,7 +62,7 @@ impl TileGrid {
         if let Some(href) = href {
             attr(&a, "href", href);
         }
-        attr(&a, "data-job", &self.job(self.tiles.len()).to_string());
+        attr(&a, "data-job", &self.set.add().to_string());
         for class in classes {
             let _ = a.class_list().add_1(class);
         }
@@ -94,13 +86,12 @@ impl TileGrid {
 
     /// The job number of tile `index` of this set.
     pub fn job(&self, index: usize) -> u32 {
-        self.set * TILES_PER_SET + index as u32
+        self.set.job(index)
     }
 
     /// The tile of this set a job number is for.
     pub fn index(&self, job: u32) -> Option<usize> {
-        let index = (job % TILES_PER_SET) as usize;
-        (job / TILES_PER_SET == self.set && index < self.tiles.len()).then_some(index)
+        self.set.index(job)
     }
 
     /// Draws tile `index`'s picture, or hatches it and says why it has none; a tile whose
@@ -109,44 +100,30 @@ impl TileGrid {
         let Some(element) = self.tiles.get(index) else {
             return;
         };
-        let title = element.get_attribute("title").unwrap_or_default();
-        match (&tile.picture, &tile.failure) {
-            (_, Some(why)) => {
-                let _ = element.class_list().add_1("failed");
-                attr(element, "title", &format!("{title}: {why}"));
+        let marks = tile.marks(&element.get_attribute("aria-label").unwrap_or_default());
+        for (class, marked) in [("failed", marks.failed), ("repaired", marks.repaired)] {
+            if marked {
+                let _ = element.class_list().add_1(class);
             }
-            (Some(picture), None) => paint(element, picture),
-            (None, None) => {}
         }
-        if let (Some(note), None) = (&tile.note, &tile.failure)
-            && !element.class_list().contains("repaired")
-        {
-            let _ = element.class_list().add_1("repaired");
-            attr(element, "title", &format!("{title} (repaired: {note})"));
+        attr(element, "title", &marks.title);
+        if let (Some(picture), None) = (&tile.picture, &tile.failure) {
+            paint(element, picture);
         }
     }
 
     /// Moves the keyboard's focus `dx` tiles across and `dy` down a grid `side` tiles wide
     /// (from the focused tile, or from `from`, or the first); Enter then follows that tile.
     pub fn step(&self, dx: i32, dy: i32, side: usize, from: Option<usize>) {
-        let side = side as i32;
         let focused = super::page::document().active_element();
-        let from = self
+        let at = self
             .tiles
             .iter()
             .position(|t| Some(t) == focused.as_ref())
             .or(from);
-        let to = match from {
-            Some(at) => {
-                let (i, j) = (at as i32 % side, at as i32 / side);
-                let rows = self.tiles.len().div_ceil(side as usize) as i32;
-                ((j + dy).clamp(0, rows - 1) * side + (i + dx).clamp(0, side - 1)) as usize
-            }
-            None => 0,
-        };
         if let Some(tile) = self
             .tiles
-            .get(to)
+            .get(self.set.step(at, dx, dy, side))
             .and_then(|t| t.dyn_ref::<web_sys::HtmlElement>())
         {
             let _ = tile.focus();
@@ -157,7 +134,7 @@ impl TileGrid {
 /// Tells the page tests whether the tiles of a grid are all drawn (`data-<key>`: whole, or
 /// filling).
 pub fn signal_filled(key: &str, finished: bool) {
-    signal(key, if finished { "whole" } else { "filling" });
+    signal(key, tile_grid::filled(finished));
 }
 
 /// Draws a pattern's picture into its tile's canvas.
