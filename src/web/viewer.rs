@@ -24,7 +24,7 @@ use crate::presets::Preset;
 use crate::render::{Canvas, Renderer, ShellLook};
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
-use crate::view::draw_pacing::{DrawPacing, FrameDraw};
+use crate::view::draw_pacing::{DrawPacing, FrameDraw, GpuWatch};
 use crate::view::recording::FrameAsk;
 use crate::work::device_survival::{Loss as DeviceLoss, Open, Survival};
 use crate::work::file_writer::{FileStage, FileWriter, Needs};
@@ -76,10 +76,8 @@ struct Drawing {
     renderer: Renderer,
     /// An element of the page, or an offscreen canvas one handed its drawing to.
     canvas: Canvas,
-    /// While frames wait for the GPU: how many it had finished when it last finished one, and
-    /// when. A device that opened and finishes none of the frames handed to it for long draws
-    /// nothing on the screen.
-    progress: Option<(u64, f64)>,
+    /// Whether the frames handed to the GPU reach the screen.
+    watch: GpuWatch,
 }
 
 impl Drawing {
@@ -87,7 +85,7 @@ impl Drawing {
         Self {
             renderer,
             canvas,
-            progress: None,
+            watch: GpuWatch::default(),
         }
     }
 
@@ -97,35 +95,13 @@ impl Drawing {
         self.renderer.draw(&panes)
     }
 
-    /// Why the screen shows nothing more of what is drawn: frames have waited for the GPU for
-    /// [`UNSEEN_MS`] without one of them finished.
+    /// Why the screen shows nothing more of what is drawn, if frames have waited too long.
     fn unseen(&mut self) -> Option<String> {
         let (finished, unfinished) = self.renderer.frames();
-        if unfinished == 0 {
-            self.progress = None;
-            return None;
-        }
-        let t = now();
-        match self.progress {
-            Some((seen, since)) if seen == finished => (t - since > UNSEEN_MS).then(|| {
-                format!(
-                    "the {} device has finished none of the frames handed to it in {} s",
-                    self.renderer.backend(),
-                    UNSEEN_MS / 1000.0
-                )
-            }),
-            _ => {
-                self.progress = Some((finished, t));
-                None
-            }
-        }
+        self.watch
+            .check(finished, unfinished, now(), self.renderer.backend())
     }
 }
-
-/// How long frames may wait for the GPU without one of them finished before the viewer says
-/// the screen shows none of them (a frame takes well under a second, even on a software
-/// rasterizer).
-const UNSEEN_MS: f64 = 10_000.0;
 
 /// Why a viewer that draws nothing gives no picture.
 const NO_DRAWING: &str = "this browser draws no 3D here";
