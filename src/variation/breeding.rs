@@ -415,10 +415,12 @@ impl Breeding {
 
     /// The link of `lineage` bred from this one's first shell (without '#').
     pub fn link(&self, lineage: &Lineage) -> String {
-        format!(
-            "{}&{KEY}={}",
-            link::encode(self.first.0, &self.first.1),
-            lineage.write()
-        )
+        bred_link(self.first.0, &self.first.1, lineage)
     }
+}
+
+/// The link of `lineage` bred from the shell `spec` of `preset` (without '#'); the empty
+/// lineage opens breeding on it.
+pub fn bred_link(preset: &Preset, spec: &ShellSpec, lineage: &Lineage) -> String {
+    format!("{}&{KEY}={}", link::encode(preset, spec), lineage.write())
 }

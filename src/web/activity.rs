@@ -16,6 +16,15 @@ pub fn set(what: String) {
     });
 }
 
+/// What the page says when the module panics (`info`), on its thread or the drawing worker's.
+pub fn crash_words(info: &std::panic::PanicHookInfo<'_>) -> String {
+    format!(
+        "Something went wrong while {}: {info}. The page cannot go on; reloading the link starts \
+         this shell again.",
+        describe()
+    )
+}
+
 /// What the page was doing last, in words.
 pub fn describe() -> String {
     ACTIVITY.with(|a| {

@@ -39,9 +39,10 @@ use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::export::Download;
 use crate::render::Canvas;
-use crate::share::lineage::{self, Lineage};
+use crate::share::lineage::Lineage;
 use crate::share::link;
 use crate::share::presentation::{Layout, Presentation};
+use crate::variation::breeding;
 use crate::view::panes::arrangement;
 use crate::view::recording::RecordingPlan;
 use crate::work::message::{Reply, Request};
@@ -874,13 +875,7 @@ impl App {
     /// Breeds from the shell shown: it stands among its first eight offspring.
     pub fn open_breeding(&mut self) {
         if let Some((preset, spec)) = self.session.current() {
-            let lineage = Lineage::default();
-            let link = format!(
-                "{}&{}={}",
-                link::encode(preset, spec),
-                lineage::KEY,
-                lineage.write()
-            );
+            let link = breeding::bred_link(preset, spec, &Lineage::default());
             let _ = web_sys::window().map(|w| w.location().set_hash(&link));
         }
     }

@@ -73,11 +73,7 @@ pub fn drawing_worker_start() {
     std::panic::set_hook(Box::new(|info| {
         console_error_panic_hook::hook(info);
         post(
-            &ViewerNews::Crashed(format!(
-                "Something went wrong while {}: {info}. The page cannot go on; reloading the \
-                 link starts this shell again.",
-                super::activity::describe()
-            )),
+            &ViewerNews::Crashed(super::activity::crash_words(info)),
             None,
         );
     }));

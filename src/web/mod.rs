@@ -50,11 +50,7 @@ use web_sys::{
 pub fn install_panic_hook() {
     std::panic::set_hook(Box::new(|info| {
         console_error_panic_hook::hook(info);
-        page::show_crash(&format!(
-            "Something went wrong while {}: {info}. The page cannot go on; reloading the link \
-             starts this shell again.",
-            activity::describe()
-        ));
+        page::show_crash(&activity::crash_words(info));
     }));
 }
 
