@@ -155,6 +155,27 @@ pub struct Field {
     pub kind: Kind,
 }
 
+impl Field {
+    /// What the field is called where room is short (the map's axes, a change of breeding):
+    /// the paper's symbol, or its name.
+    pub fn short_name(&self) -> &'static str {
+        if self.symbol.is_empty() {
+            self.name
+        } else {
+            self.symbol
+        }
+    }
+
+    /// The field's name with the paper's symbol before it, where it has one.
+    pub fn label(&self) -> String {
+        if self.symbol.is_empty() {
+            self.name.to_string()
+        } else {
+            format!("{} — {}", self.symbol, self.name)
+        }
+    }
+}
+
 const fn real(min: f64, max: f64) -> Kind {
     Kind::Real {
         min,

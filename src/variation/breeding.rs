@@ -35,12 +35,13 @@ pub struct Change {
 
 impl std::fmt::Display for Change {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let name = if self.field.symbol.is_empty() {
-            self.field.name
-        } else {
-            self.field.symbol
-        };
-        write!(f, "{name} {} → {}", display(self.from), display(self.to))
+        write!(
+            f,
+            "{} {} → {}",
+            self.field.short_name(),
+            display(self.from),
+            display(self.to)
+        )
     }
 }
 

@@ -7,7 +7,7 @@
 use super::parameter_map::{Axis, ParameterMap, side_for};
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
-use crate::spec::fields::{Field, display};
+use crate::spec::fields::display;
 
 /// A tile's label.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,15 +29,6 @@ pub struct MapPlan {
     pub labels: Vec<Label>,
     /// The status line under the map.
     pub status: String,
-}
-
-/// The name a field is shown by on the map: its symbol, or its name.
-fn symbol(field: &Field) -> &'static str {
-    if field.symbol.is_empty() {
-        field.name
-    } else {
-        field.symbol
-    }
 }
 
 /// The map of `spec` (a variant of `preset`) over the axes `axes` gives for a side of so many
@@ -94,8 +85,8 @@ pub fn plan(
     };
     let status = format!(
         "{} across, {} down; {each}. Choose a tile to open that shell.{clamped}{slow}",
-        symbol(map.x.field),
-        symbol(map.y.field),
+        map.x.field.short_name(),
+        map.y.field.short_name(),
     );
     Ok(MapPlan {
         map,
@@ -110,9 +101,9 @@ fn label(map: &ParameterMap, index: usize) -> Label {
     let (vx, vy) = map.values(index);
     let mut text = format!(
         "{} = {}, {} = {}",
-        symbol(map.x.field),
+        map.x.field.short_name(),
         display(vx),
-        symbol(map.y.field),
+        map.y.field.short_name(),
         display(vy)
     );
     if tile.apart {

@@ -9,7 +9,6 @@ use super::debug;
 use super::dom::{append, attr, clear, create, typed};
 use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
-use super::panel::label;
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::presets::Preset;
@@ -57,7 +56,7 @@ impl AxisControls {
             }
             let option: HtmlOptionElement = typed("option", "");
             option.set_value(field.key);
-            option.set_text(&label(field));
+            option.set_text(&field.label());
             if let Some((_, g)) = &group {
                 append(g, &[&option]);
             }

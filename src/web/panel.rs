@@ -1,13 +1,12 @@
-//! The parameter panel, generated from the spec's own description of its fields
-//! (`spec::fields`): for every field the current spec has, grouped as the table groups them, a
-//! control with the paper's symbol and name, its range, and a number beside each slider. Every
-//! change is handed back as `key=value` text and read exactly as a link's value would be, and a
-//! slider also hands back every value it passes while it is dragged.
+//! The parameter panel on the page: the controls the core chooses for the spec's fields
+//! ([`crate::work::panel_controls`]), grouped as the table groups them. Every change is handed
+//! back as `key=value` text and read exactly as a link's value would be, and a slider also
+//! hands back every value it passes while it is dragged.
 
 use super::dom::{append, attr, clear, create, typed};
-use crate::share::link::{format_value, leaves};
 use crate::spec::ShellSpec;
-use crate::spec::fields::{Field, Kind, Section, display, fields};
+use crate::spec::fields::{Field, Section, display};
+use crate::work::panel_controls::{self, Shown, choice_text, colour_text, panel_fields};
 use crate::work::session::Edit;
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -15,9 +14,6 @@ use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, Event, HtmlInputElement, HtmlOptionElement, HtmlSelectElement};
-
-/// Fields with a control of their own elsewhere on the page.
-const ELSEWHERE: &[&str] = &["growth.speed"];
 
 /// What the panel calls when a value changes: (key, value as link text, which change).
 pub type OnChange = Rc<dyn Fn(&str, String, Edit)>;
@@ -35,15 +31,6 @@ enum Control {
 
 pub struct Panel {
     controls: Vec<(&'static Field, Control)>,
-}
-
-/// The fields the spec has, in table order.
-fn present(spec: &ShellSpec) -> (Vec<&'static Field>, BTreeMap<String, Value>) {
-    let leaves = leaves(spec);
-    let fields = fields(spec.form.kind())
-        .filter(|f| leaves.contains_key(f.key) && !ELSEWHERE.contains(&f.key))
-        .collect();
-    (fields, leaves)
 }
 
 fn listen(target: &web_sys::EventTarget, kind: &str, f: impl FnMut(Event) + 'static) {
@@ -74,15 +61,6 @@ fn report(
     });
 }
 
-/// Whether a field gets a slider (whole numbers only over a short range).
-fn has_slider(kind: Kind) -> bool {
-    match kind {
-        Kind::Real { .. } => true,
-        Kind::Integer { min, max } => max - min <= 5000,
-        _ => false,
-    }
-}
-
 /// A slider over [lo, hi] with a number field beside it: the number follows the slider while
 /// it moves, every value passed is reported as moving, and either reports its value when set.
 fn slider(
@@ -90,19 +68,14 @@ fn slider(
     id: &str,
     row: &Element,
     on_change: &OnChange,
-    lo: f64,
-    hi: f64,
+    (lo, hi, positions, title): (f64, f64, u64, &str),
 ) -> Control {
     let range: HtmlInputElement = typed("input", "slider");
     range.set_type("range");
     range.set_min("0");
-    range.set_max(&(field.kind.slider_position(hi) as u64).to_string());
-    attr(&range, "aria-label", &label(field));
-    attr(
-        row,
-        "title",
-        &format!("from {} to {}", display(lo), display(hi)),
-    );
+    range.set_max(&positions.to_string());
+    attr(&range, "aria-label", &field.label());
+    attr(row, "title", title);
     let number: HtmlInputElement = typed("input", "number");
     number.set_type("number");
     number.set_id(id);
@@ -128,20 +101,11 @@ fn slider(
     Control::Slider { range, number }
 }
 
-/// A field's name with the paper's symbol before it, where it has one.
-pub(super) fn label(field: &Field) -> String {
-    if field.symbol.is_empty() {
-        field.name.to_string()
-    } else {
-        format!("{} — {}", field.symbol, field.name)
-    }
-}
-
 impl Panel {
     /// Builds the panel for `spec` inside `container`.
     pub fn build(container: &Element, spec: &ShellSpec, on_change: &OnChange) -> Self {
         clear(container);
-        let (fields, leaves) = present(spec);
+        let (fields, leaves) = panel_fields(spec);
         let mut controls = Vec::new();
         let mut group: Option<(Section, Element)> = None;
         for field in fields {
@@ -158,7 +122,7 @@ impl Panel {
             let row = create("div", "field", None);
             attr(&row, "data-key", field.key);
             let id = format!("field-{}", field.key);
-            let name = create("label", "", Some(&label(field)));
+            let name = create("label", "", Some(&field.label()));
             attr(&name, "for", &id);
             let control = Self::control(field, &id, &row, on_change);
             append(&row, &[&name]);
@@ -178,14 +142,14 @@ impl Panel {
     }
 
     fn control(field: &'static Field, id: &str, row: &Element, on_change: &OnChange) -> Control {
-        match field.kind {
-            Kind::Real { min, max, .. } if has_slider(field.kind) => {
-                slider(field, id, row, on_change, min, max)
-            }
-            Kind::Integer { min, max } if has_slider(field.kind) => {
-                slider(field, id, row, on_change, min as f64, max as f64)
-            }
-            Kind::Flag => {
+        match panel_controls::control(field) {
+            panel_controls::Control::Slider {
+                lo,
+                hi,
+                positions,
+                title,
+            } => slider(field, id, row, on_change, (lo, hi, positions, &title)),
+            panel_controls::Control::Check => {
                 let check: HtmlInputElement = typed("input", "check");
                 check.set_type("checkbox");
                 check.set_id(id);
@@ -194,13 +158,13 @@ impl Panel {
                 });
                 Control::Check(check)
             }
-            Kind::Choice(options) => {
+            panel_controls::Control::Choice(options) => {
                 let select: HtmlSelectElement = typed("select", "choice");
                 select.set_id(id);
                 for o in options {
                     let option: HtmlOptionElement = typed("option", "");
                     option.set_value(o);
-                    option.set_text(&o.replace('_', " "));
+                    option.set_text(&choice_text(o));
                     append(&select, &[&option]);
                 }
                 report(&select, field.key, on_change, |e| {
@@ -210,16 +174,16 @@ impl Panel {
                 });
                 Control::Select(select)
             }
-            Kind::Colour => {
+            panel_controls::Control::Colour => {
                 let colour: HtmlInputElement = typed("input", "colour");
                 colour.set_type("color");
                 colour.set_id(id);
                 report(&colour, field.key, on_change, |e| {
-                    input(e).map(|i| i.value().trim_start_matches('#').to_string())
+                    input(e).map(|i| colour_text(&i.value()))
                 });
                 Control::Input(colour)
             }
-            _ => {
+            panel_controls::Control::Text => {
                 let text: HtmlInputElement = typed("input", "text");
                 text.set_type("text");
                 text.set_id(id);
@@ -232,7 +196,7 @@ impl Panel {
 
     /// Whether `spec` has exactly the fields this panel shows (else it must be rebuilt).
     pub fn fits(&self, spec: &ShellSpec) -> bool {
-        let (fields, _) = present(spec);
+        let (fields, _) = panel_fields(spec);
         fields.len() == self.controls.len()
             && fields
                 .iter()
@@ -242,7 +206,7 @@ impl Panel {
 
     /// Shows the values of `spec`.
     pub fn refresh(&self, spec: &ShellSpec) {
-        self.refresh_with(&present(spec).1);
+        self.refresh_with(&panel_fields(spec).1);
     }
 
     fn refresh_with(&self, leaves: &BTreeMap<String, Value>) {
@@ -250,17 +214,21 @@ impl Panel {
             let Some(value) = leaves.get(field.key) else {
                 continue;
             };
-            let text = format_value(value);
-            match control {
-                Control::Slider { range, number } => {
-                    let x = value.as_f64().unwrap_or_default();
-                    range.set_value(&field.kind.slider_position(x).round().to_string());
+            match (control, panel_controls::shown(field, value)) {
+                (
+                    Control::Slider { range, number },
+                    Shown::Slider {
+                        position,
+                        number: text,
+                    },
+                ) => {
+                    range.set_value(&position);
                     number.set_value(&text);
                 }
-                Control::Check(c) => c.set_checked(value.as_bool().unwrap_or_default()),
-                Control::Select(s) => s.set_value(&text),
-                Control::Input(i) if field.kind == Kind::Colour => i.set_value(&format!("#{text}")),
-                Control::Input(i) => i.set_value(&text),
+                (Control::Check(c), Shown::Check(checked)) => c.set_checked(checked),
+                (Control::Select(s), Shown::Text(text)) => s.set_value(&text),
+                (Control::Input(i), Shown::Text(text)) => i.set_value(&text),
+                _ => {}
             }
         }
     }
