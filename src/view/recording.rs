@@ -62,6 +62,22 @@ pub struct RecordingOptions {
     pub turntable_s: u32,
 }
 
+/// The longest turntable offered, seconds.
+const LONGEST_TURNTABLE_S: u32 = 6;
+
+impl RecordingOptions {
+    /// The options as the page's choices read them (size "360", "720" or "1080"; "30" or "60"
+    /// frames a second; seconds of turntable): anything else is read as 720p, 30 frames a
+    /// second and no turntable, and a turntable is at most six seconds.
+    pub fn from_choices(size: &str, fps: &str, turntable_s: &str) -> Self {
+        Self {
+            size: VideoSize::parse(size).unwrap_or(VideoSize::P720),
+            fps: if fps == "60" { 60 } else { 30 },
+            turntable_s: turntable_s.parse().unwrap_or(0).min(LONGEST_TURNTABLE_S),
+        }
+    }
+}
+
 /// One video frame a recording asks of the viewer: the shell grown to `row`, the camera eased
 /// by `dt` seconds of video (not of the clock) and turned by `turn` radians about the vertical,
 /// drawn, and read as the frame shown at `timestamp_us` for `duration_us`.
@@ -244,6 +260,28 @@ impl Progress {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_pages_choices_are_read_with_their_defaults_and_bounds() {
+        let chosen = RecordingOptions::from_choices("1080", "60", "4");
+        assert_eq!(
+            chosen,
+            RecordingOptions {
+                size: VideoSize::P1080,
+                fps: 60,
+                turntable_s: 4
+            }
+        );
+        let odd = RecordingOptions::from_choices("4k", "25", "many");
+        assert_eq!(
+            (odd.size, odd.fps, odd.turntable_s),
+            (VideoSize::P720, 30, 0)
+        );
+        assert_eq!(
+            RecordingOptions::from_choices("360", "30", "60").turntable_s,
+            6
+        );
+    }
 
     fn options(fps: u32, turntable_s: u32) -> RecordingOptions {
         RecordingOptions {

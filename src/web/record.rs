@@ -82,11 +82,11 @@ pub fn options() -> RecordingOptions {
             .map(|s| s.value())
             .unwrap_or_default()
     };
-    RecordingOptions {
-        size: VideoSize::parse(&choice("record-size")).unwrap_or(VideoSize::P720),
-        fps: if choice("record-fps") == "60" { 60 } else { 30 },
-        turntable_s: choice("record-turntable").parse().unwrap_or(0).min(6),
-    }
+    RecordingOptions::from_choices(
+        &choice("record-size"),
+        &choice("record-fps"),
+        &choice("record-turntable"),
+    )
 }
 
 /// What the browser's callbacks hand back while the recording runs.
