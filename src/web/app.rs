@@ -749,16 +749,7 @@ impl App {
         }
         if self.session.in_gallery() {
             self.pictures.work(&mut self.workers.borrow_mut());
-            signal(
-                "pictures",
-                if !self.pictures.draws() {
-                    "none"
-                } else if self.pictures.finished() {
-                    "done"
-                } else {
-                    "drawing"
-                },
-            );
+            signal("pictures", self.pictures.signal());
             return Ok(());
         }
         self.session.address_due(now());

@@ -236,9 +236,8 @@ impl Pictures {
         self.viewer.backend().is_some()
     }
 
-    /// Whether every card's picture is drawn, and the last of them long enough ago that a
-    /// lost device would have been reported.
-    pub fn finished(&self) -> bool {
-        self.queue.finished()
+    /// The page's signal of the gallery's pictures (`data-pictures`).
+    pub fn signal(&self) -> &'static str {
+        self.queue.signal(self.draws())
     }
 }

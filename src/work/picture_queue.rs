@@ -230,6 +230,18 @@ impl PictureQueue {
             && !self.waiting.iter().any(|(w, _)| card(w))
             && !self.lately.iter().any(|(w, _)| card(w))
     }
+
+    /// The page's signal of the gallery's pictures (`data-pictures`): none where nothing is
+    /// drawn in 3D (`draws` false), done once [`Self::finished`], else drawing.
+    pub fn signal(&self, draws: bool) -> &'static str {
+        if !draws {
+            "none"
+        } else if self.finished() {
+            "done"
+        } else {
+            "drawing"
+        }
+    }
 }
 
 #[cfg(test)]
@@ -266,6 +278,9 @@ mod tests {
         queue.ask_cards(&mut pool);
         assert_eq!(pool.waiting(), asked, "asked again when it is shown");
         assert!(!queue.finished());
+        assert_eq!(queue.signal(true), "drawing");
+        assert_eq!(queue.signal(false), "none", "nothing is drawn without 3D");
+        assert_eq!(PictureQueue::default().signal(true), "done");
     }
 
     #[test]
