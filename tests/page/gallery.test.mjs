@@ -120,29 +120,18 @@ test('moving a slider changes the link, and the link gives the same pattern in a
   }
 });
 
-// Each bad link, and words its message must contain.
+// Bad links of each kind the page must survive, and words its message must contain: an
+// unknown key, a preset name that is markup, a seed far too long, a value shown as asked but
+// said, a chamber form and an implicit one repaired. The words of every bad link's message are
+// the native suite's (tests/link.rs, the_pages_message_for_each_bad_link_says_what_is_wrong);
+// here they must reach the page as text, with a shell growing.
 const BAD_LINKS = [
   ['#v=1&preset=turbinate&form.spiral.whorlz=3', 'form.spiral.whorlz: is not a key'],
-  ['#v=1&preset=turbinate&form.spiral.whorls=many', "'many' is not a number"],
-  ['#v=1&preset=turbinate&form.spiral.whorls=1e9', 'used 30'],
-  ['#v=1&preset=oliva-porphyria&pattern.model.d_a=0.9', 'used 0.5'],
-  ['#v=1&preset=turbinate&form.curve.points=1,2', 'not 3'],
-  ['#v=1&preset=turbi', "no preset 'turbi'"],
-  ['#v=1&preset=turbinate&form.spiral.whorls', 'key=value'],
-  ['#v=7&preset=turbinate', 'newer version'],
-  ['#v=1&preset=oliva-porphyria&pattern.cells=2048&growth.rows=20000', 'pattern texture'],
-  ['#v=1&preset=turbinate&form.spiral.whorls=30&form.spiral.subdivisions=16&form.curve.segments=512', 'cap'],
-  ['#v=1&preset=ca-waves&pattern.model.rule=1/6-8', 'not of the form a/b-c/d'],
   ['#v=1&preset=%3Cimg%20src=x%20onerror=alert(1)%3E', 'no preset'],
   [`#v=1&preset=turbinate&seed=${'9'.repeat(20000)}`, 'more than the 16384'],
-  ['#v=1&preset=kawaguchi-shell&form.mouth.protuberances=0,-1.5', 'fold the mouth polygon over itself'],
-  ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=2', 'outside the range 3 to 256'],
-  ['#v=1&preset=kawaguchi-shell&form.chamber.ratio=0', 'outside the range 0.5 to 2'],
-  ['#v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true&form.chamber.ratio=1.001', 'cap of 2000000'],
-  ['#v=1&preset=kawaguchi-shell&form.chambers=2000', 'at most 267 at this ratio'],
   ['#v=1&preset=kawaguchi-ammonite&form.chamber.ratio=1', 'Shown as asked, but: form.chamber.ratio: whorls overlap'],
+  ['#v=1&preset=kawaguchi-shell&form.mouth.protuberances=0,-1.5', 'fold the mouth polygon over itself'],
   ['#v=1&preset=implicit-whorl&form.spiral.lambda=1.01', 'too thin for the grid of 96 voxels'],
-  ['#v=1&preset=kawaguchi-shell&form.chamber.translation.x=0.1&form.chamber.translation.y=0.2&form.chamber.translation.z=0.15', "Read as today's keys: form.chamber.translation"],
 ];
 
 test('bad links each get a specific message and still a working page', async () => {
