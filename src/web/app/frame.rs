@@ -1,0 +1,164 @@
+//! One animation frame of the page: the workers' replies taken in, the viewer's frames and what
+//! they report, the gallery's pictures or the map's and breeding's tiles, the address and the
+//! readout, as the session decides.
+
+use super::App;
+use crate::web::activity;
+use crate::web::clock::now;
+use crate::web::page::{self, set_text, show_message, signal};
+use crate::web::viewer_handle::Taken;
+use crate::work::message::{Reply, Request};
+use crate::work::viewer_message::PoolNews;
+
+impl App {
+    /// One animation frame.
+    pub fn frame(&mut self) -> Result<(), String> {
+        if self.viewer.crashed() {
+            return Ok(());
+        }
+        if self.moving.is_some() {
+            self.take_moved();
+            self.workers.borrow_mut().send();
+            return Ok(());
+        }
+        self.tell_shown();
+        let outcome = self.work_and_draw();
+        // What this frame asked goes out now, to be worked on before the next frame.
+        self.workers.borrow_mut().send();
+        if self.moving.is_none() {
+            self.viewer.tick();
+        }
+        outcome
+    }
+
+    /// What a frame does: takes in the workers' replies, grows, draws.
+    fn work_and_draw(&mut self) -> Result<(), String> {
+        if !self.survive()? {
+            return Ok(());
+        }
+        self.take_replies();
+        let covered = self.covered();
+        self.session.hold(covered, self.recording.is_some());
+        self.apply();
+        let Taken {
+            frames,
+            refused,
+            pool,
+        } = match self.viewer.frames() {
+            Ok(taken) => taken,
+            Err(why) => {
+                self.fall_back(why);
+                return Ok(());
+            }
+        };
+        for (loads, message) in refused {
+            // The refusal of a shell the page has left since is not said.
+            if loads.is_none_or(|l| self.session.is_current(l)) {
+                self.session.refused();
+                page::show_error(&message);
+            }
+        }
+        if let Some(pool) = pool {
+            self.pool_said(pool);
+        }
+        let mut drawn = false;
+        let mut recorded = None;
+        let mut status = None;
+        for frame in frames {
+            let report = frame.report;
+            self.downloads.show(report.file);
+            if let Some(notice) = report.notice {
+                show_message(&notice);
+            }
+            for update in report.planar {
+                if let Some(planar) = &mut self.planar {
+                    planar.apply(update);
+                }
+            }
+            if self.session.is_current(report.loads) {
+                drawn |= report.drawn;
+                status = Some(report.status);
+            }
+            if let Some(frame) = frame.recorded {
+                recorded = Some(frame);
+            }
+        }
+        if self.recording.is_some() {
+            self.record_frame(recorded);
+            return Ok(());
+        }
+        if self.session.in_gallery() {
+            self.pictures.work(&mut self.workers.borrow_mut());
+            signal("pictures", self.pictures.signal());
+            return Ok(());
+        }
+        self.session.address_due(now());
+        self.apply();
+        if covered {
+            if let Some(tile) = self.pictures.work(&mut self.workers.borrow_mut()) {
+                self.map.shown(tile, Ok(()));
+                self.breed.shown(tile, Ok(()));
+            }
+            activity::set("drawing the parameter map or the offspring".to_string());
+            return Ok(());
+        }
+        let Some(status) = status else {
+            // A viewer in a worker sent no frame since the page's last.
+            return Ok(());
+        };
+        self.session.viewed(status, drawn, now());
+        self.apply();
+        Ok(())
+    }
+
+    /// Takes in what the workers sent back: the shell's growth and pieces go to the viewer,
+    /// gallery shells to the pictures; a worker replaced with the shell's session has it grown
+    /// again where the page's copy stands once the replies it sent before are in.
+    fn take_replies(&mut self) {
+        let polled = self.workers.borrow_mut().poll();
+        if let Some(replaced) = &polled.replaced {
+            self.deaths.0 = replaced.deaths;
+            signal(
+                "workerDeaths",
+                &(self.deaths.0 + self.deaths.1 as usize).to_string(),
+            );
+            if let Some(words) = replaced.words() {
+                set_text("workers-status", &words);
+            }
+        }
+        let mut shell = Vec::new();
+        for (request, reply) in polled.replies {
+            match (request, reply) {
+                (Request::Whole { job, .. }, Reply::Grown { result, .. }) => {
+                    if let Some((tile, why)) = self.pictures.take(job, result) {
+                        self.map.shown(tile, Err(why.clone()));
+                        self.breed.shown(tile, Err(why));
+                    }
+                }
+                (_, Reply::Tiled { job, result }) => self.map.take(job, result),
+                answered => shell.push(answered),
+            }
+        }
+        if let Err(message) = self.viewer.take_all(shell, polled.sessions_lost) {
+            self.session.refused();
+            page::show_error(&message);
+        }
+    }
+
+    /// What the drawing worker's pool says of itself: how many workers (its status line) and
+    /// how many were replaced.
+    fn pool_said(&mut self, pool: PoolNews) {
+        if pool.deaths == 0 {
+            set_text("workers-status", &pool.status);
+            return;
+        }
+        self.deaths.1 = pool.deaths;
+        signal(
+            "workerDeaths",
+            &(self.deaths.0 + self.deaths.1 as usize).to_string(),
+        );
+        if let Some(words) = pool.words {
+            set_text("workers-status", &words);
+        }
+    }
+}

@@ -1,0 +1,97 @@
+//! What the page shows around the viewer, as the app applies it: which backend draws and
+//! where, the message line, the speed box, the presentation (the interface, one view or
+//! Kawaguchi's four with their names), the canvas held at a recording's size.
+
+use crate::share::presentation::{Layout, Presentation};
+use crate::view::panes::arrangement;
+use crate::web::dom;
+use crate::web::page::{self, element, set_text, show_message, signal};
+use crate::web::share_panel;
+use crate::web::viewer_handle::ViewerHandle;
+use crate::work::status_readout::Say;
+use wasm_bindgen::JsCast;
+use web_sys::HtmlInputElement;
+
+/// Shows which backend the main view is drawn with (none: no 3D).
+pub(super) fn show_backend(backend: Option<String>) {
+    if let Some(backend) = backend {
+        signal("backend", &backend);
+        set_text("backend", &format!("Drawn with {backend}"));
+    }
+}
+
+/// Signals where the main view is drawn (`data-drawn-in`): in the drawing worker, on the
+/// page's thread, or nowhere.
+pub(super) fn show_drawn_in(viewer: &ViewerHandle) {
+    let place = match (viewer.in_worker(), viewer.backend()) {
+        (true, _) => "worker",
+        (false, Some(_)) => "page",
+        (false, None) => "nowhere",
+    };
+    signal("drawnIn", place);
+}
+
+/// Shows or hides the message line as the session said.
+pub(super) fn say(say: Say) {
+    match say {
+        Say::Nothing => {}
+        Say::Show(words) => show_message(&words),
+        Say::Hide => page::hide_message(),
+    }
+}
+
+/// The speed box shows `speed` rows per frame.
+pub(super) fn show_speed(speed: f64) {
+    if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
+        input.set_value(&crate::spec::fields::display(speed));
+    }
+}
+
+/// Shows the shell as `presentation` asks: the interface, one view, or Kawaguchi's four with
+/// each pane named over the canvas.
+pub(super) fn present(presentation: Presentation) {
+    share_panel::apply_ui(presentation.ui);
+    let layout = presentation.layout;
+    if let Some(button) = element("views") {
+        let pressed = if layout == Layout::Four {
+            "true"
+        } else {
+            "false"
+        };
+        dom::attr(&button, "aria-pressed", pressed);
+    }
+    if let Some(viewer) = element("viewer") {
+        let _ = viewer
+            .class_list()
+            .toggle_with_force("four", layout == Layout::Four);
+    }
+    if let Some(labels) = element("panes") {
+        dom::clear(&labels);
+        labels.set_hidden(layout == Layout::Single);
+        for place in arrangement(layout) {
+            let label = dom::create("span", "pane", Some(place.name));
+            let style = label.style();
+            for (property, fraction) in ["left", "top", "width", "height"]
+                .into_iter()
+                .zip(place.viewport)
+            {
+                let _ = style.set_property(property, &format!("{}%", fraction * 100.0));
+            }
+            dom::append(&labels, &[&label]);
+        }
+    }
+}
+
+/// Marks the main canvas as drawn at a recording's size, which the page shows scaled to fit
+/// (or, with `false`, at its own size again).
+pub(super) fn fix_canvas(fixed: bool) {
+    if let Some(canvas) = element("shell") {
+        let _ = canvas.class_list().toggle_with_force("fixed", fixed);
+    }
+}
+
+pub(super) fn location_hash() -> String {
+    web_sys::window()
+        .and_then(|w| w.location().hash().ok())
+        .unwrap_or_default()
+}
