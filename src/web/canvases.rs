@@ -4,6 +4,7 @@
 //! thread; a fresh copy of an element that cannot be drawn on again; what a canvas shows, read
 //! back as a PNG.
 
+use super::page;
 use super::scope;
 use crate::render::Canvas;
 use wasm_bindgen::JsCast;
@@ -102,4 +103,12 @@ pub async fn object_url(blob: js_sys::Promise) -> Result<String, String> {
         .ok_or("the browser could not read the canvas")?;
     web_sys::Url::create_object_url_with_blob(&blob)
         .map_err(|_| "the browser refused the picture's address".to_string())
+}
+
+/// The canvas element of id `id`, or why the page has none.
+pub fn canvas(id: &str) -> Result<HtmlCanvasElement, String> {
+    page::element(id)
+        .ok_or_else(|| format!("the page has no #{id}"))?
+        .dyn_into()
+        .map_err(|_| format!("#{id} is not a canvas"))
 }

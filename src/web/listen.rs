@@ -2,11 +2,13 @@
 //! reset; again on a fresh canvas that took its place), every control, and the keyboard, whose
 //! rules are the core's (`work::shortcuts`). Each hands what happened to the app.
 
+use super::canvases::canvas;
 use super::page;
-use super::{Shared, canvas, record};
+use super::record;
 use crate::export::Download;
-use crate::web::app::App;
+use crate::web::app::{App, Shared};
 use crate::web::dom;
+use crate::work::recording::Support;
 use crate::work::shortcuts::{self, Press, Shortcut, Target};
 use crate::work::viewer_command::{PointerChange, ViewCommand};
 use std::rc::Rc;
@@ -115,7 +117,7 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
     on_click("copy-embed", app, App::copy_embed)?;
     if let Some(button) = page::element("record") {
         let shared = Rc::clone(app);
-        let closure = Closure::<dyn FnMut()>::new(move || record(&shared));
+        let closure = Closure::<dyn FnMut()>::new(move || record_pressed(&shared));
         button.add_event_listener_with_callback("click", closure.as_ref().unchecked_ref())?;
         closure.forget();
     }
@@ -218,4 +220,32 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
         e.prevent_default();
     })?;
     Ok(())
+}
+
+/// Record: records the growth; the first time, asks the browser what it can record video
+/// with, shows the answer, and records once it has one.
+/// (After a panic the app stays borrowed, and the click does nothing.)
+fn record_pressed(app: &Shared) {
+    let Ok(mut held) = app.try_borrow_mut() else {
+        return;
+    };
+    let support = held.support();
+    if *support.borrow() != Support::Unasked {
+        held.record();
+        return;
+    }
+    *support.borrow_mut() = Support::Checking;
+    held.show_support();
+    drop(held);
+    let app = Rc::downgrade(app);
+    wasm_bindgen_futures::spawn_local(async move {
+        let found = record::probe().await;
+        *support.borrow_mut() = found;
+        if let Some(app) = app.upgrade()
+            && let Ok(mut app) = app.try_borrow_mut()
+        {
+            app.show_support();
+            app.record();
+        }
+    });
 }

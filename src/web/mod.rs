@@ -29,8 +29,7 @@ mod worker_host;
 mod workers;
 
 use crate::render::Canvas;
-use crate::work::recording::Support;
-use app::App;
+use app::{App, Shared};
 use std::cell::RefCell;
 use std::rc::Rc;
 use viewer::Viewer;
@@ -67,15 +66,6 @@ pub fn preset_pattern(id: &str) -> Option<String> {
     crate::presets::preset(id).and_then(|p| serde_json::to_string(&p.spec.pattern).ok())
 }
 
-type Shared = Rc<RefCell<App>>;
-
-fn canvas(id: &str) -> Result<HtmlCanvasElement, String> {
-    page::element(id)
-        .ok_or_else(|| format!("the page has no #{id}"))?
-        .dyn_into()
-        .map_err(|_| format!("#{id} is not a canvas"))
-}
-
 /// Builds the gallery, sets up both renderers and shows what the link asks for.
 #[wasm_bindgen]
 pub async fn start() -> Result<(), JsValue> {
@@ -89,7 +79,10 @@ pub async fn start() -> Result<(), JsValue> {
     page::set_text("workers-status", workers.status());
     let workers = Rc::new(RefCell::new(workers));
     let shared = || Rc::clone(&workers);
-    let (shell, pictures) = match (canvas("shell"), canvas("picture-canvas")) {
+    let (shell, pictures) = match (
+        canvases::canvas("shell"),
+        canvases::canvas("picture-canvas"),
+    ) {
         (Ok(shell), Ok(pictures)) => (shell, pictures),
         (Err(e), _) | (_, Err(e)) => {
             page::show_error(&format!("The page is incomplete: {e}."));
@@ -187,34 +180,6 @@ async fn main_viewer(
         page::set_text("workers-status", &note);
     }
     Ok(ViewerHandle::Here(Box::new(viewer)))
-}
-
-/// Record: records the growth; the first time, asks the browser what it can record video
-/// with, shows the answer, and records once it has one.
-/// (After a panic the app stays borrowed, and the click does nothing.)
-fn record(app: &Shared) {
-    let Ok(mut held) = app.try_borrow_mut() else {
-        return;
-    };
-    let support = held.support();
-    if *support.borrow() != Support::Unasked {
-        held.record();
-        return;
-    }
-    *support.borrow_mut() = Support::Checking;
-    held.show_support();
-    drop(held);
-    let app = Rc::downgrade(app);
-    wasm_bindgen_futures::spawn_local(async move {
-        let found = record::probe().await;
-        *support.borrow_mut() = found;
-        if let Some(app) = app.upgrade()
-            && let Ok(mut app) = app.try_borrow_mut()
-        {
-            app.show_support();
-            app.record();
-        }
-    });
 }
 
 fn signal_loading() {

@@ -52,6 +52,9 @@ use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlCanvasElement, HtmlProgressElement};
 
+/// The app, shared by the frame loop and the page's listeners.
+pub type Shared = Rc<RefCell<App>>;
+
 pub struct App {
     viewer: ViewerHandle,
     /// What the page shows and every decision about it (see [`Session`]): this only applies
