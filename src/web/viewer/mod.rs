@@ -11,97 +11,31 @@
 //! shell all the same, for its pattern and its files; and one whose frames the GPU stops
 //! finishing says so, for the page to move it where it can draw.
 
+mod drawing;
+mod output;
+
+use drawing::{Drawing, load_into, look, upload};
+
 use super::activity;
-use super::canvases::{lose_context, object_url, png};
+use super::canvases::lose_context;
 use super::clock::now;
 use super::debug::{self, Loss};
 use super::recovery::{Attempt, Reopened, attempt};
-use super::webcodecs::{self, VideoFrame};
+use super::webcodecs::VideoFrame;
 use super::workers::Workers;
-use crate::generator::{Advance, GROWTH_BUDGET_MS};
-use crate::pattern::texture_layout::TextureLayout;
+use crate::generator::GROWTH_BUDGET_MS;
 use crate::presets::Preset;
-use crate::render::{Canvas, Renderer, ShellLook};
-use crate::share::presentation::Layout;
+use crate::render::{Canvas, Renderer};
 use crate::spec::ShellSpec;
-use crate::view::draw_pacing::{DrawPacing, FrameDraw, GpuWatch};
-use crate::view::recording::FrameAsk;
+use crate::view::draw_pacing::{DrawPacing, FrameDraw};
 use crate::work::device_survival::{Loss as DeviceLoss, Open, Survival};
-use crate::work::file_writer::{FileStage, FileWriter, Needs};
+use crate::work::file_writer::FileWriter;
 use crate::work::message::{Reply, Request, WholeShell};
 use crate::work::viewer_command::ViewCommand;
-use crate::work::viewer_state::{Growing, ScreenChange, ViewerState};
+use crate::work::viewer_state::{ScreenChange, ViewerState};
 use crate::work::viewer_status::{Device, FrameReport};
 use std::cell::RefCell;
 use std::rc::Rc;
-
-/// How `growing`'s spec draws its shell.
-fn look(growing: &Growing) -> Option<ShellLook> {
-    let spec = growing.spec();
-    let shell = growing.replica().shell()?;
-    Some(ShellLook::new(
-        &spec.colours,
-        &spec.material,
-        crate::forms::rows_per_whorl(spec),
-        shell.line_grid,
-    ))
-}
-
-/// Sets `renderer` up for `growing`'s shell as its worker built it: buffers, pattern texture
-/// and look. A renderer opened again after a lost device is set up the same way.
-fn load_into(renderer: &mut Renderer, growing: &Growing) {
-    let (Some(shell), Some(look)) = (growing.replica().shell(), look(growing)) else {
-        return;
-    };
-    renderer.load_shell(
-        shell.capacity,
-        growing
-            .pattern_size()
-            .and_then(|(cells, rows)| TextureLayout::new(cells, rows)),
-        look,
-    );
-}
-
-/// Uploads what `advance` added to `growing`'s shell; returns the bytes uploaded.
-fn upload(renderer: &mut Renderer, growing: &Growing, advance: &Advance) -> usize {
-    let replica = growing.replica();
-    let row = replica.cells() * 4;
-    let rgba = &replica.rgba()[advance.rows.start * row..advance.rows.end * row];
-    renderer.set_ground(replica.grown());
-    renderer.upload(replica.mesh(), replica.edge().mesh(), advance, rgba)
-}
-
-/// A renderer and the canvas it draws on.
-struct Drawing {
-    renderer: Renderer,
-    /// An element of the page, or an offscreen canvas one handed its drawing to.
-    canvas: Canvas,
-    /// Whether the frames handed to the GPU reach the screen.
-    watch: GpuWatch,
-}
-
-impl Drawing {
-    fn new(renderer: Renderer, canvas: Canvas) -> Self {
-        Self {
-            renderer,
-            canvas,
-            watch: GpuWatch::default(),
-        }
-    }
-
-    /// Draws the panes of `layout` of `growing`'s shell.
-    fn draw(&mut self, growing: &Growing, layout: Layout) -> Result<(), String> {
-        let panes = growing.panes(layout, self.renderer.aspect());
-        self.renderer.draw(&panes)
-    }
-
-    /// Why the screen shows nothing more of what is drawn, if frames have waited too long.
-    fn unseen(&mut self) -> Option<String> {
-        let (finished, unfinished) = self.renderer.frames();
-        self.watch
-            .check(finished, unfinished, now(), self.renderer.backend())
-    }
-}
 
 /// Why a viewer that draws nothing gives no picture.
 const NO_DRAWING: &str = "this browser draws no 3D here";
@@ -443,96 +377,5 @@ impl Viewer {
         }
         self.state.drawn();
         Ok(true)
-    }
-
-    /// [`Self::picture`], drawn on a canvas of `pixels` × `pixels`, `multisampled` or with one
-    /// sample a pixel (a viewer of pictures only, whose canvas is not laid out on the page).
-    pub fn picture_at(
-        &mut self,
-        pixels: u32,
-        multisampled: bool,
-    ) -> Result<js_sys::Promise, String> {
-        if let Some(d) = &mut self.drawing {
-            if d.canvas.size() != (pixels, pixels) {
-                d.canvas.set_size((pixels, pixels));
-                d.renderer.resize(pixels, pixels);
-            }
-            d.renderer.multisample(multisampled);
-        }
-        self.picture()
-    }
-
-    /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
-    /// browser clears the drawing).
-    pub fn picture(&mut self) -> Result<js_sys::Promise, String> {
-        let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
-        if let Some(loss) = d.renderer.lost() {
-            return Err(format!("the graphics device was lost ({})", loss.reason));
-        }
-        let Some(g) = self.state.shell() else {
-            return Err("nothing is drawn yet".into());
-        };
-        d.draw(g, self.state.layout())?;
-        png(&d.canvas)
-    }
-
-    /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the
-    /// next frames ([`Self::work_file`]); an implicit shell still growing is finished first.
-    fn write_file(
-        &mut self,
-        what: crate::export::Download,
-        size: crate::export::print_size::PrintSize,
-    ) {
-        if self.writer.busy() {
-            return;
-        }
-        let source = self.state.shell().map(Growing::source);
-        match self.writer.start(what, size, source) {
-            Needs::Nothing => {}
-            Needs::Finish => {
-                {
-                    let mut workers = self.workers.borrow_mut();
-                    self.state.finish(workers.pool());
-                }
-                self.apply_screen();
-            }
-            Needs::Picture => {
-                let slot = Rc::clone(&self.picture_read);
-                let read = self.picture();
-                wasm_bindgen_futures::spawn_local(async move {
-                    let url = match read {
-                        Ok(blob) => object_url(blob).await,
-                        Err(e) => Err(e),
-                    };
-                    *slot.borrow_mut() = Some(url);
-                });
-            }
-        }
-    }
-
-    /// Works on the file asked for by [`Self::write_file`] for a frame's budget: where it
-    /// stands, or `None` when none is asked for.
-    fn work_file(&mut self) -> Option<FileStage> {
-        if let Some(read) = self.picture_read.borrow_mut().take() {
-            self.writer.picture_taken(read);
-        }
-        self.writer
-            .work(self.state.shell().map(Growing::source), &now)
-    }
-
-    /// Draws the frame `ask` asks for (the core state posed the camera for it) and reads it
-    /// as a video frame.
-    fn draw_recorded(&mut self, ask: &FrameAsk) -> Result<VideoFrame, String> {
-        self.fit_canvas();
-        let g = self.state.shell().ok_or("no shell is loaded")?;
-        let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
-        d.draw(g, self.state.layout())?;
-        self.state.recorded(now());
-        let init = webcodecs::object(&[
-            ("timestamp", (ask.timestamp_us as f64).into()),
-            ("duration", (ask.duration_us as f64).into()),
-        ]);
-        VideoFrame::new(d.canvas.as_js(), &init)
-            .map_err(|e| format!("the canvas could not be read ({})", webcodecs::describe(&e)))
     }
 }
