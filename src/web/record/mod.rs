@@ -8,13 +8,15 @@
 //! follows the clock, so a slow machine gives an uneven one. A cancelled or interrupted
 //! recording drops everything it collected.
 
+mod sink;
+
+use sink::{Collected, Sink, codec_sink, stream_sink};
+
 use super::clock::now;
 use super::download;
-use super::page::{self, element, set_text, signal};
-use super::webcodecs::{
-    self, CanvasCaptureTrack, Context2d, EncodedVideoChunk, VideoEncoder, VideoFrame, describe,
-};
-use crate::export::webm::{VideoCodec, WebmWriter};
+use super::page::{element, set_text, signal};
+use super::webcodecs::{self, VideoEncoder, VideoFrame, describe};
+use crate::export::webm::VideoCodec;
 use crate::view::recording::{
     FrameAsk, Pace, Progress, RecordingOptions, RecordingPlan, VideoSize,
 };
@@ -22,12 +24,9 @@ use crate::work::recording::{self, Support};
 use std::cell::RefCell;
 use std::rc::Rc;
 use wasm_bindgen::JsCast;
-use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
-use web_sys::{HtmlCanvasElement, HtmlProgressElement, HtmlSelectElement};
+use web_sys::{HtmlProgressElement, HtmlSelectElement};
 
-/// Milliseconds of video in each piece `MediaRecorder` hands over.
-const RECORDER_SLICE_MS: i32 = 1000;
 /// What `MediaRecorder` may write, in order of preference.
 const RECORDER_TYPES: [&str; 4] = [
     "video/webm;codecs=vp9",
@@ -89,34 +88,6 @@ pub fn options() -> RecordingOptions {
     )
 }
 
-/// What the browser's callbacks hand back while the recording runs.
-#[derive(Default)]
-struct Collected {
-    muxer: Option<WebmWriter>,
-    pieces: Vec<web_sys::Blob>,
-    error: Option<String>,
-    /// The encoder has flushed, or the recorder stopped: the file can be made.
-    finished: bool,
-}
-
-/// Where the frames go.
-enum Sink {
-    Codec {
-        encoder: VideoEncoder,
-        _output: Closure<dyn FnMut(EncodedVideoChunk, JsValue)>,
-        _error: Closure<dyn FnMut(JsValue)>,
-    },
-    /// `MediaRecorder` records a canvas of the page's own, on which each frame is drawn.
-    Stream {
-        recorder: web_sys::MediaRecorder,
-        canvas: Context2d,
-        track: CanvasCaptureTrack,
-        mime: String,
-        _data: Closure<dyn FnMut(web_sys::BlobEvent)>,
-        _stop: Closure<dyn FnMut()>,
-    },
-}
-
 /// How a step of the recording went.
 pub enum Step {
     Working,
@@ -135,123 +106,6 @@ pub struct Recording {
     progress: Progress,
     /// When it started, for `MediaRecorder`'s real-time pace.
     started: f64,
-}
-
-fn codec_sink(
-    plan: &RecordingPlan,
-    codec: VideoCodec,
-    collected: &Rc<RefCell<Collected>>,
-) -> Result<Sink, String> {
-    collected.borrow_mut().muxer = Some(WebmWriter::new(codec, plan.width, plan.height, plan.fps));
-    let into = Rc::clone(collected);
-    let output = Closure::new(move |chunk: EncodedVideoChunk, metadata: JsValue| {
-        let bytes = js_sys::Uint8Array::new_with_length(chunk.byte_length());
-        chunk.copy_to(&bytes);
-        let mut collected = into.borrow_mut();
-        let collected = &mut *collected;
-        let Some(muxer) = &mut collected.muxer else {
-            return;
-        };
-        let description = js_sys::Reflect::get(&metadata, &"decoderConfig".into())
-            .and_then(|c| js_sys::Reflect::get(&c, &"description".into()));
-        if let Some(d) = description.ok().filter(|d| !d.is_undefined()) {
-            muxer.set_codec_private(&js_sys::Uint8Array::new(&d).to_vec());
-        }
-        let pushed = muxer.push(
-            &bytes.to_vec(),
-            chunk.timestamp().max(0.0) as u64,
-            chunk.kind() == "key",
-        );
-        if let Err(e) = pushed {
-            collected
-                .error
-                .get_or_insert(format!("the muxer refused a frame ({e})"));
-        }
-    });
-    let errors = Rc::clone(collected);
-    let error = Closure::new(move |e: JsValue| {
-        errors
-            .borrow_mut()
-            .error
-            .get_or_insert(format!("the video encoder failed ({})", describe(&e)));
-    });
-    let init = webcodecs::object(&[
-        ("output", output.as_ref().clone()),
-        ("error", error.as_ref().clone()),
-    ]);
-    let encoder = VideoEncoder::new(&init)
-        .map_err(|e| format!("the video encoder could not be made ({})", describe(&e)))?;
-    let config = webcodecs::object(&[
-        ("codec", codec.codec_string().into()),
-        ("width", plan.width.into()),
-        ("height", plan.height.into()),
-        ("bitrate", plan.bitrate().into()),
-        ("framerate", plan.fps.into()),
-    ]);
-    encoder
-        .configure(&config)
-        .map_err(|e| format!("the video encoder refused its settings ({})", describe(&e)))?;
-    Ok(Sink::Codec {
-        encoder,
-        _output: output,
-        _error: error,
-    })
-}
-
-fn stream_sink(
-    plan: &RecordingPlan,
-    mime: &str,
-    collected: &Rc<RefCell<Collected>>,
-) -> Result<Sink, String> {
-    let canvas: HtmlCanvasElement = page::document()
-        .create_element("canvas")
-        .ok()
-        .and_then(|e| e.dyn_into().ok())
-        .ok_or("the page could not make a canvas to record")?;
-    canvas.set_width(plan.width);
-    canvas.set_height(plan.height);
-    let context: Context2d = canvas
-        .get_context("2d")
-        .ok()
-        .flatten()
-        .ok_or("the canvas to record has no 2D drawing")?
-        .unchecked_into();
-    let stream = canvas
-        .capture_stream_with_frame_request_rate(0.0)
-        .map_err(|e| format!("the canvas cannot be captured ({})", describe(&e)))?;
-    let track: CanvasCaptureTrack = stream
-        .get_video_tracks()
-        .get(0)
-        .dyn_into::<web_sys::MediaStreamTrack>()
-        .map_err(|_| "the canvas's stream has no video".to_string())?
-        .unchecked_into();
-    let options = web_sys::MediaRecorderOptions::new();
-    options.set_mime_type(mime);
-    options.set_video_bits_per_second(plan.bitrate());
-    let recorder =
-        web_sys::MediaRecorder::new_with_media_stream_and_media_recorder_options(&stream, &options)
-            .map_err(|e| format!("MediaRecorder could not start ({})", describe(&e)))?;
-    let into = Rc::clone(collected);
-    let data = Closure::new(move |e: web_sys::BlobEvent| {
-        if let Some(blob) = e.data().filter(|b| b.size() > 0.0) {
-            into.borrow_mut().pieces.push(blob);
-        }
-    });
-    let done = Rc::clone(collected);
-    let stop = Closure::new(move || done.borrow_mut().finished = true);
-    recorder.set_ondataavailable(Some(data.as_ref().unchecked_ref()));
-    recorder.set_onstop(Some(stop.as_ref().unchecked_ref()));
-    recorder
-        .start_with_time_slice(RECORDER_SLICE_MS)
-        .map_err(|e| format!("MediaRecorder could not start ({})", describe(&e)))?;
-    Ok(Sink::Stream {
-        recorder,
-        canvas: context,
-        track,
-        mime: mime.to_string(),
-        _data: data,
-        _stop: stop,
-    })
 }
 
 impl Recording {
