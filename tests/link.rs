@@ -8,9 +8,9 @@ use seashells_core::presets::{DEFAULT_PRESET, preset, presets};
 use seashells_core::share::link::{MAX_LINK, decode, encode, flatten};
 use seashells_core::share::presentation::{Presentation, Ui};
 use seashells_core::share::repair::repair;
-use seashells_core::spec::{Problem, ShellSpec};
 use seashells_core::spec::fields::{FORM_KINDS, Field, Kind, Section, field, fields};
 use seashells_core::spec::material::Drawing;
+use seashells_core::spec::{Problem, ShellSpec};
 use serde_json::Value;
 
 /// A random valid spec: a preset with some fields set to random values in their ranges.
@@ -395,10 +395,19 @@ fn a_shell_grows_like_another_that_differs_in_its_material_alone() {
 /// and checks that the message is shown as text, the shell still grows, and nothing of the
 /// link became HTML.
 const PAGE_BAD_LINKS: &[(&str, &str)] = &[
-    ("v=1&preset=turbinate&form.spiral.whorlz=3", "form.spiral.whorlz: is not a key"),
-    ("v=1&preset=turbinate&form.spiral.whorls=many", "'many' is not a number"),
+    (
+        "v=1&preset=turbinate&form.spiral.whorlz=3",
+        "form.spiral.whorlz: is not a key",
+    ),
+    (
+        "v=1&preset=turbinate&form.spiral.whorls=many",
+        "'many' is not a number",
+    ),
     ("v=1&preset=turbinate&form.spiral.whorls=1e9", "used 30"),
-    ("v=1&preset=oliva-porphyria&pattern.model.d_a=0.9", "used 0.5"),
+    (
+        "v=1&preset=oliva-porphyria&pattern.model.d_a=0.9",
+        "used 0.5",
+    ),
     ("v=1&preset=turbinate&form.curve.points=1,2", "not 3"),
     ("v=1&preset=turbi", "no preset 'turbi'"),
     ("v=1&preset=turbinate&form.spiral.whorls", "key=value"),
@@ -411,24 +420,42 @@ const PAGE_BAD_LINKS: &[(&str, &str)] = &[
         "v=1&preset=turbinate&form.spiral.whorls=30&form.spiral.subdivisions=16&form.curve.segments=512",
         "cap",
     ),
-    ("v=1&preset=ca-waves&pattern.model.rule=1/6-8", "not of the form a/b-c/d"),
-    ("v=1&preset=%3Cimg%20src=x%20onerror=alert(1)%3E", "no preset"),
+    (
+        "v=1&preset=ca-waves&pattern.model.rule=1/6-8",
+        "not of the form a/b-c/d",
+    ),
+    (
+        "v=1&preset=%3Cimg%20src=x%20onerror=alert(1)%3E",
+        "no preset",
+    ),
     (
         "v=1&preset=kawaguchi-shell&form.mouth.protuberances=0,-1.5",
         "fold the mouth polygon over itself",
     ),
-    ("v=1&preset=kawaguchi-shell&form.mouth.apexes=2", "outside the range 3 to 256"),
-    ("v=1&preset=kawaguchi-shell&form.chamber.ratio=0", "outside the range 0.5 to 2"),
+    (
+        "v=1&preset=kawaguchi-shell&form.mouth.apexes=2",
+        "outside the range 3 to 256",
+    ),
+    (
+        "v=1&preset=kawaguchi-shell&form.chamber.ratio=0",
+        "outside the range 0.5 to 2",
+    ),
     (
         "v=1&preset=kawaguchi-shell&form.mouth.apexes=256&form.chambers=2000&form.septa=true&form.chamber.ratio=1.001",
         "cap of 2000000",
     ),
-    ("v=1&preset=kawaguchi-shell&form.chambers=2000", "at most 267 at this ratio"),
+    (
+        "v=1&preset=kawaguchi-shell&form.chambers=2000",
+        "at most 267 at this ratio",
+    ),
     (
         "v=1&preset=kawaguchi-ammonite&form.chamber.ratio=1",
         "Shown as asked, but: form.chamber.ratio: whorls overlap",
     ),
-    ("v=1&preset=implicit-whorl&form.spiral.lambda=1.01", "too thin for the grid of 96 voxels"),
+    (
+        "v=1&preset=implicit-whorl&form.spiral.lambda=1.01",
+        "too thin for the grid of 96 voxels",
+    ),
     (
         "v=1&preset=kawaguchi-shell&form.chamber.translation.x=0.1&form.chamber.translation.y=0.2&form.chamber.translation.z=0.15",
         "Read as today's keys: form.chamber.translation",

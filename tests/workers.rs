@@ -622,10 +622,13 @@ fn growth_taken_in_from_several_replies_hands_the_renderer_only_what_the_copy_ho
 }
 
 /// Where drawing holds the thread (WebGL on the page's thread of WebKit, a software
-/// rasterizer), a frame's drawing takes most of the time between frames: the camera still
-/// eases by the wall time between frames and comes to rest on the grown shell within a few
-/// frames, as at 60 frames a second, not after hundreds (it once counted only the time after
-/// the drawing, and a finished top shell waited 50 s on WebKit to be said grown).
+/// rasterizer), a frame's drawing takes most of the time between frames. Driven as the viewer
+/// drives it (`ViewerState::frame` at each frame's start, `drawn` once the drawing ends), the
+/// camera eases by the time from one frame's start to the next, the drawing included, and comes
+/// to rest on the grown shell within a few frames. It once counted only the time after each
+/// drawing (the clock moved when a frame was drawn, as `ViewerState::recorded` still moves it
+/// for a recording's frames): 42 frames here, and a finished top shell waited 50 s on WebKit to
+/// be said grown.
 #[test]
 fn a_drawing_that_holds_the_thread_does_not_slow_the_camera() {
     const FRAME_MS: f64 = 350.0;

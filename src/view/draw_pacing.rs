@@ -53,7 +53,7 @@ impl DrawPacing {
 /// How long frames may wait for the GPU without one of them finished before the viewer says
 /// the screen shows none of them, milliseconds (a frame takes well under a second, even on a
 /// software rasterizer).
-pub const UNSEEN_MS: f64 = 10_000.0;
+const UNSEEN_MS: f64 = 10_000.0;
 
 /// Watches that the frames handed to the GPU reach the screen: while some wait, how many it
 /// had finished when it last finished one, and when. A device that opened and finishes none of

@@ -21,7 +21,7 @@ use crate::view::draw_pacing::HEAVY_BYTES;
 use crate::work::host::{Budget, Host};
 use crate::work::message::{Request, decode_reply, encode_request};
 use crate::work::pool::{
-    Faults, Polled, Pool, PoolPlan, Replaced, SESSIONS, WorkerEvent, local_status,
+    Faults, Polled, Pool, PoolPlan, Replaced, SESSIONS, WorkerEvent, given_up_status, local_status,
 };
 use js_sys::{Array, Uint8Array};
 use std::cell::RefCell;
@@ -267,10 +267,7 @@ impl Workers {
     fn run_here(&mut self, polled: &mut Polled, why: String) {
         self.backend = Backend::Local(Box::default());
         self.worker_growth_ms = self.budget_ms;
-        self.status = local_status(
-            scope::thread_name(),
-            &format!("workers could not run here (each stopped before answering: {why})"),
-        );
+        self.status = given_up_status(scope::thread_name(), &why);
         polled.replaced = Some(Replaced {
             deaths: self.pool.deaths(),
             why,

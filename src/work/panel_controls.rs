@@ -134,8 +134,8 @@ mod tests {
         let Control::Slider { lo, hi, title, .. } = control(d_a) else {
             panic!("a real number gets a slider");
         };
-        assert!(lo < hi);
-        assert_eq!(title, format!("from {} to {}", display(lo), display(hi)));
+        assert_eq!((lo, hi), (0.0, 0.5), "the table's range");
+        assert_eq!(title, "from 0 to 0.5");
         let Shown::Slider { number, position } = shown(d_a, &Value::from(0.15)) else {
             panic!("a slider shows a position and a number");
         };

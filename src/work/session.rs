@@ -2,7 +2,7 @@
 //! page. Events come in as calls (a link followed, a value edited or dragged, play, step,
 //! finish, restart, the speed, one view or four, a frame with what the viewer said of itself,
 //! the graphics device as the viewer found it); what the page is to do comes out as
-//! [`Effect`]s, in order, which `web/app.rs` applies to the DOM, the viewer, the panel, the
+//! [`Effect`]s, in order, which `web/app/` applies to the DOM, the viewer, the panel, the
 //! gallery, the map, breeding and the recorder, deciding nothing itself. The simulator
 //! (`tests/simulator.rs`) drives this same session with the viewer's core state behind it.
 

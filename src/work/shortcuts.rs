@@ -141,6 +141,7 @@ mod tests {
         assert_eq!(on_page("r"), Some(Shortcut::Restart));
         assert_eq!(on_page("s"), Some(Shortcut::Step));
         assert_eq!(on_page("ArrowRight"), Some(Shortcut::Step));
+        assert_eq!(on_page("e"), Some(Shortcut::Finish));
         assert_eq!(on_page("End"), Some(Shortcut::Finish));
         assert_eq!(on_page("c"), Some(Shortcut::ResetCamera));
         assert_eq!(on_page("v"), Some(Shortcut::ToggleViews));
@@ -189,6 +190,15 @@ mod tests {
         assert_eq!(
             shortcut(press("Escape", Target::Field, true)),
             Some(Shortcut::Leave)
+        );
+        assert_eq!(
+            shortcut(press("Escape", Target::Page, true)),
+            Some(Shortcut::Leave)
+        );
+        assert_eq!(
+            shortcut(press(" ", Target::Page, true)),
+            Some(Shortcut::PlayPause),
+            "the other keys still work the viewer behind"
         );
         assert_eq!(shortcut(press("Escape", Target::Page, false)), None);
     }

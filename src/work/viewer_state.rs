@@ -3,7 +3,7 @@
 //! pattern being dragged and a recording's frame asked for; it takes the page's
 //! [`ViewCommand`]s and the workers' replies, asks the pool for rows, and says what the
 //! renderer is to take ([`ScreenChange`]) and when a picture is due. The web runner
-//! (`web/viewer.rs`) owns the renderer and applies what this returns, on the page's thread or
+//! (`web/viewer/`) owns the renderer and applies what this returns, on the page's thread or
 //! in the drawing worker; the simulator (`tests/simulator.rs`) runs this same state against
 //! simulated workers, clocks and faults.
 

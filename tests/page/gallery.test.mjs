@@ -122,9 +122,10 @@ test('moving a slider changes the link, and the link gives the same pattern in a
 
 // Bad links of each kind the page must survive, and words its message must contain: an
 // unknown key, a preset name that is markup, a seed far too long, a value shown as asked but
-// said, a chamber form and an implicit one repaired. The words of every bad link's message are
-// the native suite's (tests/link.rs, the_pages_message_for_each_bad_link_says_what_is_wrong);
-// here they must reach the page as text, with a shell growing.
+// said, and a chamber form and an implicit one given values they cannot grow with (refused,
+// and the shell grown without them). The words of every bad link's message are the native
+// suite's (tests/link.rs, the_pages_message_for_each_bad_link_says_what_is_wrong); here they
+// must reach the page as text, with a shell growing.
 const BAD_LINKS = [
   ['#v=1&preset=turbinate&form.spiral.whorlz=3', 'form.spiral.whorlz: is not a key'],
   ['#v=1&preset=%3Cimg%20src=x%20onerror=alert(1)%3E', 'no preset'],

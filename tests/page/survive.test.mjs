@@ -3,8 +3,8 @@
 // another (WebGPU again, or WebGL2 when WebGPU cannot be had) and shows the shell again where it
 // was, growth resumed, not restarted; the finished shell then has the hashes the native core
 // gives the link. After a panic the page says what it was doing and offers a button that reloads
-// the link, which grows the same shell again. A drawing worker that hangs, or whose frames the
-// GPU never finishes, gives way to the page's thread. The device is destroyed and the panic
+// the link, which grows the same shell again. A drawing worker that hangs before it opens, or
+// whose frames the GPU never finishes, gives way to the page's thread. The device is destroyed and the panic
 // forced through test-only hooks exported by the wasm module (src/web/debug.rs), the context lost
 // with WEBGL_lose_context by another (the drawing worker's canvas is offscreen, so the test
 // cannot reach its context), the worker made to fail by test-only switches of
@@ -234,27 +234,37 @@ for (const backend of ['WebGL2', 'WebGPU']) {
   });
 }
 
-// A drawing worker whose frames the GPU never finishes (a test-only switch of
-// www/drawing-worker.js; only a browser's GPU shows it): the page says so, draws on its own
-// thread instead, on a fresh canvas, and the shell is drawn there. A drawing worker that hangs,
-// before it opens or later, is found out by its silence (`work::drawing_link`), and the view's
-// move to the page's thread while the user goes on clicking is `tests/simulator.rs`'s.
-test(`a drawing worker whose frames never finish gives way to the page's thread, which draws the shell`, async () => {
-  const s = await session('WebGL2');
-  try {
-    const { page, errors } = await open(s.browser, `${s.base}?stall-view${LINK}`);
-    const consoled = [];
-    page.on('console', (m) => consoled.push(m.text()));
-    await page.waitForFunction(() => document.body.dataset.drawnIn === 'page', null, { timeout: 90_000 });
-    const state = await waitForState(page, ['growing', 'grown']);
-    assert.equal(state.backend, 'WebGL2');
-    assert.match(await page.textContent('#message'), /could not be drawn in a worker here, so the page draws it on its own thread/);
-    await page.waitForFunction(() => Number(document.body.dataset.rows) >= 100, null, { timeout: 120_000 });
-    const shot = await measureCanvas(page, `${SHOTS}survive-stall-view.png`);
-    assert.ok(shot.share > 0.03 && shot.shades > 20, `the page's thread draws the shell (${JSON.stringify(shot)})`);
-    assert.ok(consoled.some((line) => /has finished none of the frames handed to it in 10 s/.test(line)), `the console says why: ${consoled.join(' | ')}`);
-    assert.deepEqual(errors, []);
-  } finally {
-    await s.close();
-  }
-});
+// A drawing worker that never opens (it spins on its first message: the page's own 20 s
+// allowance at start, web/viewer_handle.rs) and one whose frames the GPU never finishes (only a
+// GPU shows it): each time the page draws on its own thread instead, on a fresh canvas, and says
+// why (test-only switches of www/drawing-worker.js). A drawing worker that falls silent once
+// open is found out by `work::drawing_link`, and the view's move to the page's thread while the
+// user goes on clicking is `tests/simulator.rs`'s.
+for (const [switchName, why] of [
+  ['hang-view', /said nothing in 20 s/],
+  ['stall-view', /has finished none of the frames handed to it in 10 s/],
+]) {
+  test(`a drawing worker that fails (${switchName}) gives way to the page's thread, which draws the shell`, async () => {
+    const s = await session('WebGL2');
+    try {
+      const { page, errors } = await open(s.browser, `${s.base}?${switchName}${LINK}`);
+      const consoled = [];
+      page.on('console', (m) => consoled.push(m.text()));
+      await page.waitForFunction(() => document.body.dataset.drawnIn === 'page', null, { timeout: 90_000 });
+      const state = await waitForState(page, ['growing', 'grown']);
+      assert.equal(state.backend, 'WebGL2');
+      if (switchName === 'stall-view') {
+        assert.match(await page.textContent('#message'), /could not be drawn in a worker here, so the page draws it on its own thread/);
+      } else {
+        assert.match(await page.textContent('#workers-status'), /Drawn on the page's thread: this browser cannot draw in a worker/);
+      }
+      await page.waitForFunction(() => Number(document.body.dataset.rows) >= 100, null, { timeout: 120_000 });
+      const shot = await measureCanvas(page, `${SHOTS}survive-${switchName}.png`);
+      assert.ok(shot.share > 0.03 && shot.shades > 20, `the page's thread draws the shell (${JSON.stringify(shot)})`);
+      assert.ok(consoled.some((line) => why.test(line)), `the console says why: ${consoled.join(' | ')}`);
+      assert.deepEqual(errors, []);
+    } finally {
+      await s.close();
+    }
+  });
+}

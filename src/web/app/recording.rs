@@ -1,6 +1,6 @@
 //! Recording a video of the growth, as the page runs it: Record asks the browser once what it
 //! can record with, then grows the shell from its apex and hands each frame the viewer draws to
-//! the encoder (`web/record.rs`); the core says when Record may start and how a recording
+//! the encoder (`web/record/`); the core says when Record may start and how a recording
 //! ended (`work::recording`).
 
 use super::App;

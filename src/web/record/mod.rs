@@ -38,8 +38,8 @@ const RECORDER_TYPES: [&str; 4] = [
 /// Asks the browser what it can record with: the first codec of [`VideoCodec::PREFERENCE`]
 /// its `VideoEncoder` takes at the largest size and rate offered, else `MediaRecorder`.
 pub async fn probe() -> Support {
-    let encoder = if webcodecs::has("VideoEncoder") {
-        let mut taken = None;
+    let has_encoder = webcodecs::has("VideoEncoder");
+    if has_encoder {
         for codec in VideoCodec::PREFERENCE {
             let (width, height) = VideoSize::P1080.pixels();
             let config = webcodecs::object(&[
@@ -55,14 +55,11 @@ pub async fn probe() -> Support {
                 .and_then(|a| js_sys::Reflect::get(&a, &"supported".into()).ok())
                 .is_some_and(|s| s.is_truthy());
             if supported {
-                taken = Some(codec);
-                break;
+                // The media stack is asked no more than it must be (see `Support`).
+                return Support::answered(Some(Some(codec)), None);
             }
         }
-        Some(taken)
-    } else {
-        None
-    };
+    }
     let recorder = webcodecs::has("MediaRecorder")
         .then(|| {
             RECORDER_TYPES
@@ -70,7 +67,7 @@ pub async fn probe() -> Support {
                 .find(|t| web_sys::MediaRecorder::is_type_supported(t))
         })
         .flatten();
-    Support::answered(encoder, recorder.copied())
+    Support::answered(has_encoder.then_some(None), recorder.copied())
 }
 
 /// The options chosen on the page.

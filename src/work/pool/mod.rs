@@ -13,4 +13,4 @@ mod plan;
 
 pub use dispatch::{JOBS_PER_WORKER, Pool, SESSIONS, Send, size_for};
 pub use events::{Polled, Replaced, WorkerEvent};
-pub use plan::{Faults, PoolPlan, local_status};
+pub use plan::{Faults, PoolPlan, given_up_status, local_status};

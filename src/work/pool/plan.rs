@@ -90,6 +90,15 @@ pub fn local_status(thread: &str, why: &str) -> String {
     format!("Growing on {thread}: {why}.")
 }
 
+/// The status line once the pool has given its workers up (each stopped before answering,
+/// the last for `why`) and `thread` grows the shells.
+pub fn given_up_status(thread: &str, why: &str) -> String {
+    local_status(
+        thread,
+        &format!("workers could not run here (each stopped before answering: {why})"),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -123,6 +132,11 @@ mod tests {
         assert_eq!(
             local_status("the page's thread", "workers are off"),
             "Growing on the page's thread: workers are off."
+        );
+        assert_eq!(
+            given_up_status("the drawing worker's own thread", "it threw"),
+            "Growing on the drawing worker's own thread: workers could not run here (each \
+             stopped before answering: it threw)."
         );
     }
 
