@@ -118,10 +118,7 @@ impl App {
         let polled = self.workers.borrow_mut().poll();
         if let Some(replaced) = &polled.replaced {
             self.deaths.0 = replaced.deaths;
-            signal(
-                "workerDeaths",
-                &(self.deaths.0 + self.deaths.1 as usize).to_string(),
-            );
+            self.signal_deaths();
             if let Some(words) = replaced.words() {
                 set_text("workers-status", &words);
             }
@@ -153,12 +150,15 @@ impl App {
             return;
         }
         self.deaths.1 = pool.deaths;
-        signal(
-            "workerDeaths",
-            &(self.deaths.0 + self.deaths.1 as usize).to_string(),
-        );
+        self.signal_deaths();
         if let Some(words) = pool.words {
             set_text("workers-status", &words);
         }
+    }
+
+    /// Signals the workers replaced so far, the page's pool's and the drawing worker's.
+    fn signal_deaths(&self) {
+        let (page, drawing) = self.deaths;
+        signal("workerDeaths", &(page + drawing as usize).to_string());
     }
 }
