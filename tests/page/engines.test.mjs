@@ -130,7 +130,11 @@ for (const engine of ONLY) {
         assert.equal(await page.evaluate(() => document.querySelectorAll('#breed-grid img').length), 9);
         await shotDrawn(page, '#breed-grid', `${engine}-breed`, 'the offspring');
         await page.click('#breed-grid .tile:nth-child(1)');
-        await page.waitFor(() => /breed=0\.4\/1,0\.4$/.test(location.hash) && document.body.dataset.breed === 'whole', null, 600_000, 'the next generation drawn');
+        // The address changes at the click, before the page has taken it in: the next
+        // generation is the one whose status says so, once whole.
+        await page.waitFor(() => /breed=0\.4\/1,0\.4$/.test(location.hash)
+          && /Generation 2/.test(document.getElementById('breed-status').textContent)
+          && document.body.dataset.breed === 'whole', null, 600_000, 'the next generation drawn');
         await page.waitFor(drawn, null, 60_000, 'the next generation decoded');
         assert.match(await page.evaluate(() => document.getElementById('breed-status').textContent), /Generation 2/);
         assert.deepEqual(await page.errors(), []);
