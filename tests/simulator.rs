@@ -38,7 +38,7 @@ use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::device_survival::{Loss, Open, Survival};
 use seashells_core::work::drawing_link::DrawingLink;
-use seashells_core::work::session::{Edit, Effect, Session};
+use seashells_core::work::session::{Edit, Effect, Heard, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_message::{decode_command, encode_command};
@@ -500,6 +500,7 @@ impl Page {
             return Ok(());
         }
         self.apply(0);
+        let mut heard = Heard::default();
         for report in reports {
             if report.recorded && self.recording {
                 self.drawn_frames += 1;
@@ -507,11 +508,11 @@ impl Page {
             let Some((status, drawn)) = report.frame else {
                 continue;
             };
-            if !self.session.is_current(report.loads) {
-                continue;
-            }
-            if let (Some(shell), Some((preset, _))) = (&status.shell, self.session.current())
-                && self.sessions.get(&shell.session) != Some(&preset.id)
+            if let (true, Some(shell), Some((preset, _))) = (
+                self.session.is_current(report.loads),
+                &status.shell,
+                self.session.current(),
+            ) && self.sessions.get(&shell.session) != Some(&preset.id)
             {
                 return Err(format!(
                     "the page shows the status of {:?} as the {}'s",
@@ -519,9 +520,11 @@ impl Page {
                     preset.id
                 ));
             }
-            self.session.viewed(status, drawn, self.now);
-            self.apply(0);
+            heard.statuses.push((report.loads, status, drawn));
         }
+        let now = self.now;
+        (self.session).heard(heard, self.covered, self.recording, now);
+        self.apply(0);
         Ok(())
     }
 

@@ -73,6 +73,30 @@ pub enum Effect {
     Backend(String),
 }
 
+/// What the viewer said since the page's last frame.
+#[derive(Debug, Default)]
+pub struct Heard {
+    /// Each of its frames: the loads it had taken, what it said of itself, and whether it drew
+    /// the shell.
+    pub statuses: Vec<(u32, ViewStatus, bool)>,
+    /// Shells it could not build or grow: the loads it had taken when it said so (none: said
+    /// whatever was loaded), and why.
+    pub refused: Vec<(Option<u32>, String)>,
+}
+
+/// What the rest of the page's frame does, once it has heard its viewer ([`Session::heard`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FrameTask {
+    /// A recording is under way: the frame hands it the viewer's video frame.
+    Record,
+    /// The gallery is shown: its pictures are drawn.
+    Pictures,
+    /// The map or breeding covers the shell: their tiles are drawn.
+    Tiles,
+    /// The shell is shown, as the viewer said.
+    Shown,
+}
+
 /// The page as the session knows it.
 #[derive(Default)]
 pub struct Session {
@@ -412,9 +436,48 @@ impl Session {
         }
     }
 
-    /// The viewer refused the shell shown (it cannot be built): none is shown.
-    pub fn refused(&mut self) {
+    /// The viewer refused the shell shown (it cannot be built, `why`): none is shown, and the
+    /// page says why as an error.
+    pub fn refused(&mut self, why: String) {
         self.current = None;
+        self.push(Effect::Say(Say::Show(why)));
+        self.signal("state", "error");
+    }
+
+    /// The page's frame after its viewer's frames came in (`heard`, with the shells the viewer
+    /// refused since): a refusal of the shell shown is said (one of a shell left since is not);
+    /// then the frame hands a video frame to a recording under way, or draws the gallery's
+    /// pictures, or (the address written when due) the tiles of a map or breeding covering the
+    /// shell; else the last of the viewer's frames of the shell shown is shown, drawn when any
+    /// of them drew it.
+    pub fn heard(&mut self, frames: Heard, covered: bool, recording: bool, now: f64) -> FrameTask {
+        for (loads, why) in frames.refused {
+            if loads.is_none_or(|l| self.is_current(l)) {
+                self.refused(why);
+            }
+        }
+        if recording {
+            return FrameTask::Record;
+        }
+        if self.in_gallery {
+            return FrameTask::Pictures;
+        }
+        self.address_due(now);
+        if covered {
+            return FrameTask::Tiles;
+        }
+        let mut drawn = false;
+        let mut last = None;
+        for (loads, status, frame_drew) in frames.statuses {
+            if self.is_current(loads) {
+                drawn |= frame_drew;
+                last = Some(status);
+            }
+        }
+        if let Some(status) = last {
+            self.viewed(status, drawn, now);
+        }
+        FrameTask::Shown
     }
 
     /// Before the viewer's frame: growth waits while the gallery is shown or the map or
@@ -436,7 +499,7 @@ impl Session {
     }
 
     /// The address bar is due to follow the last edit at `now`.
-    pub fn address_due(&mut self, now: f64) {
+    fn address_due(&mut self, now: f64) {
         if self.url_due.is_some_and(|due| now >= due) {
             self.url_due = None;
             self.push(Effect::UpdateAddress);
@@ -509,6 +572,7 @@ fn previews(key: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::work::viewer_status::ShellStatus;
 
     /// The viewer commands among `effects`, by name.
     fn commands(effects: &[Effect]) -> Vec<String> {
@@ -623,6 +687,92 @@ mod tests {
         session.take_effects();
         session.hold(false, false);
         assert_eq!(commands(&session.take_effects()), ["Hold"]);
+    }
+
+    /// A frame of the viewer, having taken `loads` loads, at `rows_done` of 100 rows.
+    fn frame(loads: u32, rows_done: usize, drawn: bool) -> (u32, ViewStatus, bool) {
+        let shell = ShellStatus {
+            rows_done,
+            rows: 100,
+            ..Default::default()
+        };
+        let status = ViewStatus {
+            shell: Some(shell),
+            preview: None,
+        };
+        (loads, status, drawn)
+    }
+
+    #[test]
+    fn the_page_shows_the_last_frame_of_the_shell_shown_and_says_its_refusal_only() {
+        let mut session = opened("#v=1&preset=stripes");
+        session.route("#v=1&preset=turbinate", false, 1.0);
+        session.take_effects();
+        // Two frames of the stripes still on their way, then two of the turbinate.
+        let heard = Heard {
+            statuses: vec![frame(1, 90, true), frame(2, 3, false), frame(2, 5, false)],
+            refused: vec![(Some(1), "the stripes could not grow".into())],
+        };
+        assert_eq!(session.heard(heard, false, false, 2.0), FrameTask::Shown);
+        let effects = session.take_effects();
+        assert!(
+            !effects.iter().any(|e| matches!(e, Effect::Say(_))),
+            "a refusal of a shell left is not said"
+        );
+        assert!(
+            effects
+                .iter()
+                .any(|e| matches!(e, Effect::Progress(5, 100)))
+        );
+        assert_eq!(
+            session.status().shell.as_ref().map(|s| s.rows_done),
+            Some(5)
+        );
+        let refused = Heard {
+            refused: vec![(Some(2), "the turbinate could not grow".into())],
+            ..Heard::default()
+        };
+        session.heard(refused, false, false, 3.0);
+        let effects = session.take_effects();
+        assert!(effects.iter().any(
+            |e| matches!(e, Effect::Say(Say::Show(words)) if words == "the turbinate could not grow")
+        ));
+        assert!(signals(&effects).contains(&("state", "error".into())));
+        assert!(session.current().is_none(), "no shell is shown");
+    }
+
+    #[test]
+    fn a_frame_records_draws_pictures_or_tiles_before_it_shows_the_shell() {
+        let mut session = opened("#v=1&preset=stripes");
+        session.edit("material.gloss", "0.5", Edit::Set, 1.0);
+        session.take_effects();
+        let task = |session: &mut Session, covered, recording, now| {
+            let heard = Heard {
+                statuses: vec![frame(1, 7, true)],
+                ..Heard::default()
+            };
+            let task = session.heard(heard, covered, recording, now);
+            (task, session.take_effects())
+        };
+        let (recorded, effects) = task(&mut session, true, true, 1e6);
+        assert_eq!(recorded, FrameTask::Record);
+        assert!(effects.is_empty(), "a recording's frame shows nothing else");
+        let (tiles, effects) = task(&mut session, true, false, 1e6);
+        assert_eq!(tiles, FrameTask::Tiles);
+        assert!(
+            matches!(effects[..], [Effect::UpdateAddress]),
+            "under the map the address still follows the edit"
+        );
+        let (shown, effects) = task(&mut session, false, false, 1e6);
+        assert_eq!(shown, FrameTask::Shown);
+        assert!(
+            effects
+                .iter()
+                .any(|e| matches!(e, Effect::Progress(7, 100)))
+        );
+        session.route("", false, 2e6);
+        session.take_effects();
+        assert_eq!(task(&mut session, false, false, 2e6).0, FrameTask::Pictures);
     }
 
     #[test]

@@ -5,9 +5,10 @@
 use super::App;
 use crate::web::activity;
 use crate::web::clock::now;
-use crate::web::page::{self, set_text, show_message, signal};
+use crate::web::page::{set_text, show_message, signal};
 use crate::web::viewer_handle::Taken;
 use crate::work::message::{Reply, Request};
+use crate::work::session::{FrameTask, Heard};
 use crate::work::viewer_message::PoolNews;
 
 impl App {
@@ -51,19 +52,14 @@ impl App {
                 return Ok(());
             }
         };
-        for (loads, message) in refused {
-            // The refusal of a shell the page has left since is not said.
-            if loads.is_none_or(|l| self.session.is_current(l)) {
-                self.session.refused();
-                page::show_error(&message);
-            }
-        }
         if let Some(pool) = pool {
             self.pool_said(pool);
         }
-        let mut drawn = false;
+        let mut heard = Heard {
+            refused,
+            ..Heard::default()
+        };
         let mut recorded = None;
-        let mut status = None;
         for frame in frames {
             let report = frame.report;
             self.downloads.show(report.file);
@@ -75,39 +71,28 @@ impl App {
                     planar.apply(update);
                 }
             }
-            if self.session.is_current(report.loads) {
-                drawn |= report.drawn;
-                status = Some(report.status);
-            }
+            (heard.statuses).push((report.loads, report.status, report.drawn));
             if let Some(frame) = frame.recorded {
                 recorded = Some(frame);
             }
         }
-        if self.recording.is_some() {
-            self.record_frame(recorded);
-            return Ok(());
-        }
-        if self.session.in_gallery() {
-            self.pictures.work(&mut self.workers.borrow_mut());
-            signal("pictures", self.pictures.signal());
-            return Ok(());
-        }
-        self.session.address_due(now());
+        let task = (self.session).heard(heard, covered, self.recording.is_some(), now());
         self.apply();
-        if covered {
-            if let Some(tile) = self.pictures.work(&mut self.workers.borrow_mut()) {
-                self.map.shown(tile, Ok(()));
-                self.breed.shown(tile, Ok(()));
+        match task {
+            FrameTask::Record => self.record_frame(recorded),
+            FrameTask::Pictures => {
+                self.pictures.work(&mut self.workers.borrow_mut());
+                signal("pictures", self.pictures.signal());
             }
-            activity::set("drawing the parameter map or the offspring".to_string());
-            return Ok(());
+            FrameTask::Tiles => {
+                if let Some(tile) = self.pictures.work(&mut self.workers.borrow_mut()) {
+                    self.map.shown(tile, Ok(()));
+                    self.breed.shown(tile, Ok(()));
+                }
+                activity::set("drawing the parameter map or the offspring".to_string());
+            }
+            FrameTask::Shown => {}
         }
-        let Some(status) = status else {
-            // A viewer in a worker sent no frame since the page's last.
-            return Ok(());
-        };
-        self.session.viewed(status, drawn, now());
-        self.apply();
         Ok(())
     }
 
@@ -136,9 +121,9 @@ impl App {
                 answered => shell.push(answered),
             }
         }
-        if let Err(message) = self.viewer.take_all(shell, polled.sessions_lost) {
-            self.session.refused();
-            page::show_error(&message);
+        if let Err(why) = self.viewer.take_all(shell, polled.sessions_lost) {
+            self.session.refused(why);
+            self.apply();
         }
     }
 
