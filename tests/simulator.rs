@@ -41,9 +41,12 @@ use seashells_core::work::drawing_link::DrawingLink;
 use seashells_core::work::session::{Edit, Effect, Heard, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
-use seashells_core::work::viewer_message::{decode_command, encode_command};
+use seashells_core::work::viewer_inbox;
+use seashells_core::work::viewer_message::{
+    ViewerNews, decode_command, decode_news, encode_command, encode_news,
+};
 use seashells_core::work::viewer_state::{ScreenChange, ViewerState};
-use seashells_core::work::viewer_status::{Device, ViewStatus};
+use seashells_core::work::viewer_status::{Device, FrameReport, ViewStatus};
 use std::collections::{HashMap, VecDeque};
 use std::sync::{Mutex, OnceLock};
 
@@ -150,6 +153,9 @@ enum Step {
     HangDrawing,
 }
 
+/// A recording's video frame, posted beside the frame's news that says it was drawn.
+struct VideoFrame;
+
 /// The page: its session, the drawing worker's viewer and pool, the workers, the messages
 /// between them, and what the checks remember.
 struct Page {
@@ -160,7 +166,7 @@ struct Page {
     /// Commands on their way to the drawing worker, and frames on their way back, with the
     /// frame they arrive in.
     to_viewer: VecDeque<(u64, Vec<u8>)>,
-    to_page: VecDeque<(u64, Report)>,
+    to_page: VecDeque<(u64, Vec<u8>, Option<VideoFrame>)>,
     now: f64,
     frame: u64,
     /// The shell of each session the viewer opened (its preset).
@@ -185,15 +191,6 @@ struct Page {
     /// What the page has heard of the drawing worker, and whether the worker hangs.
     link: DrawingLink,
     drawing_hung: bool,
-}
-
-/// What the drawing worker says of one of its frames.
-struct Report {
-    loads: u32,
-    device: Device,
-    /// The viewer's frame, once its device draws: its status and whether it drew.
-    frame: Option<(ViewStatus, bool)>,
-    recorded: bool,
 }
 
 /// The drawing worker's graphics device, simulated.
@@ -391,19 +388,25 @@ impl Page {
         Ok(())
     }
 
-    /// The drawing worker posts a frame's news to the page, arriving `lag` frames later.
+    /// The drawing worker posts a frame's news to the page, as the bytes it reads, arriving
+    /// `lag` frames later; a recording's video frame goes beside it.
     fn post(&mut self, lag: u8, device: Device, frame: Option<(ViewStatus, bool)>, recorded: bool) {
-        let at = (self.frame + u64::from(lag)).max(self.to_page.back().map_or(0, |(a, _)| *a));
+        let at = (self.frame + u64::from(lag)).max(self.to_page.back().map_or(0, |(a, ..)| *a));
         let loads = self.state.loads();
-        self.to_page.push_back((
-            at,
-            Report {
-                loads,
-                device,
-                frame,
-                recorded,
-            },
-        ));
+        let news = ViewerNews::Frame {
+            device,
+            report: frame.map(|(status, drawn)| {
+                Box::new(FrameReport {
+                    loads,
+                    drawn,
+                    status,
+                    ..FrameReport::default()
+                })
+            }),
+            recorded: recorded.then_some(Ok(())),
+        };
+        let video = recorded.then_some(VideoFrame);
+        self.to_page.push_back((at, encode_news(&news), video));
     }
 
     /// The drawing worker keeps its device as the core decides, before its frame: it opens
@@ -482,14 +485,18 @@ impl Page {
     /// The page takes in the drawing worker's frames that reached it: the status of a frame
     /// made before the last load reached the viewer is not of the shell shown.
     fn page_takes_frames(&mut self) -> Result<(), Failure> {
-        let mut reports = Vec::new();
-        while let Some((_, report)) = self.to_page.front().filter(|(at, _)| *at <= self.frame) {
-            self.link.heard(self.now, Some(&report.device));
-            if let Some((_, report)) = self.to_page.pop_front() {
-                reports.push(report);
-            }
+        let mut news = Vec::new();
+        while let Some((_, bytes, video)) = self.to_page.pop_front_if(|(at, ..)| *at <= self.frame)
+        {
+            let said = decode_news(&bytes).map_err(|e| e.to_string())?;
+            let device = match &said {
+                ViewerNews::Frame { device, .. } => Some(device),
+                _ => None,
+            };
+            self.link.heard(self.now, device);
+            news.push((said, video));
         }
-        if self.link.took(!reports.is_empty(), self.now).is_err() {
+        if self.link.took(!news.is_empty(), self.now).is_err() {
             // The drawing worker is taken for hung: the view moves to the page's thread.
             self.moving.get_or_insert(self.frame + 1);
             return Ok(());
@@ -500,31 +507,35 @@ impl Page {
             return Ok(());
         }
         self.apply(0);
-        let mut heard = Heard::default();
-        for report in reports {
-            if report.recorded && self.recording {
-                self.drawn_frames += 1;
+        let taken = viewer_inbox::take(news)?;
+        let mut heard = Heard {
+            refused: taken.refused,
+            ..Heard::default()
+        };
+        for frame in taken.frames {
+            if let Some(recorded) = frame.recorded {
+                recorded?;
+                if self.recording {
+                    self.drawn_frames += 1;
+                }
             }
-            let Some((status, drawn)) = report.frame else {
-                continue;
-            };
-            if let (true, Some(shell), Some((preset, _))) = (
-                self.session.is_current(report.loads),
-                &status.shell,
-                self.session.current(),
-            ) && self.sessions.get(&shell.session) != Some(&preset.id)
-            {
-                return Err(format!(
-                    "the page shows the status of {:?} as the {}'s",
-                    self.sessions.get(&shell.session),
-                    preset.id
-                ));
-            }
-            heard.statuses.push((report.loads, status, drawn));
+            let report = frame.report;
+            (heard.statuses).push((report.loads, report.status, report.drawn));
         }
         let now = self.now;
         (self.session).heard(heard, self.covered, self.recording, now);
         self.apply(0);
+        // What the page shows is of the shell it shows.
+        if let (Some(shell), Some((preset, _))) =
+            (&self.session.status().shell, self.session.current())
+            && self.sessions.get(&shell.session) != Some(&preset.id)
+        {
+            return Err(format!(
+                "the page shows the status of {:?} as the {}'s",
+                self.sessions.get(&shell.session),
+                preset.id
+            ));
+        }
         Ok(())
     }
 

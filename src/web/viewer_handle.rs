@@ -9,13 +9,14 @@ use super::canvases::hand_over;
 use super::clock::now;
 use super::debug::Loss;
 use super::scope;
-use super::viewer::{ViewFrame, Viewer};
+use super::viewer::Viewer;
 use super::webcodecs::VideoFrame;
 use crate::render::Canvas;
 use crate::work::drawing_link::DrawingLink;
 use crate::work::message::{Reply, Request};
 use crate::work::viewer_command::ViewCommand;
-use crate::work::viewer_message::{PoolNews, ViewerNews, decode_news, encode_command};
+use crate::work::viewer_inbox::{self, Taken};
+use crate::work::viewer_message::{ViewerNews, decode_news, encode_command};
 use crate::work::viewer_status::Device;
 use js_sys::{Array, Promise, Reflect, Uint8Array};
 use std::cell::RefCell;
@@ -160,24 +161,8 @@ impl DrawingWorker {
         if let Some(e) = this.inbox.borrow_mut().error.take() {
             return Err(e);
         }
-        let opened = {
-            let mut inbox = this.inbox.borrow_mut();
-            let at = inbox
-                .news
-                .iter()
-                .position(|(n, _)| matches!(n, ViewerNews::Opened(_)));
-            at.map(|at| inbox.news.remove(at).0)
-        };
-        match opened {
-            Some(ViewerNews::Opened(Ok(backend))) => this.backend = backend,
-            Some(ViewerNews::Opened(Err(e))) => return Err(e),
-            _ => {
-                return Err(format!(
-                    "the drawing worker said nothing in {} s",
-                    START_MS / 1000
-                ));
-            }
-        }
+        let opened = viewer_inbox::opened(&mut this.inbox.borrow_mut().news, START_MS / 1000);
+        this.backend = opened?;
         Ok(this)
     }
 
@@ -209,19 +194,6 @@ impl Drop for DrawingWorker {
         self.worker.set_onerror(None);
         self.worker.terminate();
     }
-}
-
-/// What the page takes from its viewer in a frame.
-#[derive(Default)]
-pub struct Taken {
-    /// The viewer's frames since the page's last (one on the page's thread; as many as the
-    /// worker ran, or none, in a worker).
-    pub frames: Vec<ViewFrame>,
-    /// Shells that could not be built or grown: the loads the viewer had taken when it said
-    /// so (none: whatever shell it held), and why.
-    pub refused: Vec<(Option<u32>, String)>,
-    /// What the drawing worker's pool said of itself last.
-    pub pool: Option<PoolNews>,
 }
 
 impl ViewerHandle {
@@ -275,10 +247,7 @@ impl ViewerHandle {
             return true;
         }
         let inbox = w.inbox.borrow();
-        let Some(message) = inbox.news.iter().find_map(|(n, _)| match n {
-            ViewerNews::Crashed(message) => Some(message.clone()),
-            _ => None,
-        }) else {
+        let Some(message) = viewer_inbox::crash(&inbox.news).map(str::to_string) else {
             return false;
         };
         drop(inbox);
@@ -317,42 +286,17 @@ impl ViewerHandle {
     /// The viewer's frames since the page's last: on the page's thread, runs one (after the
     /// page took in the pool's replies); in a worker, what it sent. Fails with the words to
     /// show when its renderer failed.
-    pub fn frames(&mut self) -> Result<Taken, String> {
+    pub fn frames(&mut self) -> Result<Taken<VideoFrame>, String> {
         match self {
             ViewerHandle::Here(viewer) => Ok(Taken {
                 frames: vec![viewer.run_frame()?],
                 ..Taken::default()
             }),
             ViewerHandle::Worker(w) => {
-                let mut taken = Taken::default();
                 let mut inbox = w.inbox.borrow_mut();
                 let any = !inbox.news.is_empty();
                 inbox.link.took(any, now())?;
-                for (news, video) in inbox.news.drain(..) {
-                    match news {
-                        ViewerNews::Frame {
-                            report: Some(report),
-                            recorded,
-                            ..
-                        } => taken.frames.push(ViewFrame {
-                            report: *report,
-                            recorded: match (recorded, video) {
-                                (Some(Ok(())), Some(frame)) => Some(Ok(frame)),
-                                (Some(Ok(())), None) => {
-                                    Some(Err("the video frame did not arrive".into()))
-                                }
-                                (Some(Err(e)), _) => Some(Err(e)),
-                                (None, _) => None,
-                            },
-                        }),
-                        // The refusal of a shell the page has left since is not said.
-                        ViewerNews::Refused { loads, why } => taken.refused.push((loads, why)),
-                        ViewerNews::Failed(why) => return Err(why),
-                        ViewerNews::Pool(pool) => taken.pool = Some(pool),
-                        _ => {}
-                    }
-                }
-                Ok(taken)
+                viewer_inbox::take(inbox.news.drain(..))
             }
         }
     }

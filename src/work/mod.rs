@@ -32,6 +32,7 @@ pub mod shortcuts;
 pub mod slotted_edge;
 pub mod status_readout;
 pub mod viewer_command;
+pub mod viewer_inbox;
 pub mod viewer_message;
 pub mod viewer_state;
 pub mod viewer_status;

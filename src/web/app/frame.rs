@@ -6,9 +6,9 @@ use super::App;
 use crate::web::activity;
 use crate::web::clock::now;
 use crate::web::page::{set_text, show_message, signal};
-use crate::web::viewer_handle::Taken;
 use crate::work::message::{Reply, Request};
 use crate::work::session::{FrameTask, Heard};
+use crate::work::viewer_inbox::Taken;
 use crate::work::viewer_message::PoolNews;
 
 impl App {

@@ -32,6 +32,7 @@ use crate::work::device_survival::{Loss as DeviceLoss, Open, Survival};
 use crate::work::file_writer::FileWriter;
 use crate::work::message::{Reply, Request, WholeShell};
 use crate::work::viewer_command::ViewCommand;
+use crate::work::viewer_inbox::ViewFrame;
 use crate::work::viewer_state::{ScreenChange, ViewerState};
 use crate::work::viewer_status::{Device, FrameReport};
 use std::cell::RefCell;
@@ -61,14 +62,6 @@ pub struct Viewer {
     picture_read: Rc<RefCell<Option<Result<String, String>>>>,
     /// A file of the shell being written.
     writer: FileWriter,
-}
-
-/// What a frame of the viewer gives the page (see [`Viewer::run_frame`]): what a worker would
-/// post of it, and a recording's video frame.
-pub struct ViewFrame {
-    pub report: FrameReport,
-    /// A recording's video frame asked for, drawn (or why it could not be).
-    pub recorded: Option<Result<VideoFrame, String>>,
 }
 
 impl Viewer {
@@ -307,7 +300,7 @@ impl Viewer {
     /// replies are taken in ([`Self::take_all`]): works on a file asked for, grows and draws
     /// (unless held, [`ViewCommand::Hold`]: the page shows something else over the shell), and
     /// says what the page is to show. Fails with the words to show when the renderer failed.
-    pub fn run_frame(&mut self) -> Result<ViewFrame, String> {
+    pub fn run_frame(&mut self) -> Result<ViewFrame<VideoFrame>, String> {
         let file = self.work_file();
         let drawn = !self.state.held() && self.frame(GROWTH_BUDGET_MS)?;
         let picture = self.drawing.as_ref().map_or((0, 0), |d| d.canvas.size());
