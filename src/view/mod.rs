@@ -5,6 +5,7 @@
 
 pub mod camera;
 pub mod draw_pacing;
+pub mod drawn_in;
 pub mod gestures;
 pub mod panes;
 pub mod picture;

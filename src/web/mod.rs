@@ -29,6 +29,7 @@ mod worker_host;
 mod workers;
 
 use crate::render::Canvas;
+use crate::view::drawn_in::DrawnIn;
 use app::{App, Shared};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -154,7 +155,9 @@ async fn main_viewer(
     background: [u8; 3],
     workers: Rc<RefCell<workers::Workers>>,
 ) -> Result<ViewerHandle, String> {
-    let (element, note) = if viewer_handle::in_worker() {
+    let asked_page = scope::query("view").as_deref() == Some("page");
+    let first = DrawnIn::first(viewer_handle::worker_draws(), asked_page);
+    let (element, note) = if first == DrawnIn::Worker {
         let started = match canvases::hand_over(&element) {
             Ok(offscreen) => DrawingWorker::start(offscreen, true, background).await,
             Err(e) => Err(e),
@@ -162,14 +165,13 @@ async fn main_viewer(
         match started {
             Ok(worker) => return Ok(ViewerHandle::Worker(worker)),
             Err(e) => {
-                web_sys::console::info_1(
-                    &format!("The view is drawn on the page's thread: {e}").into(),
-                );
-                let note = format!(
-                    "{} Drawn on the page's thread: this browser cannot draw in a worker.",
-                    workers.borrow().status()
-                );
-                (canvases::replace("shell")?, Some(note))
+                let moved = first.fall_back(&e, false);
+                if let Some(log) = &moved.log {
+                    web_sys::console::info_1(&log.into());
+                }
+                let status = workers.borrow().status().to_string();
+                let note = moved.status.map(|words| format!("{status} {words}"));
+                (canvases::replace("shell")?, note)
             }
         }
     } else {

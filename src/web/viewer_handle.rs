@@ -12,6 +12,7 @@ use super::scope;
 use super::viewer::Viewer;
 use super::webcodecs::VideoFrame;
 use crate::render::Canvas;
+use crate::view::drawn_in::DrawnIn;
 use crate::work::drawing_link::DrawingLink;
 use crate::work::message::{Reply, Request};
 use crate::work::viewer_command::ViewCommand;
@@ -62,12 +63,10 @@ pub enum ViewerHandle {
     Worker(DrawingWorker),
 }
 
-/// Whether this page draws its main view in a worker: where module workers can hold an
-/// `OffscreenCanvas`, unless the address asks for the page's thread (`view=page`).
-pub fn in_worker() -> bool {
-    let asked_page = scope::query("view").as_deref() == Some("page");
+/// Whether a worker can draw here: module workers can hold an `OffscreenCanvas`.
+pub fn worker_draws() -> bool {
     let has = |name: &str| Reflect::has(&js_sys::global(), &name.into()).unwrap_or(false);
-    !asked_page && has("OffscreenCanvas") && has("Worker")
+    has("OffscreenCanvas") && has("Worker")
 }
 
 impl DrawingWorker {
@@ -205,9 +204,13 @@ impl ViewerHandle {
         }
     }
 
-    /// Whether it runs in the drawing worker.
-    pub fn in_worker(&self) -> bool {
-        matches!(self, ViewerHandle::Worker(_))
+    /// Where it draws.
+    pub fn drawn_in(&self) -> DrawnIn {
+        match self {
+            ViewerHandle::Worker(_) => DrawnIn::Worker,
+            ViewerHandle::Here(viewer) if viewer.backend().is_some() => DrawnIn::Page,
+            ViewerHandle::Here(_) => DrawnIn::Nowhere,
+        }
     }
 
     /// Asks the viewer `command`.

@@ -54,15 +54,17 @@ impl App {
     /// (the shell grows, its pattern shows and its files are written all the same). Said in
     /// words; growth starts again from the apex.
     pub(super) fn fall_back(&mut self, why: String) {
-        if !self.viewer.in_worker() {
+        let moved = self.viewer.drawn_in().fall_back(&why, true);
+        if let Some(log) = &moved.log {
+            web_sys::console::info_1(&log.into());
+        }
+        if let Some(why) = moved.no_3d {
             self.without_3d(&why);
             return;
         }
-        web_sys::console::info_1(&format!("The view moves to the page's thread: {why}").into());
-        show_message(
-            "The shell could not be drawn in a worker here, so the page draws it on its own \
-             thread; it grows again from its apex.",
-        );
+        if let Some(words) = moved.say {
+            show_message(words);
+        }
         let element = match replace("shell") {
             Ok(element) => element,
             Err(e) => {

@@ -23,12 +23,7 @@ pub(super) fn show_backend(backend: Option<String>) {
 /// Signals where the main view is drawn (`data-drawn-in`): in the drawing worker, on the
 /// page's thread, or nowhere.
 pub(super) fn show_drawn_in(viewer: &ViewerHandle) {
-    let place = match (viewer.in_worker(), viewer.backend()) {
-        (true, _) => "worker",
-        (false, Some(_)) => "page",
-        (false, None) => "nowhere",
-    };
-    signal("drawnIn", place);
+    signal("drawnIn", viewer.drawn_in().signal());
 }
 
 /// Shows or hides the message line as the session said.
