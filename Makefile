@@ -69,6 +69,10 @@ build: deps-build
 	  $(PKG)/seashells_bg.wasm -o $(PKG)/seashells_bg.wasm
 	@raw=$$(stat -c %s $(PKG)/seashells_bg.wasm); gz=$$(gzip -9c $(PKG)/seashells_bg.wasm | wc -c); \
 	  printf 'wasm: %s bytes raw, %s bytes gzipped\n' $$raw $$gz
+	@id=$$(cat www/*.html www/*.js www/*.css www/*.svg www/*.webmanifest $(PKG)/seashells.js \
+	  $(PKG)/seashells_bg.wasm | sha256sum | cut -c1-16); \
+	  printf '// Written by make build: the id of this build, which names its offline copy (www/service-worker.js).\nself.BUILD = "%s";\n' $$id > $(PKG)/build.js; \
+	  echo "build $$id"
 
 ## Tests.
 

@@ -4,6 +4,51 @@
 import init, { start } from './pkg/seashells.js';
 
 document.getElementById('reload')?.addEventListener('click', () => window.location.reload());
+keepOffline();
+
+/**
+ * Registers the page's offline copy (service-worker.js) and says how it stands on <body
+ * data-offline>: "ready" once this page is served by it (it then works with the network gone),
+ * "update" when a newer build is kept and waiting, which the notice #update offers to load.
+ * Where the browser keeps no offline copy (no service workers, a page not served over HTTPS or
+ * from this machine) the page works as before, online, and says why on the console.
+ */
+function keepOffline() {
+  if (!('serviceWorker' in navigator)) {
+    console.info('This browser keeps no offline copy of the page (no service workers here).');
+    return;
+  }
+  const body = document.body;
+  const ready = () => { if (navigator.serviceWorker.controller && body.dataset.offline !== 'update') body.dataset.offline = 'ready'; };
+  const waiting = (registration) => {
+    if (!registration.waiting || !navigator.serviceWorker.controller) return;
+    body.dataset.offline = 'update';
+    const notice = document.getElementById('update');
+    notice.hidden = false;
+    document.getElementById('update-reload').onclick = () => registration.waiting?.postMessage('take-over');
+  };
+  // The new build took over (asked for here, or in another tab): this page reloads into it,
+  // rather than run on with the old build's module beside the new build's workers.
+  let reloading = false;
+  navigator.serviceWorker.addEventListener('controllerchange', () => {
+    if (body.dataset.offline === 'update' && !reloading) {
+      reloading = true;
+      window.location.reload();
+    }
+    ready();
+  });
+  navigator.serviceWorker.register('service-worker.js').then((registration) => {
+    ready();
+    waiting(registration);
+    registration.addEventListener('updatefound', () => {
+      const installing = registration.installing;
+      installing?.addEventListener('statechange', () => {
+        if (installing.state === 'installed') waiting(registration);
+        if (installing.state === 'activated') ready();
+      });
+    });
+  }).catch((error) => console.info(`No offline copy of the page is kept: ${error}`));
+}
 
 try {
   await init();

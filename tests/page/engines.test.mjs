@@ -98,6 +98,8 @@ for (const engine of ONLY) {
         for (const id of ['diskoid', 'oliva-porphyria', 'kawaguchi-horn']) {
           await shotDrawn(page, `a.card[data-preset="${id}"] img`, `${engine}-card-${id}`, `the card of ${id}`);
         }
+        // Its offline copy is kept (www/service-worker.js; offline.test.mjs goes offline).
+        await page.waitFor(() => document.body.dataset.offline === 'ready', null, 60_000, 'the offline copy kept');
         assert.deepEqual(await page.errors(), []);
       } finally {
         await page.close();
