@@ -22,7 +22,7 @@ export NPM_INSTALLED := const fs = require('fs'); \
     try { return JSON.parse(fs.readFileSync(`node_modules/$${name}/package.json`, 'utf8')).version === version; } \
     catch { return false; } }) ? 0 : 1);
 
-.PHONY: run test build tested-cli bench fuzz test-engines-soak deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
+.PHONY: run test build icons tested-cli bench fuzz test-engines-soak deps deps-build deps-browser deps-check lint test-native test-browser test-page test-files screenshots readme-pictures
 
 run: build
 	node tests/page/serve.mjs www $(PORT)
@@ -69,7 +69,7 @@ build: deps-build
 	  $(PKG)/seashells_bg.wasm -o $(PKG)/seashells_bg.wasm
 	@raw=$$(stat -c %s $(PKG)/seashells_bg.wasm); gz=$$(gzip -9c $(PKG)/seashells_bg.wasm | wc -c); \
 	  printf 'wasm: %s bytes raw, %s bytes gzipped\n' $$raw $$gz
-	@id=$$(cat www/*.html www/*.js www/*.css www/*.svg www/*.webmanifest $(PKG)/seashells.js \
+	@id=$$(cat www/*.html www/*.js www/*.css www/*.svg www/*.png www/*.webmanifest $(PKG)/seashells.js \
 	  $(PKG)/seashells_bg.wasm | sha256sum | cut -c1-16); \
 	  printf '// Written by make build: the id of this build, which names its offline copy (www/service-worker.js).\nself.BUILD = "%s";\n' $$id > $(PKG)/build.js; \
 	  echo "build $$id"
@@ -158,6 +158,10 @@ bench: build deps-browser
 	cargo test --test native -- --ignored murex_resolutions::
 	cargo build --release --bin seashells
 	node tests/page/bench.mjs
+
+## The page's app icons (www/icon-*.png, named by its manifest), drawn from www/favicon.svg.
+icons: deps-browser
+	node tests/page/icons.mjs
 
 ## The README's pictures, taken by the page tests that check what they show.
 readme-pictures: build deps-browser

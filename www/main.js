@@ -4,12 +4,12 @@
 import init, { start } from './pkg/seashells.js';
 
 document.getElementById('reload')?.addEventListener('click', () => window.location.reload());
-keepOffline();
 
 /**
  * Registers the page's offline copy (service-worker.js) and says how it stands on <body
- * data-offline>: "ready" once this page is served by it (it then works with the network gone),
- * "update" when a newer build is kept and waiting, which the notice #update offers to load.
+ * data-offline>: "ready" once the copy is kept and serves this page (after that the page works
+ * with the network gone), "update" when a newer build is kept and waiting, which the notice
+ * #update offers to load.
  * Where the browser keeps no offline copy (no service workers, a page not served over HTTPS or
  * from this machine) the page works as before, online, and says why on the console.
  */
@@ -27,17 +27,23 @@ function keepOffline() {
     notice.hidden = false;
     document.getElementById('update-reload').onclick = () => registration.waiting?.postMessage('take-over');
   };
-  // The new build took over (asked for here, or in another tab): this page reloads into it,
-  // rather than run on with the old build's module beside the new build's workers.
+  // Another build took over a page that ran one already (asked for here or in another tab):
+  // this page reloads into it, rather than run on with the old build's module beside the new
+  // build's workers. A first visit's page, uncontrolled until its copy is kept, is taken over
+  // by the build it was served.
+  const ranOne = navigator.serviceWorker.controller !== null;
   let reloading = false;
   navigator.serviceWorker.addEventListener('controllerchange', () => {
-    if (body.dataset.offline === 'update' && !reloading) {
+    if ((ranOne || body.dataset.offline === 'update') && !reloading) {
       reloading = true;
       window.location.reload();
+      return;
     }
     ready();
   });
-  navigator.serviceWorker.register('service-worker.js').then((registration) => {
+  // The browser checks the worker and the build's id beside it past its HTTP cache, so that a
+  // new build is found on the next visit whatever the host's caching.
+  navigator.serviceWorker.register('service-worker.js', { updateViaCache: 'none' }).then((registration) => {
     ready();
     waiting(registration);
     registration.addEventListener('updatefound', () => {
@@ -59,3 +65,5 @@ try {
   message.hidden = false;
   document.body.dataset.state = 'error';
 }
+// Once the page runs (its module fetched), so that a first visit does not fetch it twice at once.
+keepOffline();

@@ -1,21 +1,26 @@
 // The page's offline copy. On the first visit it keeps every file the page runs on (the page,
 // its scripts, the WebAssembly module, the workers' scripts) in a cache named for this build
-// (pkg/build.js, written by `make build` from the files' bytes), and from then on serves those
-// files from it, network or none: the page, its module and its workers always come from one
-// build, so a page never runs with another build's module. A new build is found when the
-// browser checks this script and the build's id beside it; its files are kept in a cache of
-// their own while the page goes on with the old one, and it takes over only when the page asks
-// (its "Reload" under "A new version is ready"), or once no page of the old one is open. Any
-// other request (the README's pictures, a test's routes) goes to the network as it would
-// without this worker.
+// (pkg/build.js, written by `make build` from the files' bytes) and for this copy's place (two
+// copies of the page on one origin keep their own), and from then on serves those files from
+// it, network or none: the page, its module and its workers come from one build. A new build is
+// found when the browser checks this script and the build's id beside it (`main.js` asks it to
+// bypass the HTTP cache for both); its files are kept in a cache of their own while the page
+// goes on with the old one, and it takes over only when the page asks (its "Reload" under "A
+// new version of this page is ready"), or once no page of the old one is open. Any other
+// request (the README's pictures, a test's routes) goes to the network as it would without
+// this worker.
 importScripts('pkg/build.js');
 
-const CACHE = `seashells-${self.BUILD}`;
+const PLACE = `seashells ${self.registration.scope} `;
+const CACHE = `${PLACE}${self.BUILD}`;
+// The page is kept as the scope's root ('./'), which some hosts redirect index.html to.
 const FILES = [
-  'index.html',
+  './',
   'main.js',
   'style.css',
   'favicon.svg',
+  'icon-192.png',
+  'icon-512.png',
   'manifest.webmanifest',
   'worker.js',
   'drawing-worker.js',
@@ -31,7 +36,8 @@ function kept(request) {
   url.search = '';
   url.hash = '';
   if (request.method !== 'GET' || !url.href.startsWith(scope)) return null;
-  const name = url.href.slice(scope.length) || 'index.html';
+  const path = url.href.slice(scope.length);
+  const name = path === '' || path === 'index.html' ? './' : path;
   return FILES.includes(name) ? name : null;
 }
 
@@ -43,7 +49,7 @@ self.addEventListener('install', (event) => {
 self.addEventListener('activate', (event) => {
   event.waitUntil((async () => {
     for (const name of await caches.keys()) {
-      if (name.startsWith('seashells-') && name !== CACHE) await caches.delete(name);
+      if (name.startsWith(PLACE) && name !== CACHE) await caches.delete(name);
     }
     await self.clients.claim();
   })());
@@ -58,6 +64,10 @@ self.addEventListener('fetch', (event) => {
   if (name === null) return;
   event.respondWith((async () => {
     const cache = await caches.open(CACHE);
-    return (await cache.match(name)) ?? fetch(event.request);
+    const kept = await cache.match(name);
+    if (!kept) return fetch(event.request);
+    // A response made anew takes the request's address: a worker started with the page's
+    // query (`drawing-worker.js?workers=2`) still reads it from its own location.
+    return new Response(kept.body, kept);
   })());
 });

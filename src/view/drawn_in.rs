@@ -4,7 +4,8 @@
 //! else nowhere: the shell still grows, its pattern shows and its files are written, and the
 //! page's no-3D notice says why. A drawing worker that fails, at start or later, gives way to
 //! the page's thread; a renderer that fails there gives way to nothing. Each move is said in
-//! words once, and its cause goes to the console.
+//! words once: a move off the worker on the status or the message line, its cause on the
+//! console; a move to nothing in the no-3D notice, with its cause.
 
 /// Where the main view is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

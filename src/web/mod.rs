@@ -95,7 +95,8 @@ pub async fn start() -> Result<(), JsValue> {
     let main = match main_viewer(shell, background, shared()).await {
         Ok(main) => main,
         Err(why) => {
-            page::show_no_3d(&why);
+            let moved = DrawnIn::Page.fall_back(&why, false);
+            page::show_no_3d(moved.no_3d.as_deref().unwrap_or(&why));
             ViewerHandle::Here(Box::new(Viewer::without_drawing(
                 true,
                 background,

@@ -494,7 +494,7 @@ impl Session {
     /// only what it said after the last load the page sent reached it is of the shell shown
     /// (a viewer in a worker may send a frame before; see
     /// [`super::viewer_status::FrameReport::loads`]).
-    pub fn is_current(&self, loads: u32) -> bool {
+    fn is_current(&self, loads: u32) -> bool {
         loads == self.loads
     }
 
@@ -513,7 +513,7 @@ impl Session {
 
     /// After a frame of the viewer that drew the shell shown (`drawn`) or not, at `now`: what
     /// it said of itself (`status`) is shown, as [`Readout::frame`] decides.
-    pub fn viewed(&mut self, status: ViewStatus, drawn: bool, now: f64) {
+    fn viewed(&mut self, status: ViewStatus, drawn: bool, now: f64) {
         self.status = status;
         let shown = self.readout.frame(&self.status, drawn, now);
         for (name, value) in shown.signals {
@@ -728,6 +728,23 @@ mod tests {
             session.status().shell.as_ref().map(|s| s.rows_done),
             Some(5)
         );
+        // Frames of the stripes alone, the last of them drawn: the turbinate's status stays.
+        let stale = Heard {
+            statuses: vec![frame(1, 95, false), frame(1, 99, true)],
+            refused: Vec::new(),
+        };
+        session.heard(stale, false, false, 2.5);
+        assert!(
+            !session
+                .take_effects()
+                .iter()
+                .any(|e| matches!(e, Effect::Progress(..))),
+            "nothing of a shell left is shown"
+        );
+        assert_eq!(
+            session.status().shell.as_ref().map(|s| s.rows_done),
+            Some(5)
+        );
         let refused = Heard {
             refused: vec![(Some(2), "the turbinate could not grow".into())],
             ..Heard::default()
@@ -739,6 +756,14 @@ mod tests {
         ));
         assert!(signals(&effects).contains(&("state", "error".into())));
         assert!(session.current().is_none(), "no shell is shown");
+        // A command the viewer could not read is refused whatever was loaded.
+        let mut session = opened("#v=1&preset=stripes");
+        let unread = Heard {
+            refused: vec![(None, "a command could not be read".into())],
+            ..Heard::default()
+        };
+        session.heard(unread, false, false, 1.0);
+        assert!(session.current().is_none(), "said even so");
     }
 
     #[test]

@@ -10,7 +10,7 @@ import { browsers, composeSheet, shellTiles, waitForState } from './browser.mjs'
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
-const { sessions, openOn: openAt } = browsers(['WebGL2', 'WebGPU']);
+const { sessions, openOn: openAt } = browsers(['WebGL2']);
 const openOn = (backend, fragment) => openAt(backend, fragment, { width: 1000, height: 900 });
 
 /**

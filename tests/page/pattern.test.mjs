@@ -91,16 +91,21 @@ test('dragging a pattern slider redraws the whole pattern in the planar view whi
   try {
     await waitForState(page, ['growing']);
     assert.equal((await bottom()).drawn, 0, 'the end of the pattern is not grown yet');
-    for (const fraction of [0.04, 0.05]) {
-      await drag('pattern.model.d_a', fraction, 'input');
-    }
-    // The first drag's preview may still be the one said whole when the second one starts
-    // over: what counts is that the last one fills the planar view to its end.
-    await page.waitForFunction(() => {
+    // The planar view's last rows once every cell of them is drawn and, if `unlike` is given,
+    // they are not those pixels: a preview said whole and drawn to the end.
+    const whole = (unlike) => page.waitForFunction((unlike) => {
       const c = document.getElementById('planar');
       const { data } = c.getContext('2d').getImageData(0, c.height - 200, c.width, 200);
-      return document.body.dataset.preview === 'whole' && data.every((v, i) => i % 4 !== 3 || v !== 0);
-    }, null, { timeout: 60_000, polling: 100 });
+      if (document.body.dataset.preview !== 'whole' || !data.every((v, i) => i % 4 !== 3 || v !== 0)) return null;
+      let hash = 0;
+      for (let i = 0; i < data.length; i += 1) hash = (hash * 31 + data[i]) >>> 0;
+      return hash !== unlike ? hash : null;
+    }, unlike, { timeout: 60_000, polling: 100 }).then((h) => h.jsonValue());
+    await drag('pattern.model.d_a', 0.04, 'input');
+    const first = await whole(null);
+    // The second drag's preview starts over; the view is whole again only with its own rows.
+    await drag('pattern.model.d_a', 0.05, 'input');
+    await whole(first);
     const filled = await bottom();
     const state = await page.evaluate(() => ({ ...document.body.dataset }));
     assert.equal(state.state, 'growing', 'the whole pattern came before the shell grew');

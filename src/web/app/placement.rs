@@ -4,6 +4,7 @@
 
 use super::{App, Moving, show_backend, show_drawn_in};
 use crate::render::Canvas;
+use crate::view::drawn_in::DrawnIn;
 use crate::web::canvases::replace;
 use crate::web::debug::Loss;
 use crate::web::page::{self, show_message};
@@ -58,8 +59,8 @@ impl App {
         if let Some(log) = &moved.log {
             web_sys::console::info_1(&log.into());
         }
-        if let Some(why) = moved.no_3d {
-            self.without_3d(&why);
+        if moved.to == DrawnIn::Nowhere {
+            self.without_3d(moved.no_3d.as_deref().unwrap_or(&why));
             return;
         }
         if let Some(words) = moved.say {
