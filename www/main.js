@@ -20,8 +20,10 @@ function keepOffline() {
   }
   const body = document.body;
   const ready = () => { if (navigator.serviceWorker.controller && body.dataset.offline !== 'update') body.dataset.offline = 'ready'; };
+  // A worker waits as an update only beside an active one: a first visit's worker passes through
+  // "installed" too, and Firefox may tell the page so after that worker already controls it.
   const waiting = (registration) => {
-    if (!registration.waiting || !navigator.serviceWorker.controller) return;
+    if (!registration.waiting || !registration.active || !navigator.serviceWorker.controller) return;
     body.dataset.offline = 'update';
     const notice = document.getElementById('update');
     notice.hidden = false;
@@ -48,8 +50,9 @@ function keepOffline() {
     waiting(registration);
     registration.addEventListener('updatefound', () => {
       const installing = registration.installing;
+      const update = registration.active !== null;
       installing?.addEventListener('statechange', () => {
-        if (installing.state === 'installed') waiting(registration);
+        if (installing.state === 'installed' && update) waiting(registration);
         if (installing.state === 'activated') ready();
       });
     });
