@@ -169,6 +169,8 @@ readme-pictures: build deps-browser
 	cp tests/page/screenshots/shape-map-WebGL2.png www/img/shape-map.png
 	$(XVFB) node --test --test-name-pattern='breeding: the chosen.*WebGL2' tests/page/breed.test.mjs
 	cp tests/page/screenshots/breed-generations-WebGL2.png www/img/breeding.png
+	$(XVFB) node --test --test-name-pattern='the keys and a swipe' tests/page/stories.test.mjs
+	cp tests/page/screenshots/story-step.png www/img/story-step.png
 
 ## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…' [TURN=20]
 

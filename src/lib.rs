@@ -15,6 +15,7 @@ pub mod presets;
 pub mod shape;
 pub mod share;
 pub mod spec;
+pub mod stories;
 pub mod variation;
 pub mod view;
 pub mod work;

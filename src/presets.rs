@@ -2,7 +2,7 @@
 //! figure and paper it reproduces.
 
 use crate::spec::ShellSpec;
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use std::sync::OnceLock;
 
 include!(concat!(env!("OUT_DIR"), "/species.rs"));
@@ -60,7 +60,7 @@ pub struct Preset {
 }
 
 /// The first view of a preset, relative to looking into its opening.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct View {
     /// Turn about the vertical, degrees.

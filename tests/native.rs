@@ -29,6 +29,7 @@ mod pattern;
 mod simulated_workers;
 mod simulator;
 mod species;
+mod stories;
 mod textures;
 mod viewer_message;
 mod workers;

@@ -62,6 +62,8 @@ pub struct OrbitCamera {
     whole: (Vec3, f32),
     /// Whether the camera follows the growing shell (until the user moves it).
     following: bool,
+    /// The yaw that looks into the shell's front (its opening).
+    facing: f32,
     default_yaw: f32,
     default_pitch: f32,
     /// Angle around the vertical axis.
@@ -85,12 +87,24 @@ impl OrbitCamera {
             radius,
             whole: (target, radius),
             following: false,
+            facing,
             default_yaw: facing + yaw,
             default_pitch,
             yaw: facing + yaw,
             pitch: default_pitch,
             zoom: 1.0,
         }
+    }
+
+    /// The same framing seen from another first view, turned by `yaw` and raised by `pitch`
+    /// (radians) from the front as [`Self::framing`] takes them; the view goes there, as a
+    /// reset would take it, and follows the growth if it did.
+    pub fn turned(mut self, yaw: f32, pitch: f32) -> Self {
+        self.default_yaw = self.facing + yaw;
+        self.default_pitch = (DEFAULT_PITCH + pitch).clamp(-1.48, 1.48);
+        let following = self.following;
+        self.reset(following);
+        self
     }
 
     /// The same view, following the growing shell from `grown`, the part grown so far.
@@ -256,6 +270,33 @@ mod tests {
         assert!(cam.zoom.is_finite());
         cam.reset(false);
         assert_eq!(cam.zoom, 1.0);
+    }
+
+    #[test]
+    fn a_turned_camera_looks_as_one_framed_from_that_side_and_resets_there() {
+        let b = unit_box();
+        let (yaw, pitch) = (1.2, 0.6);
+        let asked = OrbitCamera::framing(&b, DVec3::Y, yaw, pitch);
+        let mut moved = OrbitCamera::framing(&b, DVec3::Y, 0.0, 0.0);
+        moved.orbit(0.3, -0.2);
+        moved.zoom_by(2.0);
+        let turned = moved.turned(yaw, pitch);
+        assert_eq!(turned.eye(), asked.eye());
+        let mut reset = turned;
+        reset.orbit(0.5, 0.1);
+        reset.reset(false);
+        assert_eq!(
+            reset.eye(),
+            asked.eye(),
+            "a reset returns to the turned view"
+        );
+        assert!(
+            OrbitCamera::framing(&b, DVec3::Y, 0.0, 0.0)
+                .following(&grown(0.1))
+                .turned(yaw, pitch)
+                .following,
+            "a camera following the growth still follows it"
+        );
     }
 
     fn grown(size: f64) -> Bounds {

@@ -1,5 +1,6 @@
-//! Gestures on the view: one pointer dragging orbits, two pinching zoom, a wheel zooms. Pure,
-//! so the web layer only forwards pointer events (which cover mouse, pen and touch alike).
+//! Gestures on the view: one pointer dragging orbits, two pinching zoom, a wheel zooms, and a
+//! swipe across a story's card turns its page. Pure, so the web layer only forwards pointer
+//! events (which cover mouse, pen and touch alike).
 
 use crate::view::camera::OrbitCamera;
 use std::collections::BTreeMap;
@@ -49,6 +50,19 @@ impl Pointers {
     }
 }
 
+/// The shortest stroke across that is a swipe, CSS pixels.
+const SWIPE_DISTANCE: f32 = 48.0;
+/// The longest a swipe takes, milliseconds: a slower stroke is reading or selecting text.
+const SWIPE_TIME: f64 = 800.0;
+
+/// Where a stroke of (`dx`, `dy`) CSS pixels over `ms` milliseconds across a story's card goes:
+/// to the next step when it swipes leftwards (true), to the one before when rightwards
+/// (false); none unless it is long, quick and mostly across.
+pub fn swipe(dx: f32, dy: f32, ms: f64) -> Option<bool> {
+    (dx.abs() >= SWIPE_DISTANCE && dx.abs() > 2.0 * dy.abs() && ms <= SWIPE_TIME)
+        .then_some(dx < 0.0)
+}
+
 /// The zoom factor for a wheel movement of `delta` pixels.
 pub fn wheel_zoom(delta: f64) -> f32 {
     (-delta * 0.0015).exp() as f32
@@ -57,6 +71,23 @@ pub fn wheel_zoom(delta: f64) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_quick_stroke_across_turns_a_storys_page_and_others_do_not() {
+        assert_eq!(
+            swipe(-120.0, 10.0, 200.0),
+            Some(true),
+            "leftwards: the next step"
+        );
+        assert_eq!(
+            swipe(90.0, -20.0, 300.0),
+            Some(false),
+            "rightwards: the one before"
+        );
+        assert_eq!(swipe(-20.0, 0.0, 100.0), None, "too short: a tap");
+        assert_eq!(swipe(-120.0, 100.0, 200.0), None, "mostly down: a scroll");
+        assert_eq!(swipe(-120.0, 0.0, 2000.0), None, "slow: selecting words");
+    }
     use crate::mesh::Bounds;
     use glam::DVec3;
 

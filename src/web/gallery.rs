@@ -1,5 +1,6 @@
-//! The gallery: every preset in species/, grouped by where it comes from, each a card with its
-//! name, the figure it reproduces, a line of description and a picture of the shell. The cards
+//! The gallery: the stories of species/stories/, each a card with its title, its steps and a
+//! line about it; then every preset in species/, grouped by where it comes from, each a card
+//! with its name, the figure it reproduces, a line of description and a picture of the shell. The cards
 //! are plain links to the preset's fragment, so the browser's history does the navigation; the
 //! shells are grown whole by the pool of workers and drawn by a second viewer on a small canvas
 //! laid out off the screen as they come, each card's picture a PNG read back from it.
@@ -14,6 +15,7 @@ use crate::presets::{Preset, presets};
 use crate::render::Canvas;
 use crate::share::link;
 use crate::spec::ShellSpec;
+use crate::stories::stories;
 use crate::work::message::WholeShell;
 use crate::work::picture_queue::{PictureQueue, Place, Wanted};
 use crate::work::viewer_command::ViewCommand;
@@ -23,8 +25,23 @@ use std::collections::VecDeque;
 use std::rc::Rc;
 use web_sys::{Element, HtmlImageElement};
 
-/// Fills `container` with one section per group and one card per preset.
+/// Fills `container` with the stories, then one section per group and one card per preset.
 pub fn build(container: &Element) {
+    let section = create("section", "group stories", None);
+    let heading = create("h2", "", Some("Stories"));
+    let cards = create("div", "cards", None);
+    append(&section, &[&heading, &cards]);
+    append(container, &[&section]);
+    for story in stories() {
+        let card = create("a", "story-card", None);
+        attr(&card, "href", &format!("#story={}", story.id));
+        attr(&card, "data-story", story.id);
+        let title = create("h3", "", Some(&story.title));
+        let steps = create("p", "source", Some(&format!("{} steps", story.steps.len())));
+        let summary = create("p", "description", Some(&story.summary));
+        append(&card, &[&title, &steps, &summary]);
+        append(&cards, &[&card]);
+    }
     let mut group = None;
     let mut grid: Option<Element> = None;
     for preset in presets() {

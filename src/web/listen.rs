@@ -1,11 +1,12 @@
 //! The page's listeners: the window's address and theme, the shell's canvas (orbit, zoom,
-//! reset; again on a fresh canvas that took its place), every control, and the keyboard, whose
-//! rules are the core's (`work::shortcuts`). Each hands what happened to the app.
+//! reset; again on a fresh canvas that took its place), every control, a swipe across a
+//! story's card, and the keyboard, whose rules are the core's (`work::shortcuts`). Each hands what happened to the app.
 
 use super::canvases::canvas;
 use super::page;
 use super::record;
 use crate::export::Download;
+use crate::view::gestures;
 use crate::web::app::{App, Shared};
 use crate::web::dom;
 use crate::work::recording::Support;
@@ -189,6 +190,28 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
             a.stop_recording("the tab was hidden");
         }
     })?;
+    // A swipe across the story's card turns its page, as the core reads the stroke.
+    if let Some(card) = page::element("story") {
+        let start = Rc::new(std::cell::Cell::new(None));
+        let pressed = Rc::clone(&start);
+        on(
+            &card.clone().into(),
+            "pointerdown",
+            app,
+            move |_, e: PointerEvent| {
+                pressed.set(Some((e.client_x(), e.client_y(), e.time_stamp())));
+            },
+        )?;
+        on(&card.into(), "pointerup", app, move |a, e: PointerEvent| {
+            let Some((x, y, t)) = start.take() else {
+                return;
+            };
+            let (dx, dy) = ((e.client_x() - x) as f32, (e.client_y() - y) as f32);
+            if let Some(forward) = gestures::swipe(dx, dy, e.time_stamp() - t) {
+                a.story_step(forward);
+            }
+        })?;
+    }
     on(&document, "keydown", app, |a, e: KeyboardEvent| {
         let target = e
             .target()
@@ -201,6 +224,7 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
             target,
             shell_shown: a.has_shell(),
             covered: a.covered(),
+            in_story: a.in_story(),
         };
         let Some(shortcut) = shortcuts::shortcut(press) else {
             return;
@@ -216,6 +240,7 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
             Shortcut::ToggleViews => a.toggle_views(),
             Shortcut::Fullscreen => a.toggle_fullscreen(),
             Shortcut::Speed(change) => a.set_speed(change.of(a.speed())),
+            Shortcut::StoryStep(forward) => a.story_step(forward),
         }
         e.prevent_default();
     })?;

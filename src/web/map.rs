@@ -14,6 +14,7 @@ use super::workers::Workers;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, Section, display};
+use crate::stories::MapAxes;
 use crate::variation::map_plan::{self, MapPlan};
 use crate::variation::parameter_map::{
     Axis, PHONE_SIDE, ParameterMap, SIDE, first_axes, parameters,
@@ -146,11 +147,13 @@ impl MapView {
         self.open
     }
 
-    /// Shows the map for `spec`, over its first two parameters, and starts filling it.
+    /// Shows the map for `spec`, over the two numbers `axes` names (a story's step asks for
+    /// them) or else its first two parameters, and starts filling it.
     pub fn open(
         &mut self,
         preset: &'static Preset,
         spec: &ShellSpec,
+        axes: Option<&MapAxes>,
         workers: &mut Workers,
         pictures: &mut Pictures,
     ) {
@@ -175,7 +178,10 @@ impl MapView {
             signal("map", "none");
             return;
         }
-        let (across, down) = first_axes(&self.parameters);
+        let at = |key: &str| self.parameters.iter().position(|(f, _)| f.key == key);
+        let (across, down) = axes
+            .and_then(|axes| at(&axes.across).zip(at(&axes.down)))
+            .unwrap_or_else(|| first_axes(&self.parameters));
         x.offer(self.kind, &self.parameters, across);
         y.offer(self.kind, &self.parameters, down);
         self.draw(preset, spec, workers, pictures);

@@ -16,6 +16,7 @@ use crate::share::presentation::Presentation;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
+use crate::stories::{self, Growth, MapAxes, Opened, StoryAt};
 use crate::variation::breeding::Breeding;
 
 /// Quiet time after an edit before the address bar is updated, milliseconds.
@@ -71,6 +72,11 @@ pub enum Effect {
     Sizes,
     /// Show this backend as the one the shell is drawn with.
     Backend(String),
+    /// Show this step of a story beside the shell (its words, its figure, the links to the
+    /// steps before and after), or no story.
+    Story(Option<StoryAt>),
+    /// Open the parameter map over the shell shown, spanning these two numbers.
+    OpenMap(MapAxes),
 }
 
 /// What the viewer said since the page's last frame.
@@ -117,6 +123,8 @@ pub struct Session {
     breeding: bool,
     /// Loads sent to the viewer: a frame it made before the last reached it is of a shell left.
     loads: u32,
+    /// The story's step the last link opened, if it opened one.
+    story: Option<StoryAt>,
     effects: Vec<Effect>,
 }
 
@@ -148,6 +156,18 @@ impl Session {
         &self.status
     }
 
+    /// Whether the last link opened a story's step.
+    pub fn in_story(&self) -> bool {
+        self.story.is_some()
+    }
+
+    /// The link (a fragment) of the story's next step (`forward`) or its previous one, if the
+    /// page shows a story's step that has one.
+    pub fn story_step(&self, forward: bool) -> Option<String> {
+        let at = self.story.as_ref()?;
+        if forward { at.next() } else { at.previous() }
+    }
+
     fn push(&mut self, effect: Effect) {
         self.effects.push(effect);
     }
@@ -170,27 +190,67 @@ impl Session {
     }
 
     /// Follows the URL fragment `fragment` at `now` (closing the parameter map, whose tiles
-    /// are links): the gallery, a shell, or a lineage of shells bred from one, shown with its
-    /// last parent behind it. An embed for a reader who asked for less motion
-    /// (`reduced_motion`) shows the shell grown whole, still.
+    /// are links): the gallery, a shell, a lineage of shells bred from one (shown with its
+    /// last parent behind it), or a story's step (the shell of its link, shown as the step
+    /// asks: grown at once, from another side, under a parameter map). An embed for a reader
+    /// who asked for less motion (`reduced_motion`) shows the shell grown whole, still.
     pub fn route(&mut self, fragment: &str, reduced_motion: bool, now: f64) {
         self.push(Effect::CloseMap);
-        if fragment.trim_start_matches('#').is_empty() {
-            self.close_breeding(now);
-            self.push(Effect::StopRecording("you went back to the gallery"));
-            self.present(Presentation::default());
-            self.show(true);
-            self.push(Effect::Say(Say::Hide));
-            self.signal("state", "gallery");
-            return;
+        let opened = stories::open(fragment);
+        self.story = opened
+            .as_ref()
+            .and_then(|o| o.as_ref().ok())
+            .map(|o| o.at.clone());
+        self.push(Effect::Story(self.story.clone()));
+        match opened {
+            None if fragment.trim_start_matches('#').is_empty() => self.gallery(now),
+            None => self.open(fragment, Vec::new(), Growth::Grow, reduced_motion, now),
+            Some(Err(problem)) => {
+                self.gallery(now);
+                self.say(&[problem]);
+            }
+            Some(Ok(Opened { at, link, problems })) => {
+                let step = at.step();
+                self.open(&link, problems, step.growth, reduced_motion, now);
+                if let Some((preset, _)) = &self.current {
+                    self.view(ViewCommand::Turn(step.turn.unwrap_or(preset.view)));
+                }
+                if let Some(axes) = &step.map {
+                    self.push(Effect::OpenMap(axes.clone()));
+                }
+            }
         }
+    }
+
+    /// Shows the gallery at `now`, breeding and a recording left.
+    fn gallery(&mut self, now: f64) {
+        self.close_breeding(now);
+        self.push(Effect::StopRecording("you went back to the gallery"));
+        self.present(Presentation::default());
+        self.show(true);
+        self.push(Effect::Say(Say::Hide));
+        self.signal("state", "gallery");
+    }
+
+    /// Shows the shell of the link `fragment` (`growth`: grown from its apex, or at once and
+    /// still), saying what could not be used as given, with the `problems` of the link that
+    /// led to it.
+    fn open(
+        &mut self,
+        fragment: &str,
+        mut problems: Vec<Problem>,
+        growth: Growth,
+        reduced_motion: bool,
+        now: f64,
+    ) {
         let Decoded {
             preset,
             spec,
             presentation,
             lineage,
-            mut problems,
+            problems: said,
         } = link::decode(fragment);
+        problems.extend(said);
         let (preset, spec) = match lineage {
             Some(lineage) => {
                 self.push(Effect::StopRecording("you chose to breed shells"));
@@ -210,7 +270,7 @@ impl Session {
         self.say(&problems);
         self.present(presentation);
         self.show(false);
-        let still = presentation.ui.embedded() && reduced_motion;
+        let still = (presentation.ui.embedded() && reduced_motion) || growth == Growth::Whole;
         match self.change_to(preset, &spec, still) {
             ShellChange::Same => {}
             ShellChange::Restyle => self.restyle(preset, spec),
@@ -625,6 +685,69 @@ mod tests {
                 .iter()
                 .any(|e| matches!(e, Effect::StopRecording("you went back to the gallery")))
         );
+    }
+
+    #[test]
+    fn a_storys_link_shows_its_step_as_the_step_asks_and_moves_on_by_its_links() {
+        use crate::stories::{Growth, stories};
+        let story = stories()
+            .iter()
+            .find(|s| s.id == "coiling")
+            .expect("coiling");
+        let mut session = Session::default();
+        for (i, step) in story.steps.iter().enumerate() {
+            session.route(&format!("#story=coiling&step={}", i + 1), false, i as f64);
+            let effects = session.take_effects();
+            let shown = effects.iter().find_map(|e| match e {
+                Effect::Story(at) => Some(at.clone()),
+                _ => None,
+            });
+            let at = shown.flatten().expect("the step is shown");
+            assert_eq!((at.story.id, at.index), ("coiling", i));
+            assert!(session.in_story());
+            let decoded = link::decode(&step.link);
+            let (preset, spec) = session.current().expect("the step's shell");
+            assert_eq!(
+                link::encode(preset, spec),
+                link::encode(decoded.preset, &decoded.spec)
+            );
+            let said = commands(&effects);
+            assert_eq!(said.last().map(String::as_str), Some("Turn"), "{said:?}");
+            let whole = effects
+                .iter()
+                .any(|e| matches!(e, Effect::View(ViewCommand::Load { finish: true, .. })));
+            if said.contains(&"Load".to_string()) {
+                assert_eq!(whole, step.growth == Growth::Whole, "step {}", i + 1);
+            }
+            let map = effects.iter().find_map(|e| match e {
+                Effect::OpenMap(axes) => Some(axes.clone()),
+                _ => None,
+            });
+            assert_eq!(map, step.map, "step {}", i + 1);
+            let last = i + 1 == story.steps.len();
+            assert_eq!(session.story_step(true).is_none(), last);
+            assert_eq!(session.story_step(false).is_none(), i == 0);
+        }
+        assert!(
+            story.steps.iter().any(|s| s.map.is_some()),
+            "the coiling story opens Raup's map"
+        );
+
+        session.route("#story=nautilus", false, 9.0);
+        let effects = session.take_effects();
+        assert!(session.in_gallery() && !session.in_story());
+        assert!(effects.iter().any(|e| matches!(e, Effect::Story(None))));
+        assert!(
+            effects.iter().any(
+                |e| matches!(e, Effect::Say(Say::Show(words)) if words.contains("'nautilus'"))
+            )
+        );
+
+        session.route("#v=1&preset=stripes", false, 10.0);
+        let effects = session.take_effects();
+        assert!(!session.in_story(), "a shell's link leaves the story");
+        assert!(effects.iter().any(|e| matches!(e, Effect::Story(None))));
+        assert!(!commands(&effects).contains(&"Turn".to_string()));
     }
 
     #[test]

@@ -4,8 +4,10 @@
 //! The rules, in order: a key with Ctrl, Meta or Alt is the browser's; without a shell shown
 //! (the gallery) no key is the page's; over the map or the offspring the arrows move among the
 //! tiles (but not in a text field or a choice) and Escape leaves them from any control; a key
-//! pressed in a field, a button, a disclosure or a link is that control's; otherwise Space
-//! plays or pauses, R restarts, S or → steps, E or End finishes, C resets the camera, V
+//! pressed in a field, a button, a disclosure or a link is that control's, but in a story Page
+//! Down and Page Up move to its next and previous step from any control but a field; otherwise
+//! in a story → and ← move to its next and previous step, and Space
+//! plays or pauses, R restarts, S (or → outside a story) steps, E or End finishes, C resets the camera, V
 //! switches the views, F goes full screen, + (or =) and − change the speed by half again.
 
 /// The kind of element a key press goes to.
@@ -43,6 +45,8 @@ pub struct Press<'a> {
     pub shell_shown: bool,
     /// The map or the offspring cover the shell.
     pub covered: bool,
+    /// A story's step is shown.
+    pub in_story: bool,
 }
 
 /// What a key press does; the page then keeps the browser from acting on it too.
@@ -61,6 +65,8 @@ pub enum Shortcut {
     Fullscreen,
     /// Changes the growth speed.
     Speed(SpeedChange),
+    /// To the story's next step (true) or its previous one.
+    StoryStep(bool),
 }
 
 /// A press of + or −: the speed by half again, or back.
@@ -103,10 +109,19 @@ pub fn shortcut(press: Press<'_>) -> Option<Shortcut> {
             return Some(Shortcut::Leave);
         }
     }
+    if press.in_story && press.target != Target::Field {
+        match press.key {
+            "PageDown" => return Some(Shortcut::StoryStep(true)),
+            "PageUp" => return Some(Shortcut::StoryStep(false)),
+            _ => {}
+        }
+    }
     if press.target != Target::Page {
         return None;
     }
     Some(match press.key {
+        "ArrowRight" if press.in_story => Shortcut::StoryStep(true),
+        "ArrowLeft" if press.in_story => Shortcut::StoryStep(false),
         " " => Shortcut::PlayPause,
         "r" => Shortcut::Restart,
         "s" | "ArrowRight" => Shortcut::Step,
@@ -131,6 +146,7 @@ mod tests {
             target,
             shell_shown: true,
             covered,
+            in_story: false,
         }
     }
 
@@ -201,6 +217,42 @@ mod tests {
             "the other keys still work the viewer behind"
         );
         assert_eq!(shortcut(press("Escape", Target::Page, false)), None);
+    }
+
+    #[test]
+    fn in_a_story_the_arrows_and_page_keys_move_between_steps() {
+        let story = |key, target, covered| {
+            shortcut(Press {
+                in_story: true,
+                ..press(key, target, covered)
+            })
+        };
+        assert_eq!(
+            story("ArrowRight", Target::Page, false),
+            Some(Shortcut::StoryStep(true))
+        );
+        assert_eq!(
+            story("ArrowLeft", Target::Page, false),
+            Some(Shortcut::StoryStep(false))
+        );
+        assert_eq!(story("s", Target::Page, false), Some(Shortcut::Step));
+        assert_eq!(
+            story("PageDown", Target::Control, false),
+            Some(Shortcut::StoryStep(true)),
+            "from the story's own buttons too"
+        );
+        assert_eq!(
+            story("PageUp", Target::Page, true),
+            Some(Shortcut::StoryStep(false)),
+            "over a step's map"
+        );
+        assert_eq!(
+            story("ArrowRight", Target::Page, true),
+            Some(Shortcut::Tiles(1, 0)),
+            "over a step's map the arrows move among its tiles"
+        );
+        assert_eq!(story("PageDown", Target::Field, false), None);
+        assert_eq!(story("ArrowLeft", Target::Control, false), None);
     }
 
     #[test]

@@ -7,7 +7,7 @@
 
 use crate::export::Download;
 use crate::export::print_size::PrintSize;
-use crate::presets::Preset;
+use crate::presets::{Preset, View};
 use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
@@ -46,6 +46,9 @@ pub enum ViewCommand {
     Layout(Layout),
     /// Back to the first view (following the growth again on the main view).
     ResetCamera,
+    /// The shell's first view is this one, relative to its opening (a story's step turns
+    /// the camera): the view goes there, now or once the shell is built.
+    Turn(View),
     /// A pointer pressed, moved, or let go over the canvas.
     Pointer(PointerChange),
     /// A wheel turned by this many pixels.

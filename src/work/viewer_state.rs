@@ -19,7 +19,7 @@ use crate::export::estimate::Counts;
 use crate::generator::{Advance, EdgeRuns};
 use crate::mesh::Bounds;
 use crate::pattern::run::planar_rows;
-use crate::presets::Preset;
+use crate::presets::{Preset, View};
 use crate::share::link;
 use crate::share::presentation::Layout;
 use crate::spec::ShellSpec;
@@ -51,6 +51,8 @@ pub struct Growing {
     /// The worker's session growing it, and the page's copy of it.
     growth: GrowthSession,
     camera: OrbitCamera,
+    /// The first view, relative to the opening: the preset's, or the one asked for.
+    view: View,
     /// Whether the planar view shows a pattern (this shell's, or the one previewed).
     planar_open: bool,
     /// The planar view's cells and rows for this shell's pattern.
@@ -296,6 +298,16 @@ impl ViewerState {
                 }
                 self.dirty = true;
             }
+            ViewCommand::Turn(view) => {
+                if let Some(g) = &mut self.growing {
+                    g.view = view;
+                    if g.growth.replica().shell().is_some() {
+                        let (yaw, pitch) = (view.yaw.to_radians(), view.pitch.to_radians());
+                        g.camera = g.camera.turned(yaw, pitch);
+                    }
+                }
+                self.dirty = true;
+            }
             ViewCommand::Pointer(change) => self.pointer(change),
             ViewCommand::Wheel(delta) => {
                 if let Some(g) = &mut self.growing {
@@ -353,6 +365,7 @@ impl ViewerState {
             spec: spec.clone(),
             growth,
             camera: OrbitCamera::framing(&placeholder, DVec3::Z, 0.0, 0.0),
+            view: preset.view,
             planar_open: false,
             planar_size: None,
             preview: None,
@@ -381,6 +394,7 @@ impl ViewerState {
             spec: spec.clone(),
             growth: GrowthSession::whole(replica),
             camera: OrbitCamera::framing(&shell.bounds, shell.front, 0.0, 0.0),
+            view: preset.view,
             planar_open: false,
             planar_size: None,
             preview: None,
@@ -399,8 +413,8 @@ impl ViewerState {
         let mut camera = OrbitCamera::framing(
             &shell.bounds,
             shell.front,
-            g.preset.view.yaw.to_radians(),
-            g.preset.view.pitch.to_radians(),
+            g.view.yaw.to_radians(),
+            g.view.pitch.to_radians(),
         );
         if self.follows {
             camera = camera.following(&grown);

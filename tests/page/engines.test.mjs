@@ -4,8 +4,8 @@
 // at a coarse resolution) grows and is drawn in the viewer, read in pixels; an edit in the
 // panel restarts growth and changes the address, and the new address gives the native core's
 // pattern bit for bit; Kawaguchi's four views in a line drawing show in every quarter; a lost
-// WebGL context is survived; a GLB download passes the Khronos validator; and no console
-// error. Each engine draws where it can:
+// WebGL context is survived; a story's step is shown and moves on; a GLB download passes the
+// Khronos validator; and no console error. Each engine draws where it can:
 // Chromium and Firefox in the drawing worker, WebKit (no WebGL2 on an OffscreenCanvas) on the
 // page's thread. The whole suite runs on Chromium (the other test files); this one is the
 // smoke test of the others. Firefox and WebKit run headed, under xvfb-run (make test).
@@ -168,6 +168,28 @@ for (const engine of ONLY) {
         }
       });
     }
+
+    test("a story's step shows its words beside its shell, drawn, and Next moves on without a reload", async () => {
+      const page = await open('#story=waves&step=1');
+      try {
+        await page.waitFor(() => document.body.dataset.story === 'story=waves&step=1', null, 60_000, 'the first step');
+        await page.waitForState(['growing', 'grown']);
+        const words = await page.evaluate(() => document.getElementById('story-text').textContent);
+        assert.ok(words.length > 100, `the step says what to look at: ${words}`);
+        await page.evaluate(() => { window.sameDocument = true; });
+        await page.click('#story-next');
+        await page.waitFor(() => document.body.dataset.story === 'story=waves&step=2'
+          && document.getElementById('story-count').textContent.startsWith('Step 2 of'), null, 60_000, 'the second step');
+        await page.waitForState(['growing', 'grown']);
+        await page.click('#finish');
+        await page.waitForState(['grown'], 600_000);
+        assert.equal(await page.evaluate(() => window.sameDocument), true, 'Next reloaded the page');
+        await shotDrawn(page, '#shell', `${engine}-story`, "the story's shell");
+        assert.deepEqual(await page.errors(), []);
+      } finally {
+        await page.close();
+      }
+    });
 
     test('the shells were drawn where the engine draws them', () => {
       assert.ok(fallbacks.length < SHELLS.length, `every shell fell back to the page's thread: ${fallbacks}`);

@@ -13,6 +13,7 @@ const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
 const IDS = readdirSync(`${ROOT}species`).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
+const STORIES = readdirSync(`${ROOT}species/stories`).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
 let browser;
 let base;
 let close;
@@ -38,7 +39,11 @@ test('the gallery lists every preset in its group, each with a picture of its sh
       assert.match(names, new RegExp(species));
     }
     const groups = await page.$$eval('.group h2', (hs) => hs.map((h) => h.textContent));
-    assert.deepEqual(groups, ['Shell shapes', 'Pigmentation patterns', 'Cellular automaton', "Kawaguchi's GROWTH", 'Implicit surfaces']);
+    assert.deepEqual(groups, ['Stories', 'Shell shapes', 'Pigmentation patterns', 'Cellular automaton', "Kawaguchi's GROWTH", 'Implicit surfaces']);
+    // The stories first, each a card linking to its first step.
+    const stories = await page.$$eval('a.story-card', (as) => as.map((a) => [a.dataset.story, a.getAttribute('href')]));
+    assert.deepEqual(stories.map(([id]) => id).sort(), [...STORIES].sort());
+    for (const [id, href] of stories) assert.equal(href, `#story=${id}`);
     await page.waitForFunction(() => document.body.dataset.pictures === 'done', null, { timeout: 240_000 });
     // Each card shows a PNG read back from the pictures' canvas, by an object URL.
     const pictures = await cardPictures(page);

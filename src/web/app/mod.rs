@@ -24,7 +24,9 @@ mod placement;
 mod recording;
 mod show;
 
-use show::{fix_canvas, location_hash, present, say, show_backend, show_drawn_in, show_speed};
+use show::{
+    fix_canvas, location_hash, present, say, show_backend, show_drawn_in, show_speed, show_story,
+};
 
 use super::activity;
 use super::breed::BreedView;
@@ -147,6 +149,20 @@ impl App {
         self.session.current().is_some()
     }
 
+    /// Whether a story's step is shown.
+    pub fn in_story(&self) -> bool {
+        self.session.in_story()
+    }
+
+    /// Goes to the story's next step (`forward`) or its previous one, as a link followed.
+    pub fn story_step(&self, forward: bool) {
+        if let (Some(fragment), Some(window)) =
+            (self.session.story_step(forward), web_sys::window())
+        {
+            window.location().set_hash(&fragment).ok();
+        }
+    }
+
     /// Follows the URL fragment, as the session decides.
     pub fn route(&mut self) {
         let fragment = location_hash();
@@ -216,6 +232,18 @@ impl App {
                     }
                 }
                 Effect::Backend(backend) => show_backend(Some(backend)),
+                Effect::Story(at) => show_story(at.as_ref()),
+                Effect::OpenMap(axes) => {
+                    if let Some((preset, spec)) = self.session.current() {
+                        self.map.open(
+                            preset,
+                            spec,
+                            Some(&axes),
+                            &mut self.workers.borrow_mut(),
+                            &mut self.pictures,
+                        );
+                    }
+                }
             }
         }
     }

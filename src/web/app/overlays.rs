@@ -15,6 +15,7 @@ impl App {
             self.map.open(
                 preset,
                 &spec,
+                None,
                 &mut self.workers.borrow_mut(),
                 &mut self.pictures,
             );

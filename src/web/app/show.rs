@@ -1,8 +1,10 @@
 //! What the page shows around the viewer, as the app applies it: which backend draws and
 //! where, the message line, the speed box, the presentation (the interface, one view or
-//! Kawaguchi's four with their names), the canvas held at a recording's size.
+//! Kawaguchi's four with their names), the story's step beside the shell, the canvas held at
+//! a recording's size.
 
 use crate::share::presentation::{Layout, Presentation};
+use crate::stories::StoryAt;
 use crate::view::panes::arrangement;
 use crate::web::dom;
 use crate::web::page::{self, element, set_text, show_message, signal};
@@ -89,4 +91,38 @@ pub(super) fn location_hash() -> String {
     web_sys::window()
         .and_then(|w| w.location().hash().ok())
         .unwrap_or_default()
+}
+
+/// Shows the story's step `at` beside the shell (its story's title, where it is, its words, the
+/// paper's figure, the links to the steps before and after), or hides the story.
+pub(super) fn show_story(at: Option<&StoryAt>) {
+    signal("story", &at.map_or(String::new(), |at| at.link()));
+    let Some(section) = element("story") else {
+        return;
+    };
+    section.set_hidden(at.is_none());
+    let Some(at) = at else { return };
+    let step = at.step();
+    set_text("story-title", &at.story.title);
+    set_text("story-count", &at.count());
+    set_text("story-step-title", &step.title);
+    set_text("story-text", &step.text);
+    let cites = step.cites();
+    set_text("story-cites", cites.as_deref().unwrap_or(""));
+    if let Some(e) = element("story-cites") {
+        e.set_hidden(cites.is_none());
+    }
+    for (id, to) in [("story-back", at.previous()), ("story-next", at.next())] {
+        let Some(a) = element(id) else { continue };
+        match to {
+            Some(fragment) => {
+                dom::attr(&a, "href", &format!("#{fragment}"));
+                a.remove_attribute("aria-disabled").ok();
+            }
+            None => {
+                a.remove_attribute("href").ok();
+                dom::attr(&a, "aria-disabled", "true");
+            }
+        }
+    }
 }
