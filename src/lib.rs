@@ -9,6 +9,7 @@ mod fnv;
 pub mod forms;
 pub mod generator;
 pub mod mesh;
+pub mod papers;
 pub mod pattern;
 mod pod_bytes;
 pub mod presets;

@@ -14,6 +14,7 @@ mod cli;
 mod drawing;
 mod edge_growth;
 mod exports;
+mod figures;
 mod file_writer;
 mod generator;
 mod geometry;

@@ -41,12 +41,18 @@ impl StoryAt {
 
     /// The link (a fragment) of step `index` of the same story, in the same presentation.
     fn link_to(&self, index: usize) -> String {
-        format!(
-            "{STORY_KEY}={}&{STEP_KEY}={}{}",
-            self.story.id,
-            index + 1,
-            self.presentation
-        )
+        format!("{}{}", self.bare_link(index), self.presentation)
+    }
+
+    /// The link of step `index` of the same story, without a presentation.
+    fn bare_link(&self, index: usize) -> String {
+        format!("{STORY_KEY}={}&{STEP_KEY}={}", self.story.id, index + 1)
+    }
+
+    /// The link of this step without its presentation, which the page writes after it as after
+    /// any link (one view or four as shown now, the interface).
+    pub fn step_link(&self) -> String {
+        self.bare_link(self.index)
     }
 
     /// Where the step is in its story, as the page says it.

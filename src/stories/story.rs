@@ -34,7 +34,7 @@ pub struct Step {
     pub link: String,
     /// What to look at, and why it looks so.
     pub text: String,
-    /// The paper's figure the step reproduces, by authors, year and number.
+    /// The paper's figure the step reproduces, named as the presets' sources name it.
     #[serde(default)]
     pub figure: Option<String>,
     /// The paper's equations the step shows, by number.

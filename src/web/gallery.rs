@@ -62,6 +62,7 @@ pub fn build(container: &Element) {
         );
         attr(&card, "data-preset", preset.id);
         let picture: HtmlImageElement = typed("img", "picture");
+        attr(&picture, "data-picture", preset.id);
         picture.set_alt(&format!("{}, grown from the model", preset.name));
         picture.set_width(256);
         picture.set_height(256);
@@ -75,21 +76,29 @@ pub fn build(container: &Element) {
     }
 }
 
-/// The `img` a picture of `preset` for `place` is shown in.
+/// The `img`s a picture of `preset` for `place` is shown in: a card's, and the figures'
+/// section's beside it.
 fn selector(place: Place, preset: &Preset) -> String {
     match place {
-        Place::Card => format!("a.card[data-preset=\"{}\"] img", preset.id),
+        Place::Card => format!("img[data-picture=\"{}\"]", preset.id),
         Place::Tile { job, .. } => format!("a.tile[data-job=\"{job}\"] img"),
     }
 }
 
-/// The `img` the selector finds on the page.
+/// The first `img` the selector finds on the page.
 fn image(selector: &str) -> Option<HtmlImageElement> {
-    super::page::document()
-        .query_selector(selector)
-        .ok()
-        .flatten()
-        .and_then(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok())
+    images(selector).into_iter().next()
+}
+
+/// Every `img` the selector finds on the page.
+fn images(selector: &str) -> Vec<HtmlImageElement> {
+    let Ok(found) = super::page::document().query_selector_all(selector) else {
+        return Vec::new();
+    };
+    (0..found.length())
+        .filter_map(|i| found.item(i))
+        .filter_map(|e| wasm_bindgen::JsCast::dyn_into::<HtmlImageElement>(e).ok())
+        .collect()
 }
 
 /// Keeps the address of a tile's picture by its link, letting the oldest go past [`KEPT`].
@@ -217,15 +226,17 @@ impl Pictures {
             return None;
         }
         let blob = picture.ok()?;
-        let img = image(&selector(place, wanted.preset));
+        let imgs = images(&selector(place, wanted.preset));
         let kept = matches!(place, Place::Tile { .. })
             .then(|| (wanted.link.clone(), Rc::clone(&self.drawn)));
         self.queue.drawn(wanted, now());
-        if let Some(img) = img {
+        if !imgs.is_empty() {
             wasm_bindgen_futures::spawn_local(async move {
                 // A picture the browser could not read leaves the card as it was.
                 if let Ok(url) = object_url(blob).await {
-                    img.set_src(&url);
+                    for img in &imgs {
+                        img.set_src(&url);
+                    }
                     if let Some((link, drawn)) = kept {
                         keep(&mut drawn.borrow_mut(), link, url);
                     }

@@ -194,12 +194,23 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
     if let Some(card) = page::element("story") {
         let start = Rc::new(std::cell::Cell::new(None));
         let pressed = Rc::clone(&start);
+        // A touch or a pen: a mouse dragged across the words selects them.
         on(
             &card.clone().into(),
             "pointerdown",
             app,
             move |_, e: PointerEvent| {
-                pressed.set(Some((e.client_x(), e.client_y(), e.time_stamp())));
+                let swipes = matches!(e.pointer_type().as_str(), "touch" | "pen");
+                pressed.set(swipes.then(|| (e.client_x(), e.client_y(), e.time_stamp())));
+            },
+        )?;
+        let cancelled = Rc::clone(&start);
+        on(
+            &card.clone().into(),
+            "pointercancel",
+            app,
+            move |_, _: Event| {
+                cancelled.set(None);
             },
         )?;
         on(&card.into(), "pointerup", app, move |a, e: PointerEvent| {

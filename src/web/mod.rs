@@ -10,6 +10,7 @@ mod debug;
 mod dom;
 mod download;
 mod drawing_worker;
+mod figures;
 mod gallery;
 mod listen;
 mod map;
@@ -73,6 +74,9 @@ pub async fn start() -> Result<(), JsValue> {
     signal_loading();
     if let Some(groups) = page::element("gallery-groups") {
         gallery::build(&groups);
+    }
+    if let Some(list) = page::element("figures-list") {
+        figures::build(&list);
     }
     let background = page::background();
     let workers = workers::Workers::start(crate::generator::GROWTH_BUDGET_MS);

@@ -125,6 +125,9 @@ pub struct Session {
     loads: u32,
     /// The story's step the last link opened, if it opened one.
     story: Option<StoryAt>,
+    /// Whether the shell of the story's step was changed since it opened (a value edited, the
+    /// speed): the address is then the shell's own link, no longer the step's.
+    story_edited: bool,
     effects: Vec<Effect>,
 }
 
@@ -201,6 +204,7 @@ impl Session {
             .as_ref()
             .and_then(|o| o.as_ref().ok())
             .map(|o| o.at.clone());
+        self.story_edited = false;
         self.push(Effect::Story(self.story.clone()));
         match opened {
             None if fragment.trim_start_matches('#').is_empty() => self.gallery(now),
@@ -212,10 +216,8 @@ impl Session {
             Some(Ok(Opened { at, link, problems })) => {
                 let step = at.step();
                 self.open(&link, problems, step.growth, reduced_motion, now);
-                if let Some((preset, _)) = &self.current {
-                    self.view(ViewCommand::Turn(step.turn.unwrap_or(preset.view)));
-                }
                 if let Some(axes) = &step.map {
+                    self.push(Effect::StopRecording("the map covered the shell"));
                     self.push(Effect::OpenMap(axes.clone()));
                 }
             }
@@ -272,6 +274,14 @@ impl Session {
         self.show(false);
         let still = (presentation.ui.embedded() && reduced_motion) || growth == Growth::Whole;
         match self.change_to(preset, &spec, still) {
+            // A story's step shows its shell as it asks, grown again from its apex or whole,
+            // even when the step before showed the same shell.
+            ShellChange::Same | ShellChange::Restyle if self.story.is_some() => {
+                self.load(preset, spec, still);
+                if still {
+                    self.set_playing(false);
+                }
+            }
             ShellChange::Same => {}
             ShellChange::Restyle => self.restyle(preset, spec),
             ShellChange::Grow { finish } => {
@@ -280,6 +290,16 @@ impl Session {
                     self.set_playing(false);
                 }
             }
+        }
+    }
+
+    /// A story's step shows its shell from the side it asks for (the preset's own first view
+    /// otherwise) whenever the shell grows again: opened, restarted, edited, recorded, on a
+    /// viewer that took the place of another.
+    fn turn(&mut self) {
+        if let (Some(at), Some((preset, _))) = (&self.story, &self.current) {
+            let view = at.step().turn.unwrap_or(preset.view);
+            self.view(ViewCommand::Turn(view));
         }
     }
 
@@ -329,6 +349,7 @@ impl Session {
         self.push(Effect::Loaded(preset, Box::new(spec.clone())));
         self.push(Effect::Share(link::encode(preset, &spec)));
         self.current = Some((preset, spec));
+        self.turn();
         self.set_playing(true);
     }
 
@@ -373,14 +394,28 @@ impl Session {
             ShellChange::Restyle => self.restyle(preset, next),
             ShellChange::Grow { finish } => self.load(preset, next, finish),
         }
+        self.story_edited = true;
         self.url_due = Some(now + URL_DELAY_MS);
     }
 
-    /// The fragment of what is shown, as it is shown: the shell, or the lineage bred to it
-    /// (`lineage_link`, breeding's own link while it is open).
-    pub fn fragment(&self, lineage_link: Option<String>) -> Option<String> {
+    /// The link of what is shown, without its presentation: the story's step as it opened, or
+    /// the shell.
+    pub fn shown_link(&self) -> Option<String> {
+        let step = self.story.as_ref().filter(|_| !self.story_edited);
         let shell = || self.current.as_ref().map(|(p, s)| link::encode(p, s));
-        lineage_link.or_else(shell).map(|link| {
+        step.map(StoryAt::step_link).or_else(shell)
+    }
+
+    /// The fragment of what is shown, as it is shown: the story's step as it opened, the
+    /// lineage bred to the shell (`lineage_link`, breeding's own link while it is open), or
+    /// the shell.
+    pub fn fragment(&self, lineage_link: Option<String>) -> Option<String> {
+        let link = if self.story.is_some() && !self.story_edited {
+            self.shown_link()
+        } else {
+            lineage_link.or_else(|| self.shown_link())
+        };
+        link.map(|link| {
             let mut fragment = format!("#{link}");
             self.presentation.write(&mut fragment);
             fragment
@@ -477,6 +512,7 @@ impl Session {
         }
         self.view(ViewCommand::Speed(speed));
         self.push(Effect::SpeedBox(speed));
+        self.story_edited = true;
         self.url_due = Some(now + URL_DELAY_MS);
     }
 
@@ -616,7 +652,15 @@ impl Session {
         self.view(ViewCommand::Background(background));
         self.status = ViewStatus::default();
         if let Some((preset, spec)) = self.current.clone() {
-            self.load(preset, spec, false);
+            let whole = self
+                .story
+                .as_ref()
+                .is_some_and(|at| at.step().growth == Growth::Whole);
+            let still = whole && !self.story_edited;
+            self.load(preset, spec, still);
+            if still {
+                self.set_playing(false);
+            }
         }
     }
 }
@@ -711,14 +755,28 @@ mod tests {
                 link::encode(preset, spec),
                 link::encode(decoded.preset, &decoded.spec)
             );
-            let said = commands(&effects);
-            assert_eq!(said.last().map(String::as_str), Some("Turn"), "{said:?}");
-            let whole = effects
-                .iter()
-                .any(|e| matches!(e, Effect::View(ViewCommand::Load { finish: true, .. })));
-            if said.contains(&"Load".to_string()) {
-                assert_eq!(whole, step.growth == Growth::Whole, "step {}", i + 1);
-            }
+            let turned = effects.iter().find_map(|e| match e {
+                Effect::View(ViewCommand::Turn(view)) => Some(*view),
+                _ => None,
+            });
+            assert_eq!(
+                turned,
+                Some(step.turn.unwrap_or(preset.view)),
+                "step {}",
+                i + 1
+            );
+            let finish = effects.iter().find_map(|e| match e {
+                Effect::View(ViewCommand::Load { finish, .. }) => Some(*finish),
+                _ => None,
+            });
+            let whole = step.growth == Growth::Whole;
+            assert_eq!(finish, Some(whole), "step {}: loaded as it asks", i + 1);
+            assert_eq!(session.playing(), !whole, "step {}", i + 1);
+            assert_eq!(
+                session.fragment(None),
+                Some(format!("#story=coiling&step={}", i + 1)),
+                "the address stays the step's"
+            );
             let map = effects.iter().find_map(|e| match e {
                 Effect::OpenMap(axes) => Some(axes.clone()),
                 _ => None,
@@ -731,6 +789,23 @@ mod tests {
         assert!(
             story.steps.iter().any(|s| s.map.is_some()),
             "the coiling story opens Raup's map"
+        );
+
+        // The same step again (the same shell) grows again as it asks, and from its side
+        // after a restart; an edit makes the address the shell's.
+        session.route("#story=coiling&step=3", false, 8.0);
+        session.take_effects();
+        session.route("#story=coiling&step=3", false, 8.5);
+        assert!(commands(&session.take_effects()).contains(&"Load".to_string()));
+        session.restart();
+        let said = commands(&session.take_effects());
+        assert_eq!(&said[..2], ["Load", "Turn"], "{said:?}");
+        session.edit("form.spiral.whorls", "3", Edit::Set, 8.7);
+        assert!(commands(&session.take_effects()).contains(&"Turn".to_string()));
+        let edited = session.fragment(None).expect("a shell");
+        assert!(
+            edited.contains("preset=turbinate") && edited.contains("whorls=3"),
+            "{edited}"
         );
 
         session.route("#story=nautilus", false, 9.0);

@@ -5,8 +5,8 @@
 //! (the gallery) no key is the page's; over the map or the offspring the arrows move among the
 //! tiles (but not in a text field or a choice) and Escape leaves them from any control; a key
 //! pressed in a field, a button, a disclosure or a link is that control's, but in a story Page
-//! Down and Page Up move to its next and previous step from any control but a field; otherwise
-//! in a story → and ← move to its next and previous step, and Space
+//! Down and Page Up (and, where no map covers the shell, → and ←) move to its next and previous
+//! step from anywhere but a field; otherwise Space
 //! plays or pauses, R restarts, S (or → outside a story) steps, E or End finishes, C resets the camera, V
 //! switches the views, F goes full screen, + (or =) and − change the speed by half again.
 
@@ -113,6 +113,8 @@ pub fn shortcut(press: Press<'_>) -> Option<Shortcut> {
         match press.key {
             "PageDown" => return Some(Shortcut::StoryStep(true)),
             "PageUp" => return Some(Shortcut::StoryStep(false)),
+            "ArrowRight" if !press.covered => return Some(Shortcut::StoryStep(true)),
+            "ArrowLeft" if !press.covered => return Some(Shortcut::StoryStep(false)),
             _ => {}
         }
     }
@@ -120,8 +122,6 @@ pub fn shortcut(press: Press<'_>) -> Option<Shortcut> {
         return None;
     }
     Some(match press.key {
-        "ArrowRight" if press.in_story => Shortcut::StoryStep(true),
-        "ArrowLeft" if press.in_story => Shortcut::StoryStep(false),
         " " => Shortcut::PlayPause,
         "r" => Shortcut::Restart,
         "s" | "ArrowRight" => Shortcut::Step,
@@ -252,7 +252,12 @@ mod tests {
             "over a step's map the arrows move among its tiles"
         );
         assert_eq!(story("PageDown", Target::Field, false), None);
-        assert_eq!(story("ArrowLeft", Target::Control, false), None);
+        assert_eq!(
+            story("ArrowLeft", Target::Control, false),
+            Some(Shortcut::StoryStep(false)),
+            "from Next or Back, just clicked"
+        );
+        assert_eq!(story("ArrowLeft", Target::Field, false), None);
     }
 
     #[test]

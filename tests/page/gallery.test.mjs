@@ -13,6 +13,7 @@ const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
 mkdirSync(SHOTS, { recursive: true });
 const IDS = readdirSync(`${ROOT}species`).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
+const PAPERS = JSON.parse(readFileSync(`${ROOT}species/papers/figures.json`, 'utf8'));
 const STORIES = readdirSync(`${ROOT}species/stories`).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
 let browser;
 let base;
@@ -54,6 +55,19 @@ test('the gallery lists every preset in its group, each with a picture of its sh
     const unlit = pictures.map((p) => ({ preset: p.preset, ...measurePng(Buffer.from(p.png)) }))
       .filter((m) => !(m.share > 0.03 && m.shades > 15)).map((m) => `${m.preset}: ${m.share.toFixed(3)} covered, ${m.shades} shades`);
     assert.deepEqual(unlit, [], 'every picture is a visible, lit shell');
+    // The papers' figures beside ours: every figure of species/papers/figures.json, each
+    // reproduced one with its shells' pictures (the cards', drawn once), the others saying why.
+    const figures = await page.$$eval('#figures-list li.figure', (items) => items.map((li) => ({
+      shells: [...li.querySelectorAll('.ours-shell img')].map((img) => img.complete && img.naturalWidth > 0),
+      why: li.querySelector('.why-not')?.textContent ?? null,
+    })));
+    const listed = PAPERS.flatMap((p) => p.figures);
+    assert.equal(figures.length, listed.length, 'every figure of the four papers');
+    for (const [i, f] of figures.entries()) {
+      assert.ok((f.shells.length > 0) !== (f.why !== null), `figure ${i}: shells or why, not both`);
+      assert.ok(f.shells.every(Boolean), `figure ${i}: its shells' pictures are drawn`);
+    }
+    await page.locator('#figures').screenshot({ path: `${SHOTS}figures.png` });
     await page.screenshot({ path: `${SHOTS}gallery.png`, fullPage: true });
     assert.deepEqual(errors, []);
   } finally {

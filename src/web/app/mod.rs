@@ -44,7 +44,6 @@ use super::viewer::Viewer;
 use super::viewer_handle::ViewerHandle;
 use super::workers::Workers;
 use crate::export::Download;
-use crate::share::link;
 use crate::share::presentation::Presentation;
 use crate::work::recording::Support;
 use crate::work::session::{Edit, Effect, Session};
@@ -350,13 +349,13 @@ impl App {
 
     /// Copies the `<iframe>` that embeds what is shown, in the interface chosen beside it.
     pub fn copy_embed(&mut self) {
-        if let Some((preset, spec)) = self.session.current() {
+        if let (Some((preset, _)), Some(link)) = (self.session.current(), self.session.shown_link())
+        {
             let presentation = Presentation {
                 ui: share_panel::chosen_ui(),
                 ..self.session.presentation()
             };
-            let snippet =
-                share_panel::snippet(&link::encode(preset, spec), presentation, &preset.name);
+            let snippet = share_panel::snippet(&link, presentation, &preset.name);
             share_panel::copy_embed(snippet);
         }
     }
