@@ -268,12 +268,33 @@ fn raups_map_spans_w_and_t_at_the_shells_d_each_tile_a_self_similar_shell() {
     assert!(
         map.landmarks
             .iter()
-            .any(|&(at, p)| (at, p.id) == (2 * 4, plain.id)),
+            .any(|l| (l.tile, l.preset.id) == (2 * 4, plain.id)),
         "the shell among them"
     );
     assert!(map.landmarks.len() >= 3, "{}", map.landmarks.len());
-    for &(at, p) in &map.landmarks {
+    for l in &map.landmarks {
+        let (at, p) = (l.tile, l.preset);
+        // The marker lies within its tile, off its centre by where its values fall between
+        // the tile's and the next.
+        assert!((0.0..=1.0).contains(&l.within.0) && (0.0..=1.0).contains(&l.within.1));
         let theirs = raup(&p.spec);
+        let (xs, ys) = (&map.x.values, &map.y.values);
+        let column = (at % 4) as f64 + l.within.0 - 0.5;
+        let row = (at / 4) as f64 + l.within.1 - 0.5;
+        let w = xs[0] * (xs[3] / xs[0]).powf(column / 3.0);
+        let t = ys[0] + (ys[3] - ys[0]) * row / 3.0;
+        assert!(
+            (w / theirs.w - 1.0).abs() < 0.02,
+            "{}: W {w} for {}",
+            p.id,
+            theirs.w
+        );
+        assert!(
+            (t - theirs.t).abs() < 0.02,
+            "{}: T {t} for {}",
+            p.id,
+            theirs.t
+        );
         let (i, j) = (at % 4, at / 4);
         let nearest = |values: &[f64], v: f64, log: bool| {
             let d = |a: f64| {

@@ -102,6 +102,11 @@ enum Step {
     Views,
     /// The map or breeding covers the shell, or not.
     Cover(bool),
+    /// A step of the coiling story followed (its shells swept, quick to grow; its last step
+    /// opens the map over the shell).
+    Story {
+        step: u8,
+    },
     Record(bool),
     AskFrame {
         row: u16,
@@ -247,6 +252,10 @@ impl Page {
             match effect {
                 Effect::View(command) => self.send(command, lag),
                 Effect::StopRecording(_) => self.stop_recording(lag),
+                // The map a story's step opens covers the shell, as the page's does; a link
+                // followed closes it.
+                Effect::OpenMap(_) => self.covered = true,
+                Effect::CloseMap => self.covered = false,
                 Effect::Signal("state", state) => self.shown_state = state,
                 Effect::Say(Say::Show(words)) => {
                     if let Some(shell) = &self.session.status().shell {
@@ -550,6 +559,10 @@ impl Page {
                     .route(&format!("#v=1&preset={id}{extra}{ui}"), *finish, now);
             }
             Step::Gallery => self.session.route("", false, now),
+            Step::Story { step } => {
+                let link = format!("#story=coiling&step={}", 1 + step % 8);
+                self.session.route(&link, false, now);
+            }
             Step::Restyle { gloss } => {
                 let gloss = format!("{}", f64::from(*gloss % 11) / 10.0);
                 self.session.edit("material.gloss", &gloss, Edit::Set, now);
@@ -823,6 +836,7 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
                 frames: pick(30) as u8,
             },
             42 => Step::HangDrawing,
+            43 => Step::Story { step: byte },
             _ => Step::Twice { slot: byte },
         };
         steps.push(step);

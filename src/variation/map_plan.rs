@@ -20,6 +20,9 @@ pub struct Label {
     pub current: bool,
     /// The presets nearest it, by name ("" for none).
     pub landmarks: String,
+    /// Where each of them falls in the tile, across and down as percentages of its side, and
+    /// its name: a marker on the map.
+    pub marks: Vec<(f64, f64, &'static str)>,
 }
 
 /// A map to draw.
@@ -109,12 +112,18 @@ fn label(map: &ParameterMap, index: usize) -> Label {
     if tile.apart {
         text.push_str(" (whorls apart: open coiling, rare among real shells)");
     }
-    let here: Vec<&str> = map
-        .landmarks
+    let here: Vec<_> = map.landmarks.iter().filter(|l| l.tile == index).collect();
+    let marks = here
         .iter()
-        .filter(|(at, _)| *at == index)
-        .map(|(_, p)| p.name.as_str())
+        .map(|l| {
+            (
+                l.within.0 * 100.0,
+                l.within.1 * 100.0,
+                l.preset.name.as_str(),
+            )
+        })
         .collect();
+    let here: Vec<&str> = here.iter().map(|l| l.preset.name.as_str()).collect();
     let landmarks = here.join(", ");
     if !here.is_empty() {
         text.push_str(&format!(" (here: {landmarks})"));
@@ -128,6 +137,7 @@ fn label(map: &ParameterMap, index: usize) -> Label {
         apart: tile.apart,
         current,
         landmarks,
+        marks,
     }
 }
 

@@ -118,17 +118,19 @@ impl Axis {
         })
     }
 
+    /// `value` on the scale the axis steps evenly along: its logarithm on a logarithmic field.
+    fn scaled(&self, value: f64) -> f64 {
+        if matches!(self.field.kind, Kind::Real { log: true, .. }) {
+            value.max(f64::MIN_POSITIVE).ln()
+        } else {
+            value
+        }
+    }
+
     /// The value nearest `value`, by ratios on a logarithmic field, if `value` lies within the
     /// axis or less than half a step beyond an end.
     fn nearest(&self, value: f64) -> Option<usize> {
-        let log = matches!(self.field.kind, Kind::Real { log: true, .. });
-        let t = |v: f64| {
-            if log {
-                v.max(f64::MIN_POSITIVE).ln()
-            } else {
-                v
-            }
-        };
+        let t = |v| self.scaled(v);
         let ts: Vec<f64> = self.values.iter().map(|&v| t(v)).collect();
         let half_step = (ts[ts.len() - 1] - ts[0]).abs() / (ts.len() - 1) as f64 / 2.0;
         let (low, high) = (ts[0].min(ts[ts.len() - 1]), ts[0].max(ts[ts.len() - 1]));
@@ -137,6 +139,20 @@ impl Axis {
             return None;
         }
         (0..ts.len()).min_by(|&a, &b| (ts[a] - v).abs().total_cmp(&(ts[b] - v).abs()))
+    }
+
+    /// Where `value` falls along the axis, in steps from its first value (by ratios on a
+    /// logarithmic field): a fraction, if it lies within the axis or less than half a step
+    /// beyond an end.
+    fn position(&self, value: f64) -> Option<f64> {
+        let t = |v| self.scaled(v);
+        let (first, last) = (t(self.values[0]), t(self.values[self.values.len() - 1]));
+        let steps = (self.values.len() - 1) as f64;
+        if first == last || steps == 0.0 {
+            return None;
+        }
+        let at = (t(value) - first) / (last - first) * steps;
+        (-0.5..=steps + 0.5).contains(&at).then_some(at)
     }
 
     /// Whether the tiles along this axis differ in shape, not in pattern only.
@@ -303,15 +319,24 @@ impl TileWork {
     }
 }
 
+/// A preset of the gallery where its own values fall on a map.
+#[derive(Clone, Copy, Debug)]
+pub struct Landmark {
+    pub preset: &'static Preset,
+    /// The tile nearest it.
+    pub tile: usize,
+    /// Where in that tile it falls, across and down, from 0 (the tile's left or top edge) to 1.
+    pub within: (f64, f64),
+}
+
 /// The map: `y.values.len()` rows of `x.values.len()` tiles, the first row at the first value
 /// of y, each row from the first value of x. Only the tile being computed holds its pattern.
 pub struct ParameterMap {
     /// The tile nearest the shell mapped, when its values fall within the map.
     pub current: Option<usize>,
-    /// The presets of the same form whose values fall within the map, each by the tile nearest
-    /// them: where the shells of the gallery stand in this plane (Raup's cube with its real
-    /// shells).
-    pub landmarks: Vec<(usize, &'static Preset)>,
+    /// The presets of the same form whose values fall within the map, each where it falls:
+    /// where the shells of the gallery stand in this plane (Raup's cube with its real shells).
+    pub landmarks: Vec<Landmark>,
     pub x: Axis,
     pub y: Axis,
     /// Pattern rows computed for every tile.
@@ -349,7 +374,22 @@ impl ParameterMap {
         let landmarks = presets()
             .iter()
             .filter(|p| p.spec.form.kind() == spec.form.kind())
-            .filter_map(|p| Some((tile_of(&p.spec)?, p)))
+            .filter_map(|preset| {
+                let leaves = leaves(&preset.spec);
+                // The tile nearest, and how far off its centre the value falls.
+                let at = |axis: &Axis| {
+                    let value = value_of(&preset.spec, &leaves, axis.field)?;
+                    let nearest = axis.nearest(value)?;
+                    let off = axis.position(value)? - nearest as f64;
+                    Some((nearest, (off + 0.5).clamp(0.0, 1.0)))
+                };
+                let ((column, across), (row, down)) = at(&x).zip(at(&y))?;
+                Some(Landmark {
+                    preset,
+                    tile: row * x.values.len() + column,
+                    within: (across, down),
+                })
+            })
             .collect();
         Self {
             current,

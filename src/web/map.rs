@@ -260,6 +260,16 @@ impl MapView {
             if !label.landmarks.is_empty() {
                 append(&a, &[&create("span", "landmark", Some(&label.landmarks))]);
             }
+            // Each gallery shell marked where its own values fall; the names are in the label.
+            for &(left, top, name) in &label.marks {
+                let mark = create("span", "marker", None);
+                attr(&mark, "title", name);
+                attr(&mark, "aria-hidden", "true");
+                let style = mark.style();
+                style.set_property("left", &format!("{left:.1}%")).ok();
+                style.set_property("top", &format!("{top:.1}%")).ok();
+                append(&a, &[&mark]);
+            }
         }
         set_text("map-status", &status);
         let asked = map.to_compute();

@@ -1,13 +1,13 @@
 //! The page's keyboard: which key does what, decided here so that a native test reads every
 //! rule, and the page only translates a `keydown` into [`Press`] and applies the [`Shortcut`].
 //!
-//! The rules, in order: a key with Ctrl, Meta or Alt is the browser's; without a shell shown
-//! (the gallery) no key is the page's; over the map or the offspring the arrows move among the
-//! tiles (but not in a text field or a choice) and Escape leaves them from any control; a key
-//! pressed in a field, a button, a disclosure or a link is that control's, but in a story Page
-//! Down and Page Up (and, where no map covers the shell, → and ←) move to its next and previous
-//! step from anywhere but a field; otherwise Space
-//! plays or pauses, R restarts, S (or → outside a story) steps, E or End finishes, C resets the camera, V
+//! The rules, in order: a key with Ctrl, Meta or Alt is the browser's; in a story Page Down and
+//! Page Up (and, where no map covers the shell, → and ←) move to its next and previous step from
+//! anywhere but a field, even when its shell could not be shown; without a shell shown (the
+//! gallery) no key is the page's; over the map or the offspring the arrows move among the tiles
+//! (but not in a text field or a choice) and Escape leaves them from any control; a key pressed
+//! in a field, a button, a disclosure or a link is that control's; otherwise Space plays or
+//! pauses, R restarts, S (or → outside a story) steps, E or End finishes, C resets the camera, V
 //! switches the views, F goes full screen, + (or =) and − change the speed by half again.
 
 /// The kind of element a key press goes to.
@@ -91,7 +91,20 @@ const SPEED_STEP: f64 = 1.5;
 
 /// What `press` does, if anything (the rules are the module's).
 pub fn shortcut(press: Press<'_>) -> Option<Shortcut> {
-    if press.modified || !press.shell_shown {
+    if press.modified {
+        return None;
+    }
+    // A story's step moves on even when its shell could not be shown.
+    if press.in_story && press.target != Target::Field {
+        match press.key {
+            "PageDown" => return Some(Shortcut::StoryStep(true)),
+            "PageUp" => return Some(Shortcut::StoryStep(false)),
+            "ArrowRight" if !press.covered => return Some(Shortcut::StoryStep(true)),
+            "ArrowLeft" if !press.covered => return Some(Shortcut::StoryStep(false)),
+            _ => {}
+        }
+    }
+    if !press.shell_shown {
         return None;
     }
     if press.covered {
@@ -107,15 +120,6 @@ pub fn shortcut(press: Press<'_>) -> Option<Shortcut> {
         }
         if press.key == "Escape" {
             return Some(Shortcut::Leave);
-        }
-    }
-    if press.in_story && press.target != Target::Field {
-        match press.key {
-            "PageDown" => return Some(Shortcut::StoryStep(true)),
-            "PageUp" => return Some(Shortcut::StoryStep(false)),
-            "ArrowRight" if !press.covered => return Some(Shortcut::StoryStep(true)),
-            "ArrowLeft" if !press.covered => return Some(Shortcut::StoryStep(false)),
-            _ => {}
         }
     }
     if press.target != Target::Page {
@@ -258,6 +262,16 @@ mod tests {
             "from Next or Back, just clicked"
         );
         assert_eq!(story("ArrowLeft", Target::Field, false), None);
+        let refused = Press {
+            in_story: true,
+            shell_shown: false,
+            ..press("ArrowRight", Target::Page, false)
+        };
+        assert_eq!(
+            shortcut(refused),
+            Some(Shortcut::StoryStep(true)),
+            "a step whose shell was refused still moves on"
+        );
     }
 
     #[test]

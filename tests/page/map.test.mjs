@@ -61,6 +61,11 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
       [...document.querySelectorAll('#map-x optgroup')].map((g) => g.label),
     ]);
     assert.deepEqual([x, y], ['raup.w', 'raup.t'], "Raup's expansion across, translation down");
+    // The gallery's swept shells are marked where their own W and T fall, the turbinate shell
+    // within the tile nearest it.
+    const marks = await page.$$eval('#map-grid .marker', (ms) => ms.map((m) => ({ name: m.title, current: m.closest('.tile').classList.contains('current') })));
+    assert.ok(marks.length >= 3, `${marks.length} gallery shells marked`);
+    assert.ok(marks.some((m) => m.name === 'Turbinate shell' && m.current), JSON.stringify(marks));
     assert.ok(groups.includes('Shape') && groups.includes("Raup's coiling parameters"), `parameters by section: ${groups}`);
     const tiles = await shellTiles(page);
     const clip = await page.evaluate(() => {
