@@ -269,3 +269,48 @@ fn the_parent_keeps_itself_and_each_offspring_says_what_it_changed_and_breeds_on
     }
     assert!(breeding.status().starts_with("Generation 1."));
 }
+
+#[test]
+fn a_slow_machine_draws_fewer_offspring_and_says_why() {
+    use seashells_core::variation::breeding::offspring_for;
+    assert_eq!(offspring_for(None), OFFSPRING, "not timed yet: all of them");
+    assert_eq!(
+        offspring_for(Some(0.14)),
+        OFFSPRING,
+        "software rendering here"
+    );
+    assert_eq!(
+        offspring_for(Some(5.0)),
+        3,
+        "parent and 3 offspring in 20 s"
+    );
+    assert_eq!(offspring_for(Some(60.0)), 2, "never fewer than two");
+    let turbinate = preset("turbinate").unwrap();
+    let lineage = Lineage {
+        chosen: Vec::new(),
+        rate: 0.4,
+    };
+    let (mut breeding, _) = Breeding::new(turbinate, &turbinate.spec, &lineage);
+    breeding.pace(Some(0.14));
+    assert!(breeding.tiles().iter().all(|t| t.failure.is_none()));
+    breeding.pace(Some(5.0));
+    for (index, tile) in breeding.tiles().iter().enumerate() {
+        let drawn = Breeding::child(index).is_none_or(|child| child <= 3);
+        assert_eq!(
+            tile.failure.is_none(),
+            drawn,
+            "tile {index}: {:?}",
+            tile.failure
+        );
+        if !drawn {
+            let why = tile.failure.as_deref().unwrap_or_default();
+            assert!(why.starts_with("not drawn: "), "{why}");
+            assert!(breeding.label(index).1.is_none(), "not chosen blind");
+        }
+    }
+    assert!(
+        breeding.status().contains("3 of 8 offspring drawn"),
+        "{}",
+        breeding.status()
+    );
+}

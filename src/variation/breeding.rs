@@ -9,7 +9,7 @@
 //! (`&breed=0.4/3,0.4/7,0.5`: the third offspring at rate 0.4, then the seventh, and the next
 //! offspring at 0.5), and replayed from it.
 
-use super::parameter_map::{Axis, parameters};
+use super::parameter_map::{Axis, PATIENCE_S, parameters};
 use super::tile::{Tile, Variant};
 use crate::fnv::Fnv;
 use crate::forms::sweep::raup::Coordinate;
@@ -278,6 +278,24 @@ pub struct Breeding {
     tiles: Vec<Tile>,
     /// What each tile changed from its parent (nothing for the parent).
     changes: Vec<Vec<Change>>,
+    /// The offspring drawn, when a slow machine draws fewer than all, and the pace that made
+    /// it so (seconds a shell).
+    fewer: Option<(usize, f64)>,
+}
+
+/// The fewest offspring a slow machine is shown.
+const FEWEST: usize = 2;
+
+/// How many offspring a machine that drew the last shells at `seconds_per_shell` each draws:
+/// all of them, or fewer (down to [`FEWEST`]) so that a generation, parent and offspring, is
+/// drawn within [`PATIENCE_S`], as a map of shells has fewer tiles.
+pub fn offspring_for(seconds_per_shell: Option<f64>) -> usize {
+    match seconds_per_shell {
+        Some(s) if s > 0.0 => ((PATIENCE_S / s).floor() as usize)
+            .saturating_sub(1)
+            .clamp(FEWEST, OFFSPRING),
+        _ => OFFSPRING,
+    }
 }
 
 impl Breeding {
@@ -334,8 +352,28 @@ impl Breeding {
             lineage: followed,
             tiles,
             changes,
+            fewer: None,
         };
         (breeding, problems)
+    }
+
+    /// On a machine that drew the last shells at `seconds_per_shell` each, draws only the
+    /// offspring [`offspring_for`] allows (the first ones); the others are not drawn, and say
+    /// why, as does the status line.
+    pub fn pace(&mut self, seconds_per_shell: Option<f64>) {
+        let count = offspring_for(seconds_per_shell);
+        let Some(seconds) = seconds_per_shell.filter(|_| count < OFFSPRING) else {
+            return;
+        };
+        self.fewer = Some((count, seconds));
+        for (index, tile) in self.tiles.iter_mut().enumerate() {
+            if Self::child(index).is_some_and(|child| child > count) && tile.failure.is_none() {
+                tile.failure = Some(format!(
+                    "not drawn: this machine drew the last shells at {seconds:.1} s each, so \
+                     {count} of the {OFFSPRING} offspring are drawn"
+                ));
+            }
+        }
     }
 
     /// The generation shown: 1 for the first shell's offspring.
@@ -378,10 +416,17 @@ impl Breeding {
 
     /// The status line under the offspring.
     pub fn status(&self) -> String {
-        format!(
+        let mut status = format!(
             "Generation {}. Choose an offspring to breed from it; the parent is in the middle.",
             self.generation()
-        )
+        );
+        if let Some((count, seconds)) = self.fewer {
+            status.push_str(&format!(
+                " {count} of {OFFSPRING} offspring drawn: this machine drew the last shells at \
+                 {seconds:.1} s each."
+            ));
+        }
+        status
     }
 
     /// The parent: the shell the lineage has come to.

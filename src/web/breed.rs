@@ -4,6 +4,7 @@
 //! the browser's history steps through the generations and a shared link replays them; Back,
 //! the mutation rate and leaving with the parent are links too.
 
+use super::debug;
 use super::dom::attr;
 use super::gallery::Pictures;
 use super::page::{element, set_text, signal};
@@ -76,6 +77,11 @@ impl BreedView {
             self.breeding = Some(breeding);
             return;
         }
+        // A machine that drew the last shells slowly draws fewer offspring.
+        if let Some(pace) = debug::forced_pace() {
+            pictures.assume_pace(pace);
+        }
+        breeding.pace(pictures.pace());
         let mut drawn = Vec::new();
         for (index, tile) in breeding.tiles().iter().enumerate() {
             let (label, href) = breeding.label(index);

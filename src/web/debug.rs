@@ -124,8 +124,9 @@ pub fn crash_on_fill_asked() -> bool {
     CRASH_ON_FILL.with(|c| c.replace(false))
 }
 
-/// Test-only: the next map of shells is drawn as if this machine had drawn the last map's
-/// shells at `seconds` each, as a slow machine would (`tests/page/map.test.mjs`).
+/// Test-only: the next map of shells or generation of offspring is drawn as if this machine
+/// had drawn the last shells at `seconds` each, as a slow machine would
+/// (`tests/page/map.test.mjs`, `tests/page/breed.test.mjs`).
 #[wasm_bindgen]
 pub fn debug_pace_of_shells(seconds: f64) {
     PACE.with(|p| p.set(Some(seconds)));

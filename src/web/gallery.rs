@@ -167,8 +167,19 @@ impl Pictures {
         }
         drop(drawn);
         self.queue
-            .ask_tile(job, small, preset, picture, workers.pool());
+            .ask_tile(job, small, preset, picture, workers.pool(), now());
         false
+    }
+
+    /// Seconds a tile's picture took over the last set of tiles drawn whole: how slow this
+    /// machine draws shells ([`PictureQueue::pace`]).
+    pub fn pace(&self) -> Option<f64> {
+        self.queue.pace()
+    }
+
+    /// Takes `seconds` as the pace of this machine (a test's slow machine).
+    pub fn assume_pace(&mut self, seconds: f64) {
+        self.queue.assume_pace(seconds);
     }
 
     /// A picture that may have been drawn blank by a lost device is forgotten, to be drawn

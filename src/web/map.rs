@@ -4,7 +4,6 @@
 //! shell. Over two parameters of the pattern model a tile is the planar pattern; over one of the
 //! form it is the whole shell, grown and drawn as a gallery card's picture is.
 
-use super::clock::now;
 use super::debug;
 use super::dom::{append, attr, clear, create, typed};
 use super::gallery::Pictures;
@@ -111,11 +110,6 @@ pub struct MapView {
     parameters: Vec<(&'static Field, f64)>,
     /// The kind of form of the shell mapped.
     kind: &'static str,
-    /// When the map of shells being filled was started, and how many shells the pool was asked
-    /// for: how fast this machine draws them is measured once it is whole.
-    filling_since: Option<(f64, usize)>,
-    /// Seconds a shell took to be grown and drawn, over the last map of shells filled.
-    pace: Option<f64>,
 }
 
 impl Default for MapView {
@@ -126,8 +120,6 @@ impl Default for MapView {
             grid: TileGrid::new("map-grid"),
             parameters: Vec::new(),
             kind: "",
-            filling_since: None,
-            pace: None,
         }
     }
 }
@@ -221,11 +213,12 @@ impl MapView {
             x.axis(self.kind, count)
                 .and_then(|x| Ok((x, y.axis(self.kind, count)?)))
         };
-        // A machine that drew the last map's shells slowly gets fewer of them.
+        // A machine that drew the last shells slowly gets fewer of them.
         if let Some(pace) = debug::forced_pace() {
-            self.pace = Some(pace);
+            pictures.assume_pace(pace);
         }
-        let planned = map_plan::plan(preset, spec, axes, side(), self.pace, pictures.draws());
+        let pace = pictures.pace();
+        let planned = map_plan::plan(preset, spec, axes, side(), pace, pictures.draws());
         let MapPlan {
             mut map,
             labels,
@@ -272,9 +265,7 @@ impl MapView {
             }
         }
         set_text("map-status", &status);
-        let asked = map.to_compute();
-        self.filling_since = map.shells().then(|| (now(), asked.len()));
-        for index in asked {
+        for index in map.to_compute() {
             let job = self.grid.job(index);
             let tile = &map.tiles()[index];
             if map.shells() {
@@ -338,12 +329,6 @@ impl MapView {
         };
         change(map, index);
         self.grid.show(index, &map.tiles()[index]);
-        if map.finished()
-            && let Some((since, asked)) = self.filling_since.take()
-            && asked > 0
-        {
-            self.pace = Some((now() - since) / 1000.0 / asked as f64);
-        }
         signal_filled("map", map.finished());
     }
 }

@@ -72,6 +72,11 @@ pub struct PictureQueue {
     lately: VecDeque<(Wanted, f64)>,
     /// The job number of the next picture asked.
     next_job: u32,
+    /// Since when tiles' pictures are being drawn, and how many were asked: the set being
+    /// drawn, to time.
+    tiles_since: Option<(f64, usize)>,
+    /// Seconds a tile's picture took, grown and drawn, over the last set of tiles drawn whole.
+    pace: Option<f64>,
 }
 
 impl PictureQueue {
@@ -137,8 +142,8 @@ impl PictureQueue {
         (spec, link)
     }
 
-    /// Asks the pool for the picture of tile `job` (`small`: one of many, [`Place::Tile`]):
-    /// `picture`, the [`Self::tile_picture`] of a shell of `preset`.
+    /// Asks the pool at `now` for the picture of tile `job` (`small`: one of many,
+    /// [`Place::Tile`]): `picture`, the [`Self::tile_picture`] of a shell of `preset`.
     pub fn ask_tile(
         &mut self,
         job: u32,
@@ -146,7 +151,10 @@ impl PictureQueue {
         preset: &'static Preset,
         picture: (ShellSpec, String),
         pool: &mut Pool,
+        now: f64,
     ) {
+        let (since, asked) = self.tiles_since.unwrap_or((now, 0));
+        self.tiles_since = Some((since, asked + 1));
         let (spec, link) = picture;
         let wanted = self.push(Place::Tile { job, small }, preset, spec, link);
         Self::submit(pool, wanted);
@@ -179,6 +187,18 @@ impl PictureQueue {
         self.left.retain(|w| !tile(w.place));
         self.waiting.retain(|(w, _)| !tile(w.place));
         self.lately.retain(|(w, _)| !tile(w.place));
+        self.tiles_since = None;
+    }
+
+    /// Seconds a tile's picture took, grown by the pool and drawn, over the last set of tiles
+    /// drawn whole (a map of shells, a generation of offspring): how slow this machine is.
+    pub fn pace(&self) -> Option<f64> {
+        self.pace
+    }
+
+    /// Takes `seconds` as the pace a tile's picture takes (a test's slow machine).
+    pub fn assume_pace(&mut self, seconds: f64) {
+        self.pace = Some(seconds);
     }
 
     /// A worker grew the shell of picture `job`: it waits to be drawn. A tile whose shell could
@@ -217,9 +237,18 @@ impl PictureQueue {
         self.waiting.pop()
     }
 
-    /// `wanted` was drawn at `now`.
+    /// `wanted` was drawn at `now`; the last tile of a set drawn times the set.
     pub fn drawn(&mut self, wanted: Wanted, now: f64) {
+        let tile = |w: &Wanted| matches!(w.place, Place::Tile { .. });
+        let was_tile = tile(&wanted);
         self.lately.push_back((wanted, now));
+        let more = self.left.iter().any(tile) || self.waiting.iter().any(|(w, _)| tile(w));
+        if was_tile
+            && !more
+            && let Some((since, asked)) = self.tiles_since.take()
+        {
+            self.pace = Some((now - since) / 1000.0 / asked.max(1) as f64);
+        }
     }
 
     /// Whether every card's picture is drawn, and the last of them long enough ago that a
@@ -289,8 +318,8 @@ mod tests {
         let mut pool = Pool::new(1);
         let stripes = crate::presets::preset("stripes").unwrap();
         let picture = || PictureQueue::tile_picture(stripes, &stripes.spec);
-        queue.ask_tile(3, true, stripes, picture(), &mut pool);
-        queue.ask_tile(4, true, stripes, picture(), &mut pool);
+        queue.ask_tile(3, true, stripes, picture(), &mut pool, 0.0);
+        queue.ask_tile(4, true, stripes, picture(), &mut pool, 0.0);
         for (job, result) in grown(&mut pool) {
             assert_eq!(queue.take(job, result), None);
         }
@@ -309,12 +338,51 @@ mod tests {
     }
 
     #[test]
+    fn a_set_of_tiles_drawn_whole_times_this_machine_and_one_dropped_does_not() {
+        let mut queue = PictureQueue::default();
+        // A worker for each picture: every one is grown at once.
+        let mut pool = Pool::new(8);
+        let stripes = crate::presets::preset("stripes").unwrap();
+        let picture = || PictureQueue::tile_picture(stripes, &stripes.spec);
+        for (job, id) in ["stripes", "turbinate", "tubular", "diskoid"]
+            .into_iter()
+            .enumerate()
+        {
+            let p = crate::presets::preset(id).unwrap();
+            let asked = PictureQueue::tile_picture(p, &p.spec);
+            queue.ask_tile(job as u32, true, p, asked, &mut pool, 1000.0);
+        }
+        for (job, result) in grown(&mut pool) {
+            assert_eq!(queue.take(job, result), None);
+        }
+        for (i, at) in [2000.0, 3000.0, 4000.0, 5000.0].into_iter().enumerate() {
+            assert_eq!(queue.pace(), None, "timed once all {i} are drawn");
+            let (wanted, _) = queue.next(at).expect("grown");
+            queue.drawn(wanted, at);
+        }
+        assert_eq!(queue.pace(), Some(1.0), "4 pictures in 4 s");
+        queue.ask_tile(9, true, stripes, picture(), &mut pool, 6000.0);
+        queue.drop_tiles(&mut pool);
+        queue.ask_tile(10, true, stripes, picture(), &mut pool, 60_000.0);
+        for (job, result) in grown(&mut pool) {
+            queue.take(job, result);
+        }
+        let (wanted, _) = queue.next(60_500.0).expect("grown");
+        queue.drawn(wanted, 60_500.0);
+        assert_eq!(
+            queue.pace(),
+            Some(0.5),
+            "the set dropped is not timed with the next"
+        );
+    }
+
+    #[test]
     fn a_tile_that_cannot_grow_says_why_and_a_job_no_longer_wanted_changes_nothing() {
         let mut queue = PictureQueue::default();
         let mut pool = Pool::new(1);
         let stripes = crate::presets::preset("stripes").unwrap();
         let picture = PictureQueue::tile_picture(stripes, &stripes.spec);
-        queue.ask_tile(7, false, stripes, picture, &mut pool);
+        queue.ask_tile(7, false, stripes, picture, &mut pool, 0.0);
         assert_eq!(queue.take(0, Err("no".into())), Some((7, "no".to_string())));
         assert_eq!(queue.take(0, Err("again".into())), None, "taken once");
         assert_eq!(queue.take(99, Err("never asked".into())), None);

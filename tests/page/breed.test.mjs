@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { browsers, composeSheet, shellTiles, waitForState } from './browser.mjs';
+import { browsers, composeSheet, hook, shellTiles, waitForState } from './browser.mjs';
 
 const ROOT = new URL('../../', import.meta.url).pathname;
 const SHOTS = `${ROOT}tests/page/screenshots/`;
@@ -160,6 +160,27 @@ test('a lineage that cannot be followed is read as far as it goes, and says why'
     const message = await page.textContent('#message');
     assert.match(message, /'12' is not an offspring/);
     assert.equal(await page.evaluate(() => document.getElementById('breed-back').disabled), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+  }
+});
+
+test('a machine that draws shells slowly breeds fewer offspring at once, and says so', async () => {
+  const { page, errors } = await openOn('WebGL2', 'v=1&preset=turbinate');
+  try {
+    await waitForState(page, ['growing', 'grown']);
+    await hook(page, 'debug_pace_of_shells', 5.0);
+    await page.click('#breed-open');
+    const tiles = await generation(page, 1);
+    assert.equal(tiles.length, 9);
+    // The parent and its first three offspring in 20 s at 5 s a shell; the others say why.
+    const drawn = tiles.map((t) => t.drawn);
+    assert.deepEqual(drawn, [true, true, true, false, true, false, false, false, false], JSON.stringify(tiles.map((t) => t.title)));
+    const undrawn = await page.$$eval('#breed-grid .tile.failed', (as) => as.map((a) => [a.title, a.getAttribute('href')]));
+    assert.equal(undrawn.length, 5);
+    assert.ok(undrawn.every(([title, href]) => /not drawn: this machine drew the last shells at 5\.0 s each/.test(title) && href === null), JSON.stringify(undrawn));
+    assert.match(await page.textContent('#breed-status'), /3 of 8 offspring drawn: this machine drew the last shells at 5\.0 s each/);
     assert.deepEqual(errors, []);
   } finally {
     await page.close();
