@@ -357,20 +357,22 @@ impl Breeding {
         (breeding, problems)
     }
 
-    /// On a machine that drew the last shells at `seconds_per_shell` each, draws only the
-    /// offspring [`offspring_for`] allows (the first ones); the others are not drawn, and say
+    /// On a machine that drew the last generation's shells at `seconds_per_shell` each, draws
+    /// only the offspring [`offspring_for`] allows (the first ones) and those whose pictures
+    /// are at hand (`at_hand`: drawn lately, shown at once); the others are not drawn, and say
     /// why, as does the status line.
-    pub fn pace(&mut self, seconds_per_shell: Option<f64>) {
+    pub fn pace(&mut self, seconds_per_shell: Option<f64>, at_hand: impl Fn(&Tile) -> bool) {
         let count = offspring_for(seconds_per_shell);
         let Some(seconds) = seconds_per_shell.filter(|_| count < OFFSPRING) else {
             return;
         };
         self.fewer = Some((count, seconds));
         for (index, tile) in self.tiles.iter_mut().enumerate() {
-            if Self::child(index).is_some_and(|child| child > count) && tile.failure.is_none() {
+            let beyond = Self::child(index).is_some_and(|child| child > count);
+            if beyond && tile.failure.is_none() && !at_hand(tile) {
                 tile.failure = Some(format!(
-                    "not drawn: this machine drew the last shells at {seconds:.1} s each, so \
-                     {count} of the {OFFSPRING} offspring are drawn"
+                    "not drawn: this machine drew the last generation's shells at {seconds:.1} s \
+                     each, so {count} of the {OFFSPRING} offspring are drawn"
                 ));
             }
         }
@@ -422,8 +424,8 @@ impl Breeding {
         );
         if let Some((count, seconds)) = self.fewer {
             status.push_str(&format!(
-                " {count} of {OFFSPRING} offspring drawn: this machine drew the last shells at \
-                 {seconds:.1} s each."
+                " {count} of {OFFSPRING} offspring drawn: this machine drew the last \
+                 generation's shells at {seconds:.1} s each."
             ));
         }
         status

@@ -81,7 +81,9 @@ impl BreedView {
         if let Some(pace) = debug::forced_pace() {
             pictures.assume_pace(pace);
         }
-        breeding.pace(pictures.pace());
+        breeding.pace(pictures.pace(false), |tile| {
+            pictures.drawn_lately(tile.preset, &tile.spec)
+        });
         let mut drawn = Vec::new();
         for (index, tile) in breeding.tiles().iter().enumerate() {
             let (label, href) = breeding.label(index);

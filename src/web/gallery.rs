@@ -171,10 +171,17 @@ impl Pictures {
         false
     }
 
-    /// Seconds a tile's picture took over the last set of tiles drawn whole: how slow this
-    /// machine draws shells ([`PictureQueue::pace`]).
-    pub fn pace(&self) -> Option<f64> {
-        self.queue.pace()
+    /// Seconds a tile's picture (`small`: a map's) took over the last set of such tiles drawn
+    /// whole: how slow this machine draws shells ([`PictureQueue::pace`]).
+    pub fn pace(&self, small: bool) -> Option<f64> {
+        self.queue.pace(small)
+    }
+
+    /// Whether the picture of a tile of `spec` (a variant of `preset`) was drawn lately, and
+    /// would be shown at once.
+    pub fn drawn_lately(&self, preset: &'static Preset, spec: &ShellSpec) -> bool {
+        let link = PictureQueue::tile_picture(preset, spec).1;
+        self.drawn.borrow().iter().any(|(l, _)| *l == link)
     }
 
     /// Takes `seconds` as the pace of this machine (a test's slow machine).

@@ -217,7 +217,7 @@ impl MapView {
         if let Some(pace) = debug::forced_pace() {
             pictures.assume_pace(pace);
         }
-        let pace = pictures.pace();
+        let pace = pictures.pace(true);
         let planned = map_plan::plan(preset, spec, axes, side(), pace, pictures.draws());
         let MapPlan {
             mut map,
@@ -256,7 +256,7 @@ impl MapView {
             // Each gallery shell marked where its own values fall; the names are in the label.
             for &(left, top, name) in &label.marks {
                 let mark = create("span", "marker", None);
-                attr(&mark, "title", name);
+                attr(&mark, "data-name", name);
                 attr(&mark, "aria-hidden", "true");
                 let style = mark.style();
                 style.set_property("left", &format!("{left:.1}%")).ok();

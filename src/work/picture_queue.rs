@@ -72,12 +72,18 @@ pub struct PictureQueue {
     lately: VecDeque<(Wanted, f64)>,
     /// The job number of the next picture asked.
     next_job: u32,
-    /// Since when tiles' pictures are being drawn, and how many were asked: the set being
-    /// drawn, to time.
-    tiles_since: Option<(f64, usize)>,
-    /// Seconds a tile's picture took, grown and drawn, over the last set of tiles drawn whole.
-    pace: Option<f64>,
+    /// Since when tiles' pictures are being drawn, how many were asked, and whether they are
+    /// small: the set being drawn, to time.
+    tiles_since: Option<(f64, usize, bool)>,
+    /// Seconds a tile's picture took, grown and drawn, over the last set of tiles drawn whole:
+    /// large ones (breeding's, multisampled) first, then small ones (a map's).
+    pace: [Option<f64>; 2],
 }
+
+/// The fewest tiles a set timed has: a smaller one (a generation cut short on a slow machine)
+/// would share the pool's fixed costs among fewer shells, look slower still, and be cut
+/// shorter the next time.
+const TIMED_SET: usize = 9;
 
 impl PictureQueue {
     /// A queue holding every preset's card.
@@ -153,8 +159,8 @@ impl PictureQueue {
         pool: &mut Pool,
         now: f64,
     ) {
-        let (since, asked) = self.tiles_since.unwrap_or((now, 0));
-        self.tiles_since = Some((since, asked + 1));
+        let (since, asked, _) = self.tiles_since.unwrap_or((now, 0, small));
+        self.tiles_since = Some((since, asked + 1, small));
         let (spec, link) = picture;
         let wanted = self.push(Place::Tile { job, small }, preset, spec, link);
         Self::submit(pool, wanted);
@@ -190,15 +196,17 @@ impl PictureQueue {
         self.tiles_since = None;
     }
 
-    /// Seconds a tile's picture took, grown by the pool and drawn, over the last set of tiles
-    /// drawn whole (a map of shells, a generation of offspring): how slow this machine is.
-    pub fn pace(&self) -> Option<f64> {
-        self.pace
+    /// Seconds a tile's picture took, grown by the pool and drawn, over the last set of at
+    /// least [`TIMED_SET`] tiles of this size (`small`: a map's; else a generation of
+    /// offspring) drawn whole: how slow this machine is.
+    pub fn pace(&self, small: bool) -> Option<f64> {
+        self.pace[usize::from(small)]
     }
 
-    /// Takes `seconds` as the pace a tile's picture takes (a test's slow machine).
+    /// Takes `seconds` as the pace a tile's picture of either size takes (a test's slow
+    /// machine).
     pub fn assume_pace(&mut self, seconds: f64) {
-        self.pace = Some(seconds);
+        self.pace = [Some(seconds); 2];
     }
 
     /// A worker grew the shell of picture `job`: it waits to be drawn. A tile whose shell could
@@ -245,9 +253,10 @@ impl PictureQueue {
         let more = self.left.iter().any(tile) || self.waiting.iter().any(|(w, _)| tile(w));
         if was_tile
             && !more
-            && let Some((since, asked)) = self.tiles_since.take()
+            && let Some((since, asked, small)) = self.tiles_since.take()
+            && asked >= TIMED_SET
         {
-            self.pace = Some((now - since) / 1000.0 / asked.max(1) as f64);
+            self.pace[usize::from(small)] = Some((now - since) / 1000.0 / asked as f64);
         }
     }
 
@@ -338,41 +347,54 @@ mod tests {
     }
 
     #[test]
-    fn a_set_of_tiles_drawn_whole_times_this_machine_and_one_dropped_does_not() {
+    fn a_set_of_tiles_drawn_whole_times_this_machine_and_a_small_or_dropped_one_does_not() {
         let mut queue = PictureQueue::default();
         // A worker for each picture: every one is grown at once.
-        let mut pool = Pool::new(8);
-        let stripes = crate::presets::preset("stripes").unwrap();
-        let picture = || PictureQueue::tile_picture(stripes, &stripes.spec);
-        for (job, id) in ["stripes", "turbinate", "tubular", "diskoid"]
-            .into_iter()
-            .enumerate()
-        {
-            let p = crate::presets::preset(id).unwrap();
-            let asked = PictureQueue::tile_picture(p, &p.spec);
-            queue.ask_tile(job as u32, true, p, asked, &mut pool, 1000.0);
-        }
-        for (job, result) in grown(&mut pool) {
-            assert_eq!(queue.take(job, result), None);
-        }
-        for (i, at) in [2000.0, 3000.0, 4000.0, 5000.0].into_iter().enumerate() {
-            assert_eq!(queue.pace(), None, "timed once all {i} are drawn");
-            let (wanted, _) = queue.next(at).expect("grown");
-            queue.drawn(wanted, at);
-        }
-        assert_eq!(queue.pace(), Some(1.0), "4 pictures in 4 s");
-        queue.ask_tile(9, true, stripes, picture(), &mut pool, 6000.0);
+        let mut pool = Pool::new(32);
+        let shells: Vec<_> = presets()
+            .iter()
+            .filter(|p| p.group == crate::presets::Group::Shapes)
+            .take(TIMED_SET)
+            .collect();
+        assert_eq!(shells.len(), TIMED_SET);
+        let ask = |queue: &mut PictureQueue, pool: &mut Pool, from: u32, small, n, now| {
+            for (i, p) in shells.iter().take(n).enumerate() {
+                let picture = PictureQueue::tile_picture(p, &p.spec);
+                queue.ask_tile(from + i as u32, small, p, picture, pool, now);
+            }
+        };
+        let draw_all = |queue: &mut PictureQueue, pool: &mut Pool, from: f64| {
+            for (job, result) in grown(pool) {
+                assert_eq!(queue.take(job, result), None);
+            }
+            let mut at = from;
+            while let Some((wanted, _)) = queue.next(at) {
+                queue.drawn(wanted, at);
+                at += 1000.0;
+            }
+        };
+        ask(&mut queue, &mut pool, 0, true, TIMED_SET, 0.0);
+        draw_all(&mut queue, &mut pool, 1000.0);
+        assert_eq!(queue.pace(true), Some(1.0), "9 small pictures in 9 s");
+        assert_eq!(queue.pace(false), None, "the large ones are timed apart");
+        // A generation cut short (three offspring) is not timed: it would look slower.
+        ask(&mut queue, &mut pool, 100, false, 3, 20_000.0);
+        draw_all(&mut queue, &mut pool, 50_000.0);
+        assert_eq!(queue.pace(false), None);
+        // A set dropped before it is whole is not timed with the next.
+        ask(&mut queue, &mut pool, 200, false, TIMED_SET, 60_000.0);
         queue.drop_tiles(&mut pool);
-        queue.ask_tile(10, true, stripes, picture(), &mut pool, 60_000.0);
-        for (job, result) in grown(&mut pool) {
-            queue.take(job, result);
-        }
-        let (wanted, _) = queue.next(60_500.0).expect("grown");
-        queue.drawn(wanted, 60_500.0);
+        ask(&mut queue, &mut pool, 300, false, TIMED_SET, 100_000.0);
+        draw_all(&mut queue, &mut pool, 101_000.0);
         assert_eq!(
-            queue.pace(),
-            Some(0.5),
-            "the set dropped is not timed with the next"
+            queue.pace(false),
+            Some(1.0),
+            "the last drawn 9 s after its ask"
+        );
+        queue.assume_pace(5.0);
+        assert_eq!(
+            (queue.pace(true), queue.pace(false)),
+            (Some(5.0), Some(5.0))
         );
     }
 

@@ -179,8 +179,8 @@ test('a machine that draws shells slowly breeds fewer offspring at once, and say
     assert.deepEqual(drawn, [true, true, true, false, true, false, false, false, false], JSON.stringify(tiles.map((t) => t.title)));
     const undrawn = await page.$$eval('#breed-grid .tile.failed', (as) => as.map((a) => [a.title, a.getAttribute('href')]));
     assert.equal(undrawn.length, 5);
-    assert.ok(undrawn.every(([title, href]) => /not drawn: this machine drew the last shells at 5\.0 s each/.test(title) && href === null), JSON.stringify(undrawn));
-    assert.match(await page.textContent('#breed-status'), /3 of 8 offspring drawn: this machine drew the last shells at 5\.0 s each/);
+    assert.ok(undrawn.every(([title, href]) => /not drawn: this machine drew the last generation's shells at 5\.0 s each/.test(title) && href === null), JSON.stringify(undrawn));
+    assert.match(await page.textContent('#breed-status'), /3 of 8 offspring drawn: this machine drew the last generation's shells at 5\.0 s each/);
     assert.deepEqual(errors, []);
   } finally {
     await page.close();

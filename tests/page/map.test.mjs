@@ -63,7 +63,7 @@ for (const backend of ['WebGL2', 'WebGPU']) test(`a map over the form's paramete
     assert.deepEqual([x, y], ['raup.w', 'raup.t'], "Raup's expansion across, translation down");
     // The gallery's swept shells are marked where their own W and T fall, the turbinate shell
     // within the tile nearest it.
-    const marks = await page.$$eval('#map-grid .marker', (ms) => ms.map((m) => ({ name: m.title, current: m.closest('.tile').classList.contains('current') })));
+    const marks = await page.$$eval('#map-grid .marker', (ms) => ms.map((m) => ({ name: m.dataset.name, current: m.closest('.tile').classList.contains('current') })));
     assert.ok(marks.length >= 3, `${marks.length} gallery shells marked`);
     assert.ok(marks.some((m) => m.name === 'Turbinate shell' && m.current), JSON.stringify(marks));
     assert.ok(groups.includes('Shape') && groups.includes("Raup's coiling parameters"), `parameters by section: ${groups}`);
