@@ -216,7 +216,12 @@ impl Session {
             Some(Ok(Opened { at, link, problems })) => {
                 let step = at.step();
                 self.open(&link, problems, step.growth, reduced_motion, now);
-                if let Some(axes) = &step.map {
+                // An embed shows no map: its shell stays in view, growing.
+                if let Some(axes) = step
+                    .map
+                    .as_ref()
+                    .filter(|_| !self.presentation.ui.embedded())
+                {
                     self.push(Effect::StopRecording("the map covered the shell"));
                     self.push(Effect::OpenMap(axes.clone()));
                 }
@@ -807,6 +812,16 @@ mod tests {
             edited.contains("preset=turbinate") && edited.contains("whorls=3"),
             "{edited}"
         );
+
+        // Embedded, the step whose map the full page opens shows its shell instead.
+        let mapped = story.steps.iter().position(|s| s.map.is_some()).unwrap() + 1;
+        session.route(
+            &format!("#story=coiling&step={mapped}&ui=controls"),
+            false,
+            8.8,
+        );
+        let effects = session.take_effects();
+        assert!(!effects.iter().any(|e| matches!(e, Effect::OpenMap(_))));
 
         session.route("#story=nautilus", false, 9.0);
         let effects = session.take_effects();

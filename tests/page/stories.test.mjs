@@ -142,6 +142,9 @@ test('an embedded story (ui=controls) shows its step over the shell, with the pl
     assert.ok(layout.story.height > 40 && layout.story.bottom < layout.shell.bottom / 2, `the step over the top of the shell: ${JSON.stringify(layout.story)}`);
     await page.click('#story-next');
     await page.waitForFunction(() => document.body.dataset.story === 'story=waves&step=3&ui=controls');
+    // That step opens the map in the full page; an embed shows none, and its shell grows.
+    const third = await waitForState(page, ['growing', 'grown']);
+    assert.equal(third.map, '', 'no map in an embed');
     await page.screenshot({ path: `${SHOTS}story-embed.png` });
     assert.deepEqual(errors, []);
   } finally {
