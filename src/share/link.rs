@@ -300,6 +300,21 @@ fn plain(preset: &'static Preset, problems: Vec<Problem>) -> Decoded {
     }
 }
 
+/// The `key=value` pairs of a fragment (without its '#'), percent-decoded, in order, and the
+/// parts that are not of that form: what every link of the page is read from.
+pub(crate) fn pairs(fragment: &str) -> (Vec<(String, String)>, Vec<String>) {
+    let text = |s: &str| percent_decode_str(s).decode_utf8_lossy().into_owned();
+    let mut pairs = Vec::new();
+    let mut bare = Vec::new();
+    for part in fragment.split('&').filter(|p| !p.is_empty()) {
+        match part.split_once('=') {
+            Some((k, v)) => pairs.push((text(k), text(v))),
+            None => bare.push(text(part)),
+        }
+    }
+    (pairs, bare)
+}
+
 /// Reads a link fragment (with or without its '#').
 pub fn decode(fragment: &str) -> Decoded {
     let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
@@ -328,17 +343,11 @@ pub fn decode(fragment: &str) -> Decoded {
             ),
         };
     }
-    let mut problems = Vec::new();
-    let mut pairs: Vec<(String, String)> = Vec::new();
-    for part in fragment.split('&').filter(|p| !p.is_empty()) {
-        match part.split_once('=') {
-            Some((k, v)) => pairs.push((text(k), text(v))),
-            None => problems.push(Problem::new(
-                text(part),
-                "is not of the form key=value; ignored",
-            )),
-        }
-    }
+    let (mut pairs, bare) = pairs(fragment);
+    let mut problems: Vec<Problem> = bare
+        .into_iter()
+        .map(|part| Problem::new(part, "is not of the form key=value; ignored"))
+        .collect();
     let take = |pairs: &mut Vec<(String, String)>, key: &str| {
         let i = pairs.iter().rposition(|(k, _)| k == key)?;
         let found = pairs.remove(i).1;

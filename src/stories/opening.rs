@@ -5,9 +5,9 @@
 
 use super::catalogue::{stories, story};
 use super::story::{Step, Story};
+use crate::share::link;
 use crate::share::presentation::{UI_KEY, VIEW_KEY};
 use crate::spec::problem::Problem;
-use percent_encoding::percent_decode_str;
 
 /// The link key naming a story.
 pub const STORY_KEY: &str = "story";
@@ -80,12 +80,7 @@ impl StoryAt {
 /// story (a shell's link), the step it opens, or why it opens none (no such story).
 pub fn open(fragment: &str) -> Option<Result<Opened, Problem>> {
     let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
-    let text = |s: &str| percent_decode_str(s).decode_utf8_lossy().into_owned();
-    let pairs: Vec<(String, String)> = fragment
-        .split('&')
-        .filter_map(|p| p.split_once('='))
-        .map(|(k, v)| (text(k), text(v)))
-        .collect();
+    let (pairs, _) = link::pairs(fragment);
     let name = pairs.iter().rev().find(|(k, _)| k == STORY_KEY)?.1.clone();
     Some(opened(&name, &pairs))
 }
