@@ -1,6 +1,7 @@
 //! The page's listeners: the window's address and theme, the shell's canvas (orbit, zoom,
 //! reset; again on a fresh canvas that took its place), every control, a swipe across a
-//! story's card, and the keyboard, whose rules are the core's (`work::shortcuts`). Each hands what happened to the app.
+//! story's card, and the keyboard, whose rules are the core's (`work::shortcuts`). Each hands
+//! what happened to the app.
 
 use super::canvases::canvas;
 use super::page;
