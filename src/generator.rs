@@ -3,7 +3,7 @@
 //! `rows − 1` the opening). The cost of a call depends on the rows it adds, never on the age
 //! of the shell.
 
-use crate::forms::{has_one_growing_edge, shape_for};
+use crate::forms::{has_one_growing_edge, picture_shape_for, shape_for};
 use crate::mesh::{Bounds, Capacity, Mesh};
 use crate::pattern::PatternError;
 use crate::pattern::run::PatternRun;
@@ -164,7 +164,19 @@ pub fn pattern_alone(
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
         let rows = spec.growth.rows.max(2) as usize;
-        let shape = shape_for(spec, rows).map_err(BuildError::Shape)?;
+        Self::with_shape(spec, shape_for(spec, rows).map_err(BuildError::Shape)?)
+    }
+
+    /// The growth of a picture of `spec` `pixels` wide: the same pattern, on a mesh no finer
+    /// than the picture shows ([`picture_shape_for`]).
+    pub fn picture(spec: &ShellSpec, pixels: u32) -> Result<Self, BuildError> {
+        let rows = spec.growth.rows.max(2) as usize;
+        let shape = picture_shape_for(spec, rows, pixels).map_err(BuildError::Shape)?;
+        Self::with_shape(spec, shape)
+    }
+
+    fn with_shape(spec: &ShellSpec, shape: Box<dyn GrowingShape>) -> Result<Self, BuildError> {
+        let rows = spec.growth.rows.max(2) as usize;
         let pattern =
             PatternRun::new(spec, |row| shape.rim_length(row)).map_err(BuildError::Pattern)?;
         let mut generator = Self {

@@ -27,6 +27,7 @@ mod murex_opening;
 mod murex_resolutions;
 mod parameter_map;
 mod pattern;
+mod picture_mesh;
 mod simulated_workers;
 mod simulator;
 mod species;

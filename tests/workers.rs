@@ -368,6 +368,7 @@ fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
         page.workers.pool.submit(Request::Whole {
             job: job as u32,
             link,
+            pixels: 128,
         });
     }
     let oliva = preset("oliva-porphyria").unwrap();
@@ -402,7 +403,7 @@ fn gallery_shells_and_map_tiles_from_workers_are_those_made_alone() {
                 let whole = result.expect("grows");
                 let (id, extra) = ids[job as usize];
                 let (_, spec) = link_of(id, extra);
-                let mut alone = Generator::new(&spec).unwrap();
+                let mut alone = Generator::picture(&spec, 128).unwrap();
                 alone.finish();
                 assert_eq!(whole.mesh.content_hash(), alone.mesh_hash(), "{id}");
                 assert_eq!(whole.shell.rows as usize, alone.rows());

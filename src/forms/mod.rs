@@ -42,6 +42,19 @@ pub fn shape_for(spec: &ShellSpec, rows: usize) -> Result<Box<dyn GrowingShape>,
     }
 }
 
+/// The growing shape of a picture of `spec` `pixels` wide: a swept shell's mesh no finer than
+/// the picture shows ([`SweepMesh::drawn_at`]); any other form's own.
+pub fn picture_shape_for(
+    spec: &ShellSpec,
+    rows: usize,
+    pixels: u32,
+) -> Result<Box<dyn GrowingShape>, ShapeError> {
+    match &spec.form {
+        Form::Sweep(sweep) => Ok(Box::new(SweepMesh::drawn_at(sweep, rows, pixels)?)),
+        Form::Chambers(_) | Form::Branching(_) | Form::Implicit(_) => shape_for(spec, rows),
+    }
+}
+
 /// What makes the pieces of the growth of `spec` (`rows` long) that its shape's
 /// [`GrowingShape::finish_apart`] leaves out, apart from that shape; `None` for a form whose
 /// growth does not split.

@@ -1,7 +1,9 @@
 //! The spec a picture is grown from (a gallery card's or a parameter map's tile): the shell's own, with a mesh no finer than the picture can show. Drawing a picture costs the browser in proportion to its
 //! triangles (SwiftShader on a busy 2-core machine: about a second per 200 000), while the
 //! pattern is sampled per pixel from its texture whatever the mesh: so the picture keeps every
-//! pattern row and cell, every rib, the shape and the seed, and only the mesh is coarser.
+//! pattern row and cell, every rib, the shape and the seed, and only the mesh is coarser. The
+//! worker that grows a picture thins a swept shell's mesh further, to the size each whorl is
+//! drawn at ([`crate::forms::sweep::drawn_size`]).
 
 use crate::spec::ShellSpec;
 use crate::spec::form::Form;

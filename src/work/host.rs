@@ -372,18 +372,20 @@ impl Host {
                     work: Box::new(maker.start(step, &ids)),
                 });
             }
-            Request::Whole { job, link } => match Generator::new(&spec_of(&link)) {
-                Ok(generator) => {
-                    return Err(Job::Whole {
+            Request::Whole { job, link, pixels } => {
+                match Generator::picture(&spec_of(&link), pixels) {
+                    Ok(generator) => {
+                        return Err(Job::Whole {
+                            job,
+                            generator: Box::new(generator),
+                        });
+                    }
+                    Err(e) => Reply::Grown {
                         job,
-                        generator: Box::new(generator),
-                    });
+                        result: Err(format!("This shell cannot be built: {e}")),
+                    },
                 }
-                Err(e) => Reply::Grown {
-                    job,
-                    result: Err(format!("This shell cannot be built: {e}")),
-                },
-            },
+            }
             Request::Tile { job, link, rows } => {
                 match TileWork::new(&spec_of(&link), rows as usize, &mut self.rims) {
                     Ok(work) => {

@@ -48,8 +48,9 @@ pub enum Request {
         step: u32,
         ids: Vec<u32>,
     },
-    /// Grow the shell of `link` whole (a gallery picture).
-    Whole { job: u32, link: String },
+    /// Grow the shell of `link` whole for a picture `pixels` wide (a gallery card, a tile of
+    /// a grid of shells), its mesh no finer than the picture shows.
+    Whole { job: u32, link: String, pixels: u32 },
     /// Compute `rows` rows of the pattern of `link`: a tile of a parameter map.
     Tile { job: u32, link: String, rows: u32 },
 }

@@ -126,6 +126,7 @@ impl PictureQueue {
         pool.submit(Request::Whole {
             job: wanted.job,
             link: wanted.link.clone(),
+            pixels: wanted.place.pixels(),
         });
     }
 

@@ -4,6 +4,7 @@
 
 pub(crate) mod arc_length;
 pub(crate) mod bezier_curve;
+pub(crate) mod drawn_size;
 pub mod frame;
 pub mod helico_spiral;
 pub mod raup;

@@ -7,6 +7,7 @@
 //! point as its last (the same position, bit for bit) so that the pattern coordinate can run
 //! from 0 to 1 while the solid stays watertight.
 
+use super::drawn_size::{RimThinning, half_pixel, points_per_rim};
 use super::helico_spiral::SpiralWalk;
 use super::surface::{Rim, Sweep};
 use crate::mesh::{Bounds, Capacity, Mesh, Surface, Vertex};
@@ -31,6 +32,8 @@ pub struct SweepMesh {
     done: usize,
     rows_per_rim: f64,
     previous: Option<RimBase>,
+    /// In a picture, which of the full mesh's rims it keeps (see [`super::drawn_size`]).
+    thinning: Option<RimThinning>,
 }
 
 impl SweepMesh {
@@ -46,6 +49,19 @@ impl SweepMesh {
             done: 0,
             rows_per_rim,
             previous: None,
+            thinning: None,
+        })
+    }
+
+    /// The mesh of a picture `pixels` wide: the rims and points per rim of the full mesh
+    /// that keep it within half a pixel of it ([`super::drawn_size`]).
+    pub fn drawn_at(spec: &SweepSpec, rows: usize, pixels: u32) -> Result<Self, ShapeError> {
+        let tolerance = half_pixel(Self::new(spec, rows)?.bounds().radius(), pixels);
+        let mut coarse = spec.clone();
+        coarse.curve.segments = points_per_rim(spec, tolerance)?;
+        Ok(Self {
+            thinning: Some(RimThinning::new(tolerance)),
+            ..Self::new(&coarse, rows)?
         })
     }
 
@@ -243,17 +259,34 @@ impl GrowingShape for SweepMesh {
         let at = self.walk.next().expect("the walk is endless");
         let rim = self.sweep.rim(at, self.scale);
         self.scale *= self.sweep.lambda()[2];
+        self.done += 1;
+        let Some(thinning) = &mut self.thinning else {
+            self.add(mesh, edge, &rim);
+            return true;
+        };
+        let added = thinning.take(rim, self.done == self.sweep.rims());
+        for rim in &added {
+            self.add(mesh, edge, rim);
+        }
+        !added.is_empty()
+    }
+}
+
+impl SweepMesh {
+    /// Adds `rim` to the mesh, joined to the rim added before it, and closes the growing edge
+    /// there.
+    fn add(&mut self, mesh: &mut Mesh, edge: &mut Mesh, rim: &Rim) {
         let wall = self.sweep.has_wall();
         let open_wall = wall && !self.sweep.is_closed();
         let base = RimBase {
-            outer: self.push_ring(mesh, Self::outer(&rim), &rim, Surface::Outer),
+            outer: self.push_ring(mesh, Self::outer(rim), rim, Surface::Outer),
             inner: if wall {
-                self.push_ring(mesh, Self::inner(&rim), &rim, Surface::Inner)
+                self.push_ring(mesh, Self::inner(rim), rim, Surface::Inner)
             } else {
                 0
             },
             sides: if open_wall {
-                self.push_sides(mesh, &rim)
+                self.push_sides(mesh, rim)
             } else {
                 0
             },
@@ -261,9 +294,9 @@ impl GrowingShape for SweepMesh {
         let count = rim.points.len() as u32;
         match self.previous {
             None if self.sweep.is_closed() => {
-                self.apex_caps(mesh, &rim, base.outer, wall.then_some(base.inner));
+                self.apex_caps(mesh, rim, base.outer, wall.then_some(base.inner));
             }
-            None if wall => self.edge_band(mesh, &rim, false),
+            None if wall => self.edge_band(mesh, rim, false),
             None => {}
             Some(prev) => {
                 let (outer_flip, inner_flip) = (self.flip(true), self.flip(false));
@@ -286,10 +319,8 @@ impl GrowingShape for SweepMesh {
         }
         edge.clear();
         if wall {
-            self.edge_band(edge, &rim, true);
+            self.edge_band(edge, rim, true);
         }
         self.previous = Some(base);
-        self.done += 1;
-        true
     }
 }
