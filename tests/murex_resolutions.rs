@@ -1,17 +1,18 @@
 //! The Murex whatever the grid (Galbraith, Prusinkiewicz & Wyvill §3): the model, not the
-//! voxel, decides what exists. Every spine, canal spine and bump that the model shows stands
-//! out of the mesh at the preset's own resolution as at a finer one, because the polygonizer
-//! refines the grid where they stand instead of the model dropping them; and every Murex
-//! preset is one closed, consistently wound piece at each. `make test` compares the preset's
-//! own resolution with 256³; `make bench` runs the same check against 384³ (the ignored
+//! voxel, decides what exists. The BlobTree built for any grid is the same tree, and the
+//! meshes of it enclose the same volume within 2 %; every spine, canal spine and bump that the
+//! model shows stands out of the mesh at the preset's own resolution as at a finer one,
+//! because the polygonizer refines the grid where they stand; and every Murex preset is one
+//! closed, consistently wound piece at each. `make test` compares the preset's own
+//! resolution and 128³ with 256³; `make bench` runs the same check against 384³ (the ignored
 //! test below), which takes three times as long.
 
 use crate::common;
 
-use common::{assert_closed_and_outward, implicit, pieces};
+use common::{assert_closed_and_outward, implicit, pieces, signed_volume};
 use glam::DVec3;
 use seashells_core::blobtree::falloff::ISO;
-use seashells_core::forms::murex::whorl::whorl;
+use seashells_core::forms::murex::whorl::{Whorl, whorl};
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
 use seashells_core::presets;
@@ -25,8 +26,7 @@ use std::collections::HashMap;
 fn shell_at(spec: &ShellSpec, resolution: u32) -> (Mesh, Vec<(DVec3, f64)>, f64) {
     let mut spec = spec.clone();
     implicit(&mut spec).resolution = resolution;
-    let (pattern, seed, rows) = (spec.pattern.clone(), spec.seed, spec.growth.rows as usize);
-    let built = whorl(implicit(&mut spec), &pattern, seed, rows).expect("builds");
+    let built = tree_at(&spec, resolution);
     let extent = (built.tree.bounds.max - built.tree.bounds.min).max_element();
     let whole = (built.tree)
         .cull(&built.tree.bounds, built.instances - 1)
@@ -40,6 +40,14 @@ fn shell_at(spec: &ShellSpec, resolution: u32) -> (Mesh, Vec<(DVec3, f64)>, f64)
     let mut grown = Generator::new(&spec).expect("builds");
     grown.finish();
     (grown.snapshot(), shown, extent / f64::from(resolution))
+}
+
+/// The BlobTree of `spec` built for a grid of `resolution` voxels.
+fn tree_at(spec: &ShellSpec, resolution: u32) -> Whorl {
+    let mut spec = spec.clone();
+    implicit(&mut spec).resolution = resolution;
+    let (pattern, seed, rows) = (spec.pattern.clone(), spec.seed, spec.growth.rows as usize);
+    whorl(implicit(&mut spec), &pattern, seed, rows).expect("builds")
 }
 
 /// How many of `tips` stand out of `mesh`: a part stands out where the mesh has a vertex
@@ -69,12 +77,19 @@ fn standing_out(mesh: &Mesh, tips: &[(DVec3, f64)], voxel: f64) -> usize {
         .count()
 }
 
-/// Checks the preset `id` at its own resolution against `finest` voxels.
+/// Checks the preset `id` at its own resolution and at 128³ against `finest` voxels.
 fn check_preset(id: &str, finest: u32) {
     let spec = presets::preset(id).expect(id).spec.clone();
     let default = implicit(&mut spec.clone()).resolution;
-    // The parts the model shows, judged where the grid is finest; below its voxel the model
-    // thickens a spine's tip or enlarges a bump, so a coarser grid may show a few more.
+    let model = tree_at(&spec, finest);
+    for resolution in [default, 128] {
+        let built = tree_at(&spec, resolution);
+        assert!(
+            built.tree == model.tree && built.fine.tips == model.fine.tips,
+            "{id}: the model built for {resolution}³ is the one built for {finest}³"
+        );
+    }
+    // The parts the model shows, judged where the grid is finest.
     let (fine, tips, fine_voxel) = shell_at(&spec, finest);
     let parts = tips.len();
     assert!(
@@ -92,11 +107,19 @@ fn check_preset(id: &str, finest: u32) {
         parts,
         "{id} at {finest}³: of the parts the model shows, those standing out"
     );
-    for (resolution, mesh) in [(default, mesh), (finest, fine)] {
+    let volume = signed_volume(&fine);
+    let (at_128, _, _) = shell_at(&spec, 128);
+    for (resolution, mesh) in [(default, mesh), (128, at_128), (finest, fine)] {
         let what = format!("{id} at {resolution}³");
         assert_closed_and_outward(&mesh, &what);
         let pieces = pieces(&mesh);
         assert_eq!(pieces.len(), 1, "{what}: pieces {pieces:?}");
+        let change = signed_volume(&mesh) / volume - 1.0;
+        assert!(
+            change.abs() <= 0.02,
+            "{what}: volume {:+.2} % of {finest}³'s",
+            100.0 * change
+        );
     }
 }
 

@@ -136,13 +136,13 @@ fn the_default_spines_darken_from_base_to_tip() {
         },
         edge: 1.0,
     };
-    // One spine on its own, with no grid to refine for.
+    // One spine on its own, with no grid to refine for and no floor to thicken it to.
     let spine = |textures: &TexturesSpec| {
         varix(
             &varices,
             &[standing],
             1.0,
-            &mut FineParts::new(0.0),
+            &mut FineParts::new(0.0, 0.0),
             0.0,
             textures,
         )

@@ -26,8 +26,8 @@ pub const BUMP_STREAM: u64 = 11;
 /// One set of bumps, in the generating surface's coordinates and units of D: one at each of
 /// `sites` (the table's every second spine, or the pattern's lower peaks), where its angle
 /// meets the surface, its size scaled by the site's σ. Each is noted in `fine` with the level
-/// of refinement that shows it; one thinner than the finest level shows is enlarged to it, so
-/// that every bump stands at every resolution.
+/// of refinement that shows it; one thinner than the model's floor is enlarged to it
+/// ([`FineParts::thickened`]), so that every bump stands, the same at every resolution.
 pub fn bump_set(
     sites: &[Standing],
     size: f64,
@@ -41,9 +41,9 @@ pub fn bump_set(
         let size = size * s.spine.sigma;
         let factors = [0.0, 0.0, 0.8].map(|extra| noise.normal(1.0, spread).max(0.1) + extra);
         let thickness = size * factors[0].min(factors[1]);
-        let level = fine.level(thickness);
-        // One thinner than the finest level shows is drawn at that thickness, not left out.
-        let size = size * (fine.thinnest(level) / thickness).max(1.0);
+        // One thinner than the floor is drawn at that thickness, not left out.
+        let size = size * fine.thickened(thickness) / thickness;
+        let level = fine.level(fine.thickened(thickness));
         let direction = outward(s.spine.angle);
         let frame = DAffine3 {
             matrix3: DMat3::from_cols(

@@ -64,9 +64,8 @@ pub fn canal_row(
         }
         let canal_radius = cone[6] + t * (cone[7] - cone[6]);
         let spine_length = canal_radius + length * sigma;
-        let level = fine.level(radius * sigma);
-        let thinnest = fine.thinnest(level);
-        let radii = [radius * sigma, radius * sigma * TAPER].map(|r| r.max(thinnest));
+        let radii = [radius * sigma, radius * sigma * TAPER].map(|r| fine.thickened(r));
+        let level = fine.level(radii[1]);
         let placed = DAffine3 {
             matrix3: DMat3::from_cols(away, DVec3::Z.cross(away), DVec3::Z),
             translation: base,

@@ -1,18 +1,29 @@
-//! The parts of a Murex thinner than the grid's voxel — spines, ridges, canal spines, bumps —
-//! and the level of refinement each needs to be shown as the model has it
+//! The thin parts of a Murex — spines, ridges, canal spines, bumps — at their size in the
+//! model, and the level of refinement each needs to be shown on the grid it is polygonized with
 //! ([`Refinement`](crate::blobtree::polygonize::Refinement)): the chunks a part reaches are
 //! meshed with voxels halved until the part is [`THINNEST_VOXELS`] thick, up to
-//! [`MAX_LEVEL`] times. Only a part thinner than that even at the finest level is drawn at
-//! that thickness (a spine's tip, the smallest bumps); none is left out. Each part also notes
-//! where it stands out farthest, so that tests can find it in the mesh.
+//! [`MAX_LEVEL`] times. The model decides what exists, the grid only how finely it is shown:
+//! a part is never thinner than [`THINNEST`] of the shell's extent (a spine's tip, the
+//! smallest bumps are drawn that thick, none is left out), whatever the grid, so that the
+//! same BlobTree is built at every resolution of 112 voxels or more. Each part also notes where it stands out
+//! farthest, so that tests can find it in the mesh.
 
 use crate::blobtree::polygonize::MAX_LEVEL;
 use crate::mesh::Bounds;
 use glam::{DAffine3, DVec3};
 
-/// Voxels (of the level it is meshed at) a spine, a ridge, a canal spine or a bump is at
-/// least thick (as a radius), so that the polygonizer shows it joined to the shell.
+/// Voxels (of the level it is meshed at) a spine, a ridge, a canal spine or a bump should be
+/// thick (as a radius), so that the polygonizer shows it joined to the shell.
 pub const THINNEST_VOXELS: f64 = 1.0;
+
+/// The thinnest radius of a spine, a ridge, a canal spine or a bump, as a fraction of the
+/// shell's extent (its longest side, with its longest spine): 1/224, which on the 80 mm print
+/// the exporters default to is a radius of 0.36 mm, a feature a 0.4 mm nozzle still draws, and
+/// in a view 900 pixels high about four pixels across. The model's own size, not the grid's,
+/// on any grid of 112 voxels or more (a coarser one, a gallery card's, cannot show it, and
+/// draws a part at least as thick as its finest voxel):
+/// `docs/models/galbraith-prusinkiewicz-wyvill.md` argues it.
+pub const THINNEST: f64 = 1.0 / 224.0;
 
 /// How far about a thin part's surface the grid is refined, as a multiple of its radius: its
 /// field reaches on (to 2.2 radii alone), but where it adds to another part's the surface is
@@ -21,8 +32,10 @@ const REACH: f64 = 1.5;
 
 /// The thin parts of one instance, in its generating surface's coordinates (units of D).
 pub struct FineParts {
-    /// The grid's voxel in those units.
+    /// The grid's voxel in those units: what the level of refinement is chosen against.
     voxel: f64,
+    /// The thinnest radius a part is drawn at in those units ([`THINNEST`] of the shell).
+    floor: f64,
     parts: Vec<(Bounds, u32)>,
     /// The point of each part farthest out of the shell, with the part's radius there.
     tips: Vec<(DVec3, f64)>,
@@ -39,10 +52,12 @@ pub struct Placed {
 }
 
 impl FineParts {
-    /// The parts of an instance where the grid's voxel measures `voxel` units of D.
-    pub fn new(voxel: f64) -> Self {
+    /// The parts of an instance where the grid's voxel measures `voxel` units of D and the
+    /// thinnest part `floor`.
+    pub fn new(voxel: f64, floor: f64) -> Self {
         Self {
             voxel,
+            floor,
             parts: Vec::new(),
             tips: Vec::new(),
         }
@@ -58,8 +73,13 @@ impl FineParts {
         }
     }
 
-    /// The thinnest radius shown at `level`.
-    pub fn thinnest(&self, level: u32) -> f64 {
+    /// A part's radius as the model draws it: never under the floor.
+    pub fn thickened(&self, radius: f64) -> f64 {
+        radius.max(self.floor)
+    }
+
+    /// The voxel of the grid at `level`, by which the box refined about a part is widened.
+    fn margin(&self, level: u32) -> f64 {
         THINNEST_VOXELS * self.voxel / f64::from(1u32 << level)
     }
 
@@ -74,7 +94,7 @@ impl FineParts {
     /// of its surface there. The refined boxes follow the tube segment by segment, each
     /// `REACH` times as wide as the surface, rather than the box of the whole curved part.
     pub fn add_tube(&mut self, axis: &[(DVec3, f64)], level: u32) {
-        let margin = self.thinnest(level);
+        let margin = self.margin(level);
         let ball = |(c, r): (DVec3, f64)| {
             let reach = DVec3::splat(REACH * r + margin);
             Bounds {

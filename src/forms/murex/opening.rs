@@ -33,8 +33,14 @@ use crate::blobtree::texture_blend::Look;
 use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec};
 use glam::DVec3;
 
-/// Voxels (of the spec's resolution) the wall the hollow leaves is at least thick; closer to
-/// the apex, where it would be thinner, the shell is solid.
+/// The thinnest wall the hollow leaves, as a fraction of the shell's extent (with its longest
+/// spine); closer to the apex, where it would be thinner, the shell is solid. The model's own
+/// size, the same at every resolution from 112 voxels up: 0.7/112, half a millimetre on the
+/// 80 mm print the exporters default to.
+pub const THINNEST_WALL: f64 = 0.7 / 112.0;
+
+/// Voxels a wall is at least thick on a grid too coarse for [`THINNEST_WALL`] (under 112
+/// voxels): thinner, the grid would show it perforated, in specks.
 pub const WALL_VOXELS: f64 = 0.7;
 
 /// Generating surfaces a piece of the hollow reaches into each neighbouring section, so that
@@ -54,12 +60,13 @@ pub(crate) struct Opening {
 /// the aperture is open at every stage. It starts where consecutive inside surfaces join into
 /// one tube. `varices` are the spines and ridges of the varices (unplaced, with the instance
 /// each closes), which the hollow leaves intact until the next whorl has grown over them.
-/// `voxel` is the side of the voxel the grown shell is polygonized with.
+/// `thinnest_wall` is the thinnest wall it leaves ([`THINNEST_WALL`] of the shell's extent,
+/// or [`WALL_VOXELS`] of a coarser grid).
 pub(crate) fn opening(
     spec: &ImplicitSpec,
     instances: &Instances,
     varices: &[(u32, Node)],
-    voxel: f64,
+    thinnest_wall: f64,
     shell: &Node,
     look: Look,
     gathered: &mut Gathered,
@@ -101,9 +108,8 @@ pub(crate) fn opening(
     let end = count + o.ahead;
     // It starts one generating surface after the first that joins the next, so that the apex
     // is closed by a cap as thick as the body's generating surface is about its centre.
-    // Nor is it carved where the wall it leaves would be thinner than [`WALL_VOXELS`] at the
-    // spec's resolution: a coarse grid would show that wall perforated, in specks.
-    let shown = |k: u32| wall * instances.size(f64::from(k)) >= WALL_VOXELS * voxel;
+    // Nor is it carved where the wall it leaves would be thinner than `thinnest_wall`.
+    let shown = |k: u32| wall * instances.size(f64::from(k)) >= thinnest_wall;
     let first = (0..end).find(|&k| joins(k) && shown(k))? + 1;
     // The generating surface at instance k, for its pattern time and its parts present then.
     let surface = |g: &GeneratorSpec, k: u32| {

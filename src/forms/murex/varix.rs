@@ -119,8 +119,9 @@ pub struct Standing {
 /// The varix of eq 12: the spines `standing` on the surface, joined by the ridge, with
 /// pattern time `time`; the spines wear the spines' texture from base to tip, the ridge the
 /// body's. `sigma_max` is the table's largest σ. Each spine and ridge is noted in `fine` with
-/// the level of refinement that shows it (a spine by its base); a spine's tip thinner than the
-/// finest voxel of that level is thickened to it, so that it stays joined to the shell.
+/// the level of refinement that shows its thinnest end; a spine or ridge thinner than the
+/// model's floor is thickened to it ([`FineParts::thickened`]), so that it stays joined to the
+/// shell at every resolution.
 pub fn varix(
     spec: &VaricesSpec,
     standing: &[Standing],
@@ -134,8 +135,8 @@ pub fn varix(
         .map(|s| spine(spec, s, sigma_max, fine, time, &textures.spines))
         .collect();
     if spec.ridge > 0.0 {
-        let level = fine.level(spec.ridge);
-        let radius = spec.ridge.max(fine.thinnest(level));
+        let radius = fine.thickened(spec.ridge);
+        let level = fine.level(radius);
         for pair in standing.windows(2) {
             for lift in [0.5 * radius, 2.5 * radius] {
                 let at = |s: &Standing| outward(s.spine.angle) * (s.edge + lift);
@@ -172,10 +173,9 @@ fn spine(
 ) -> Node {
     let sigma = s.spine.sigma;
     let length = spec.length;
-    let level = fine.level(spec.radius * sigma);
-    let thinnest = fine.thinnest(level);
-    let base = spec.radius.max(thinnest / sigma);
-    let tip = (spec.tip * sigma_max / sigma).max(thinnest / sigma);
+    let base = fine.thickened(spec.radius * sigma) / sigma;
+    let tip = fine.thickened(spec.tip * sigma_max) / sigma;
+    let level = fine.level(base.min(tip) * sigma);
     let direction = outward(s.spine.angle);
     // Turning α further: the way the spine curls (towards the apex for a level spine).
     let across = outward(s.spine.angle + 90.0);

@@ -10,14 +10,16 @@
 use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
 use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
 use super::check::check;
-use super::fine_parts::{FineParts, Placed};
+use super::fine_parts::{FineParts, Placed, THINNEST, THINNEST_VOXELS};
 use super::helix::Instances;
 use super::opening::{Opening, opening};
+use super::opening::{THINNEST_WALL, WALL_VOXELS};
 use super::rd_placement::{activator_at, bumps_of, free, peaks, spines_of};
 use super::sections::{Gathered, joined, sections};
 use super::textures::look;
 use super::varix::{Spine, Standing, standing, table_spines, varix};
 use crate::blobtree::blob_tree::Node;
+use crate::blobtree::polygonize::MAX_LEVEL;
 use crate::blobtree::texture_blend::Look;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
@@ -60,6 +62,11 @@ pub struct Varix {
     pub bumps: Vec<Standing>,
 }
 
+/// The coarsest grid (voxels along the longest side) that shows the model's least sizes, a
+/// part of [`THINNEST`] and a wall of [`THINNEST_WALL`] of the shell: on it and on every finer
+/// grid the BlobTree is the same.
+pub const SHOWS_THE_MODEL: u32 = 112;
+
 /// The shell of `spec` as one BlobTree (eqs 9–15), instance k carrying growth time
 /// k·(rows − 1)/(K − 1). Spines and bumps placed by the pattern read the activator of
 /// `pattern` (seeded by `seed`) on the row each varix or set of bumps forms on
@@ -97,13 +104,25 @@ pub fn whorl(
     } else {
         v.spines.iter().map(|s| s[2]).fold(0.0, f64::max)
     };
-    // The voxel the grown shell will be polygonized with: its extent, with the longest spine.
+    // The shell's extent, with the longest spine: what the model's least sizes are fractions
+    // of, and what the grid's voxel divides.
     let last = f64::from(count - 1);
     let reach = (v.length * sigma_max).max(spec.canal_spines.length) * instances.size(last);
-    let voxel = (body.bounds.max - body.bounds.min + 2.0 * reach).max_element()
-        / f64::from(spec.resolution);
-    // The thin parts of instance k, measured against the voxel in its own units.
-    let fine_at = |k: f64| FineParts::new(voxel / instances.size(k));
+    let extent = (body.bounds.max - body.bounds.min + 2.0 * reach).max_element();
+    let voxel = extent / f64::from(spec.resolution);
+    // The model's least sizes, unless the grid is too coarse to show them (a gallery card's,
+    // say): then what its finest voxel shows.
+    let (floor, thinnest_wall) = if spec.resolution >= SHOWS_THE_MODEL {
+        (extent * THINNEST, extent * THINNEST_WALL)
+    } else {
+        let finest = voxel / f64::from(1u32 << MAX_LEVEL);
+        (THINNEST_VOXELS * finest, WALL_VOXELS * voxel)
+    };
+    // The thin parts of instance k, in its own units: the grid's voxel, the floor.
+    let fine_at = |k: f64| {
+        let size = instances.size(k);
+        FineParts::new(voxel / size, floor / size)
+    };
     let mut fine = Placed::default();
     // A varix closes every section (at its last instance), when the spec has spines.
     let varix_rows: Vec<u32> = if v.spines.is_empty() && !by_pattern {
@@ -294,7 +313,7 @@ pub fn whorl(
         spec,
         &instances,
         &kept,
-        voxel,
+        thinnest_wall,
         &shell,
         body_look,
         &mut gathered,
