@@ -171,6 +171,18 @@ readme-pictures: build deps-browser
 	cp tests/page/screenshots/breed-generations-WebGL2.png www/img/breeding.png
 	$(XVFB) node --test --test-name-pattern='the keys and a swipe' tests/page/stories.test.mjs
 	cp tests/page/screenshots/story-step.png www/img/story-step.png
+	ZOOM=1.8 $(XVFB) node tests/page/sheet.mjs www/img/murex-opening.png 4 400 \
+	  'B_inside, the inside whorl (fig. 10)|v=1&preset=murex-cabritii&form.opening.shows=inside' \
+	  'B_opening, what is carved (fig. 10)|v=1&preset=murex-cabritii&form.opening.shows=opening' \
+	  'carved by eq. 14 alone (fig. 11)|v=1&preset=murex-cabritii&form.opening.wall=0' \
+	  'with the inside wall, eq. 15 (fig. 11)|v=1&preset=murex-cabritii'
+	ZOOM=1.6 $(XVFB) node tests/page/sheet.mjs www/img/murex-resolutions.png 3 400 \
+	  'Murex cabritii at 128³|v=1&preset=murex-cabritii&form.resolution=128' \
+	  'Murex pecten at 128³|v=1&preset=murex-pecten&form.resolution=128' \
+	  'spines by reaction-diffusion at 128³|v=1&preset=murex-rd-spines&form.resolution=128' \
+	  'Murex cabritii at 384³|v=1&preset=murex-cabritii&form.resolution=384' \
+	  'Murex pecten at 384³|v=1&preset=murex-pecten&form.resolution=384' \
+	  'spines by reaction-diffusion at 384³|v=1&preset=murex-rd-spines&form.resolution=384'
 
 ## Pictures of one shell from four sides (the opening head-on first), to look at: make screenshots LINK='v=1&preset=…' [TURN=20]
 

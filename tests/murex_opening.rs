@@ -1,7 +1,7 @@
 //! The Murex's opening as Galbraith, Prusinkiewicz & Wyvill carve it (§3.3, eqs 14 and 15):
 //! the previous whorl subtracted from the inside generating surface, so that the wall between
 //! two whorls is single; the aperture, seen head-on, an open and roughly round hole bounded by
-//! the previous whorl.
+//! the previous whorl; and the solids it is carved with, shown apart (figs 10 and 11).
 
 use crate::common;
 
@@ -13,8 +13,9 @@ use seashells_core::forms::murex::helix::Instances;
 use seashells_core::forms::murex::varix::outward;
 use seashells_core::forms::murex::whorl::{Whorl, whorl};
 use seashells_core::presets;
+use seashells_core::share::link::decode;
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::form::implicit::Placement;
+use seashells_core::spec::form::implicit::{Placement, Shows};
 
 const PRESETS: [&str; 3] = ["murex-cabritii", "murex-pecten", "murex-rd-spines"];
 
@@ -191,4 +192,67 @@ fn the_aperture_head_on_is_an_open_round_hole_bounded_by_the_previous_whorl() {
             "{id}: the aperture's rim towards the previous whorl ({towards:.2?}, {rim} D out) is not on it"
         );
     }
+}
+
+/// The grown tree of `link`'s shell (every instance placed).
+fn grown_tree(link: &str) -> Node {
+    let decoded = decode(link);
+    assert!(
+        decoded.problems.is_empty(),
+        "{link}: {:?}",
+        decoded.problems
+    );
+    let mut spec = decoded.spec;
+    let rows = spec.growth.rows as usize;
+    let (pattern, seed) = (spec.pattern.clone(), spec.seed);
+    let built = whorl(implicit(&mut spec), &pattern, seed, rows).expect(link);
+    (built.tree)
+        .cull(&built.tree.bounds, built.instances - 1)
+        .expect("a solid")
+}
+
+#[test]
+fn the_solids_of_eq_14_are_shown_apart_as_in_figs_10_and_11() {
+    // Fig 10: the inside whorl B_inside, and B_opening = B_inside − B_{w−1}, what is carved;
+    // fig 11 (left): the shell carved by eq 14 alone, without eq 15's inside wall.
+    let link = |extra: &str| format!("v=1&preset=murex-cabritii{extra}");
+    let inside = grown_tree(&link("&form.opening.shows=inside"));
+    let opening = grown_tree(&link("&form.opening.shows=opening"));
+    let carved = grown_tree(&link("&form.opening.wall=0"));
+    let b = inside.bounds;
+    let (mut in_inside, mut in_opening) = (0, 0);
+    let n = 28;
+    for (x, y, z) in (0..n).flat_map(|x| (0..n).flat_map(move |y| (0..n).map(move |z| (x, y, z)))) {
+        let f = DVec3::new(x as f64, y as f64, z as f64) / f64::from(n - 1);
+        let p = b.min + (b.max - b.min) * f;
+        let (i, o) = (inside.field(p) > ISO, opening.field(p) > ISO);
+        in_inside += usize::from(i);
+        in_opening += usize::from(o);
+        assert!(!o || i, "{p}: in B_opening, not in B_inside");
+        assert!(
+            !o || carved.field(p) <= ISO,
+            "{p}: carved out, still in the shell"
+        );
+    }
+    assert!(
+        in_opening > 0 && in_opening < in_inside,
+        "the previous whorl is taken out of the inside whorl: {in_opening} of {in_inside} samples"
+    );
+}
+
+#[test]
+fn a_solid_shell_has_no_opening_to_show() {
+    let decoded = decode("v=1&preset=implicit-whorl&form.opening.shows=opening");
+    assert!(
+        decoded
+            .problems
+            .iter()
+            .any(|p| p.key == "form.opening.shows"),
+        "{:?}",
+        decoded.problems
+    );
+    assert_eq!(
+        implicit(&mut decoded.spec.clone()).opening.shows,
+        Shows::Shell
+    );
 }

@@ -358,6 +358,7 @@ pub const IMPLICIT: &[Field] = &[
     f("form.opening.extension", Opening, "", "hollow: cones extending its inner edge to the previous whorl (eq 14)", Kind::List { width: 10, integer: false }),
     f("form.opening.wall", Opening, "", "generating surfaces of inside wall at the aperture (eq 15)", int(0, 64)),
     f("form.opening.ahead", Opening, "", "generating surfaces the hollow reaches beyond the edge", int(0, 16)),
+    f("form.opening.shows", Opening, "", "solid drawn (fig 10)", Kind::Choice(&["shell", "inside", "opening"])),
     f("form.textures.body.look", Textures, "", "body whorl: texture", Kind::Choice(&["pattern", "ramp"])),
     f("form.textures.body.base", Textures, "", "body whorl: ramp colour at the base", Kind::Colour),
     f("form.textures.body.tip", Textures, "", "body whorl: ramp colour at the tip", Kind::Colour),

@@ -49,6 +49,8 @@ const OVERLAP: u32 = 2;
 
 /// What eqs 14 and 15 carve out of the shell and add back.
 pub(crate) struct Opening {
+    /// B_inside of eq 14, the whorl of the inside generating surface (fig 10, centre).
+    pub(crate) inside: Node,
     /// B_opening of eq 14.
     pub(crate) hollow: Node,
     /// B_inside_wall of eq 15, at the growing edge.
@@ -168,6 +170,7 @@ pub(crate) fn opening(
     let overlap = i64::from(OVERLAP);
     let sections = (i64::from(end) + surfaces - 1) / surfaces;
     let mut pieces = Vec::new();
+    let mut inside = Vec::new();
     for s in 0..sections {
         let (from, to) = (s * surfaces - overlap, (s + 1) * surfaces - 1 + overlap);
         let hollow = within(&extended, from, to);
@@ -175,6 +178,7 @@ pub(crate) fn opening(
             continue;
         }
         let hollow = Node::blend(hollow);
+        inside.push(hollow.clone());
         let previous = within(&points_whorl, from - per_whorl - 1, to - per_whorl + 1);
         pieces.push(if previous.is_empty() {
             hollow
@@ -200,6 +204,7 @@ pub(crate) fn opening(
         Node::difference(hollow, Node::union(intact))
     };
     Some(Opening {
+        inside: Node::union(inside),
         hollow,
         wall: inside_wall(spec, instances, first, shell, look, gathered),
     })

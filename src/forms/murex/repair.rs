@@ -5,7 +5,7 @@
 
 use super::check::{self, check};
 use super::grid_sight;
-use crate::spec::form::implicit::{ImplicitSpec, Placement};
+use crate::spec::form::implicit::{ImplicitSpec, Placement, Shows};
 use crate::spec::pattern::{Model, PatternSpec};
 use crate::spec::problem::Problem;
 
@@ -62,6 +62,13 @@ pub(crate) fn repair(
     if let Err(e) = check(i) {
         problems.push(e.repaired("the preset's form"));
         *i = f.clone();
+    }
+    if i.opening.shows != Shows::Shell && i.opening.inside.is_empty() {
+        i.opening.shows = Shows::Shell;
+        problems.push(Problem::new(
+            "form.opening.shows",
+            "this shell is solid, with no inside generating surface to carve an opening with; showed the shell",
+        ));
     }
     let varices = &mut i.varices;
     if varices.placement == Placement::Pattern && matches!(pattern.model, Model::None) {

@@ -24,7 +24,7 @@ use crate::blobtree::texture_blend::Look;
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
-use crate::spec::form::implicit::{ImplicitSpec, Placement};
+use crate::spec::form::implicit::{ImplicitSpec, Placement, Shows};
 use crate::spec::pattern::PatternSpec;
 use glam::{DAffine3, DVec3};
 use std::collections::BTreeMap;
@@ -318,14 +318,28 @@ pub fn whorl(
         body_look,
         &mut gathered,
     ) {
-        Some(Opening { hollow, wall }) => {
-            let carved = Node::difference(shell, hollow);
-            match wall {
-                Some(wall) => Node::union(vec![carved, wall]),
-                None => carved,
+        Some(Opening {
+            inside,
+            hollow,
+            wall,
+        }) => match spec.opening.shows {
+            Shows::Shell => {
+                let carved = Node::difference(shell, hollow);
+                match wall {
+                    Some(wall) => Node::union(vec![carved, wall]),
+                    None => carved,
+                }
             }
+            Shows::Inside => inside,
+            Shows::Opening => hollow,
+        },
+        None if spec.opening.shows == Shows::Shell => shell,
+        None => {
+            return Err(ShapeError::new(
+                "form.opening.shows",
+                "this shell has no opening: its inside generating surface carves nothing",
+            ));
         }
-        None => shell,
     };
     Ok(Whorl {
         tree,

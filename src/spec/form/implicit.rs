@@ -169,6 +169,22 @@ pub struct OpeningSpec {
     /// Generating surfaces the hollow reaches beyond the growing edge, so the aperture stays
     /// open at every stage.
     pub ahead: u32,
+    /// Which solid of eqs 14–15 is drawn: the Murex, or one of the two its opening is carved
+    /// with (the paper's fig 10).
+    pub shows: Shows,
+}
+
+/// A solid of eqs 14–15, as the paper's figs 10 and 11 show them apart.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Shows {
+    /// B_murex = (B_shell − B_opening) ∪ B_inside_wall: the shell.
+    #[default]
+    Shell,
+    /// B_inside: the whorl the inside generating surface sweeps (fig 10, centre).
+    Inside,
+    /// B_opening = B_inside − B_{w−1}: what is carved out of the shell (fig 10, right).
+    Opening,
 }
 
 impl Default for OpeningSpec {
@@ -179,6 +195,7 @@ impl Default for OpeningSpec {
             extension: Vec::new(),
             wall: 0,
             ahead: 3,
+            shows: Shows::Shell,
         }
     }
 }
@@ -227,6 +244,13 @@ pub struct GeneratorSpec {
     /// and the others meet as in a union. Parts are numbered from 0: the points, then the
     /// cones, then the tori.
     pub pairs: Vec<[u32; 2]>,
+}
+
+impl GeneratorSpec {
+    /// Whether it has no parts (an opening's inside surface that carves nothing).
+    pub fn is_empty(&self) -> bool {
+        self.points.is_empty() && self.cones.is_empty() && self.tori.is_empty()
+    }
 }
 
 impl Default for GeneratorSpec {
