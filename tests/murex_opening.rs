@@ -12,6 +12,7 @@ use seashells_core::blobtree::falloff::ISO;
 use seashells_core::forms::murex::helix::Instances;
 use seashells_core::forms::murex::varix::outward;
 use seashells_core::forms::murex::whorl::{Whorl, whorl};
+use seashells_core::generator::{BuildError, Generator};
 use seashells_core::presets;
 use seashells_core::share::link::decode;
 use seashells_core::spec::ShellSpec;
@@ -238,6 +239,26 @@ fn the_solids_of_eq_14_are_shown_apart_as_in_figs_10_and_11() {
         in_opening > 0 && in_opening < in_inside,
         "the previous whorl is taken out of the inside whorl: {in_opening} of {in_inside} samples"
     );
+}
+
+#[test]
+fn on_a_tile_s_coarse_grid_the_inside_whorl_grows_and_an_empty_opening_says_why() {
+    // A map's tile of the Murex is polygonized on 25 voxels, too coarse to show any whorl's
+    // hollow with its wall: the shell is solid, nothing is carved. Drawn alone, the inside
+    // whorl has no wall to keep and still grows; the opening, what is carved, is nothing, and
+    // says so.
+    let link = "v=1&preset=murex-cabritii&form.resolution=25";
+    let decoded = decode(&format!("{link}&form.opening.shows=inside"));
+    assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+    let mut grown = Generator::new(&decoded.spec).expect("the inside whorl");
+    grown.finish();
+    common::assert_closed_and_outward(&grown.snapshot(), "the inside whorl at 25 voxels");
+    let decoded = decode(&format!("{link}&form.opening.shows=opening"));
+    let Err(BuildError::Shape(e)) = Generator::new(&decoded.spec) else {
+        panic!("an opening of nothing is refused");
+    };
+    assert_eq!(e.key, "form.opening.shows");
+    assert!(e.message.contains("25 voxels"), "{}", e.message);
 }
 
 #[test]

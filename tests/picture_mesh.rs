@@ -1,5 +1,6 @@
 //! A picture's mesh (a gallery card's, a parameter map's tile) is no finer than the picture
-//! shows: the full mesh's own points, fewer of them, the same closed solid, the same pattern.
+//! shows: some of the rims of the full mesh (with as many points a rim), the same closed solid,
+//! the same pattern as the shell's own, and whole wherever its growth stops.
 
 use crate::common;
 use seashells_core::generator::Generator;
@@ -51,12 +52,37 @@ fn a_picture_keeps_the_full_mesh_s_points_its_solid_and_its_pattern() {
             if matches!(&spec.form, Form::Sweep(s) if s.wall.thickness > 0.0) {
                 common::assert_closed_and_outward(&picture_mesh, &what);
             }
+            let own = grown(Generator::new(&spec).unwrap());
             assert_eq!(
                 picture.pattern().map(|p| p.rgba()),
-                full.pattern().map(|p| p.rgba()),
-                "{what}: the same pattern"
+                own.pattern().map(|p| p.rgba()),
+                "{what}: the shell's own pattern"
             );
         }
+    }
+}
+
+#[test]
+fn a_picture_stopped_part_way_is_closed_up_to_where_it_stopped() {
+    let spec = picture_spec(&preset("turbinate").unwrap().spec, TILE_PIXELS);
+    let rows = spec.growth.rows as usize;
+    for stop in [rows / 7, rows / 2, rows - 3] {
+        let mut picture = Generator::picture(&spec, TILE_PIXELS).unwrap();
+        picture.advance(stop);
+        let mut full = Generator::new(&spec).unwrap();
+        full.advance(stop);
+        let what = format!("turbinate's tile at row {}", picture.rows_done());
+        let reach = |g: &Generator| {
+            (g.snapshot().vertices.iter())
+                .map(|v| v.pattern[1])
+                .fold(f32::MIN, f32::max)
+        };
+        assert_eq!(
+            reach(&picture),
+            reach(&full),
+            "{what}: as far as the full mesh"
+        );
+        common::assert_closed_and_outward(&picture.snapshot(), &what);
     }
 }
 

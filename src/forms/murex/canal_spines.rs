@@ -30,8 +30,8 @@ const TAPER: f64 = 0.35;
 /// The canal spines of one row: `sizes` (σ, from the body down the canal) on the canal
 /// `cone` (a generator cone row: from, to, radii, bend), each `length`·σ long beyond the
 /// canal's surface with base radius `radius`·σ, each textured by `texture` from the canal's
-/// surface to its tip and noted in `fine` with the level of refinement that shows its base;
-/// none is thinner than the finest voxel of that level.
+/// surface to its tip and noted in `fine` with the level of refinement that shows its tapered
+/// end; none is thinner than the model's floor ([`FineParts::thickened`]).
 pub fn canal_row(
     cone: &[f64; 10],
     sizes: &[f64],

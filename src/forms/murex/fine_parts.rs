@@ -5,8 +5,8 @@
 //! [`MAX_LEVEL`] times. The model decides what exists, the grid only how finely it is shown:
 //! a part is never thinner than [`THINNEST`] of the shell's extent (a spine's tip, the
 //! smallest bumps are drawn that thick, none is left out), whatever the grid, so that the
-//! same BlobTree is built at every resolution of 112 voxels or more. Each part also notes where it stands out
-//! farthest, so that tests can find it in the mesh.
+//! same BlobTree is built at every resolution of [`SHOWS_THE_MODEL`] voxels or more. Each part
+//! also notes where it stands out farthest, so that tests can find it in the mesh.
 
 use crate::blobtree::polygonize::MAX_LEVEL;
 use crate::mesh::Bounds;
@@ -16,14 +16,20 @@ use glam::{DAffine3, DVec3};
 /// thick (as a radius), so that the polygonizer shows it joined to the shell.
 pub const THINNEST_VOXELS: f64 = 1.0;
 
+/// The coarsest grid (voxels along the shell's longest side) that shows the model's least
+/// sizes, a part of [`THINNEST`] and a wall of
+/// [`THINNEST_WALL`](super::opening::THINNEST_WALL): on it and on every finer grid the
+/// BlobTree is the same.
+pub const SHOWS_THE_MODEL: u32 = 112;
+
 /// The thinnest radius of a spine, a ridge, a canal spine or a bump, as a fraction of the
-/// shell's extent (its longest side, with its longest spine): 1/224, which on the 80 mm print
-/// the exporters default to is a radius of 0.36 mm, a feature a 0.4 mm nozzle still draws, and
-/// in a view 900 pixels high about four pixels across. The model's own size, not the grid's,
-/// on any grid of 112 voxels or more (a coarser one, a gallery card's, cannot show it, and
-/// draws a part at least as thick as its finest voxel):
-/// `docs/models/galbraith-prusinkiewicz-wyvill.md` argues it.
-pub const THINNEST: f64 = 1.0 / 224.0;
+/// shell's extent (its longest side, with its longest spine): the finest voxel of a grid of
+/// [`SHOWS_THE_MODEL`], 1/224, which on the 80 mm print the exporters default to is a radius
+/// of 0.36 mm, a feature a 0.4 mm nozzle still draws, and in a view 900 pixels high a radius
+/// of about four pixels. The model's own size, not the grid's, on any grid of 112 voxels or
+/// more (a coarser one, a gallery card's, cannot show it, and draws a part at least as thick
+/// as its finest voxel): `docs/models/galbraith-prusinkiewicz-wyvill.md` argues it.
+pub const THINNEST: f64 = THINNEST_VOXELS / (SHOWS_THE_MODEL << MAX_LEVEL) as f64;
 
 /// How far about a thin part's surface the grid is refined, as a multiple of its radius: its
 /// field reaches on (to 2.2 radii alone), but where it adds to another part's the surface is

@@ -23,6 +23,7 @@
 //! without the canal's cones: those lie along the axis, where every later canal runs, and
 //! would fill the inner canal.
 
+use super::fine_parts::SHOWS_THE_MODEL;
 use super::generating_surface::generating_surface;
 use super::helix::Instances;
 use super::sections::Gathered;
@@ -30,14 +31,14 @@ use super::varix::{edge_distance, outward};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
 use crate::blobtree::texture_blend::Look;
-use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec};
+use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec, Shows};
 use glam::DVec3;
 
 /// The thinnest wall the hollow leaves, as a fraction of the shell's extent (with its longest
 /// spine); closer to the apex, where it would be thinner, the shell is solid. The model's own
 /// size, the same at every resolution from 112 voxels up: 0.7/112, half a millimetre on the
 /// 80 mm print the exporters default to.
-pub const THINNEST_WALL: f64 = 0.7 / 112.0;
+pub const THINNEST_WALL: f64 = WALL_VOXELS / SHOWS_THE_MODEL as f64;
 
 /// Voxels a wall is at least thick on a grid too coarse for [`THINNEST_WALL`] (under 112
 /// voxels): thinner, the grid would show it perforated, in specks.
@@ -110,8 +111,10 @@ pub(crate) fn opening(
     let end = count + o.ahead;
     // It starts one generating surface after the first that joins the next, so that the apex
     // is closed by a cap as thick as the body's generating surface is about its centre.
-    // Nor is it carved where the wall it leaves would be thinner than `thinnest_wall`.
-    let shown = |k: u32| wall * instances.size(f64::from(k)) >= thinnest_wall;
+    // Nor is it carved where the wall it leaves would be thinner than `thinnest_wall`; drawn
+    // alone (fig 10), the inside whorl has no wall to keep, and starts where it joins.
+    let apart = spec.opening.shows == Shows::Inside;
+    let shown = |k: u32| apart || wall * instances.size(f64::from(k)) >= thinnest_wall;
     let first = (0..end).find(|&k| joins(k) && shown(k))? + 1;
     // The generating surface at instance k, for its pattern time and its parts present then.
     let surface = |g: &GeneratorSpec, k: u32| {

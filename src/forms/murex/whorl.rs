@@ -10,10 +10,9 @@
 use super::bumps::{BUMP_EXPONENT, BUMP_STREAM, bump_set};
 use super::canal_spines::{CANAL_STREAM, CANAL_VARICES, canal_row};
 use super::check::check;
-use super::fine_parts::{FineParts, Placed, THINNEST, THINNEST_VOXELS};
+use super::fine_parts::{FineParts, Placed, SHOWS_THE_MODEL, THINNEST, THINNEST_VOXELS};
 use super::helix::Instances;
-use super::opening::{Opening, opening};
-use super::opening::{THINNEST_WALL, WALL_VOXELS};
+use super::opening::{Opening, THINNEST_WALL, WALL_VOXELS, opening};
 use super::rd_placement::{activator_at, bumps_of, free, peaks, spines_of};
 use super::sections::{Gathered, joined, sections};
 use super::textures::look;
@@ -57,15 +56,9 @@ pub struct Varix {
     pub spines: Vec<Standing>,
     /// Spines in the canal row below it.
     pub canal_spines: usize,
-    /// Where the bumps of the section it closes stand, set after set (bumps thinner than the
-    /// grid shows are then left out of the tree).
+    /// Where the bumps of the section it closes stand, set after set.
     pub bumps: Vec<Standing>,
 }
-
-/// The coarsest grid (voxels along the longest side) that shows the model's least sizes, a
-/// part of [`THINNEST`] and a wall of [`THINNEST_WALL`] of the shell: on it and on every finer
-/// grid the BlobTree is the same.
-pub const SHOWS_THE_MODEL: u32 = 112;
 
 /// The shell of `spec` as one BlobTree (eqs 9–15), instance k carrying growth time
 /// k·(rows − 1)/(K − 1). Spines and bumps placed by the pattern read the activator of
@@ -337,7 +330,15 @@ pub fn whorl(
         None => {
             return Err(ShapeError::new(
                 "form.opening.shows",
-                "this shell has no opening: its inside generating surface carves nothing",
+                if spec.opening.inside.is_empty() {
+                    "this shell is solid: it has no inside generating surface to carve with"
+                        .to_string()
+                } else {
+                    format!(
+                        "on a grid of {} voxels the wall the hollow would leave is too thin to show in every whorl, so nothing is carved: a resolution of {SHOWS_THE_MODEL} or more shows the model",
+                        spec.resolution
+                    )
+                },
             ));
         }
     };

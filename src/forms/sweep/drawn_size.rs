@@ -1,11 +1,13 @@
 //! A swept shell's mesh as fine as the picture it is drawn in (a gallery card, a tile of the
 //! parameter map). Every rim of a shell has the same points and every whorl the same rims, so
 //! the first whorls, a few pixels across in a picture, cost as many triangles as the last; a
-//! software rasterizer pays for each. Here the mesh keeps a subset of the full mesh's rims and
-//! of its points per rim: a rim is left out where the band from the rim kept before it to the
-//! one after lies within `tolerance` of it (half a pixel) and turns its normals by under
-//! [`NORMAL_TOLERANCE`] (so that a rib's shading stays), and the points per rim are the fewest
-//! that keep the largest rims as close. The rims kept are the full mesh's, bit for bit.
+//! software rasterizer pays for each. Here the mesh has fewer points per rim (the first of 4, 5,
+//! 7, 9, 12, … that keeps the largest rims within `tolerance`, half a pixel, of the spec's own)
+//! and keeps only some of the rims of the mesh with that many points a rim: a rim is left out
+//! where the band from the rim kept before it to the one after lies within `tolerance` of it
+//! and turns its normals by under [`NORMAL_TOLERANCE`] (so that a rib's shading stays). The
+//! rims kept are that mesh's, bit for bit. The tolerance is checked on the outer surface; the
+//! inner one, a wall's thickness below, departs by about as much.
 
 use super::surface::{Rim, Sweep};
 use crate::shape::ShapeError;
@@ -59,6 +61,12 @@ impl RimThinning {
         })
     }
 
+    /// The band still open, while rims are held: the last rim kept and the newest rim, which
+    /// the growing edge joins (within the tolerance of every rim between).
+    pub(crate) fn open(&self) -> Option<(Rim, Rim)> {
+        Some((self.kept.clone()?, self.held.last()?.clone()))
+    }
+
     /// Takes the next rim of the full mesh (`last`: the opening's); returns the rims to add to
     /// the mesh now, in order: none while the band can still stretch, else the rim that ends
     /// it, and the last rim at the end.
@@ -89,8 +97,9 @@ impl RimThinning {
     }
 }
 
-/// Points per rim for a picture: the fewest (down to 4; never more than the spec's own) whose
-/// rims, at the last whorl, stay within `tolerance` of the spec's own rims there. A rim
+/// Points per rim for a picture: the first of 4, 5, 7, 9, 12, … (each a quarter more; never
+/// more than the spec's own) whose rims, along the last whorl, stay within `tolerance` of the
+/// spec's own rims there. A rim
 /// departs most from its curve where it is largest, and a shell's largest rims are its last.
 pub(crate) fn points_per_rim(spec: &SweepSpec, tolerance: f64) -> Result<u32, ShapeError> {
     let full = Sweep::new(spec)?;
@@ -133,9 +142,10 @@ fn follows(coarse: &Rim, fine: &Rim, tolerance: f64) -> bool {
     })
 }
 
-/// The largest tolerance asked of a picture: half a pixel of a picture `pixels` wide of a shell
-/// whose bounding sphere has `radius` (the camera frames that sphere's diameter, about the
-/// picture's width, so a pixel is about 2 · radius / pixels).
+/// Half a pixel, in the shell's units, of a picture `pixels` wide of a shell whose bounding
+/// sphere has `radius`: the camera frames that sphere's diameter across about the picture's
+/// width, so a pixel is about 2 · radius / pixels (in perspective the sphere's near side is
+/// drawn somewhat larger).
 pub(crate) fn half_pixel(radius: f64, pixels: u32) -> f64 {
     radius / f64::from(pixels.max(1))
 }

@@ -34,6 +34,10 @@ pub struct SweepMesh {
     previous: Option<RimBase>,
     /// In a picture, which of the full mesh's rims it keeps (see [`super::drawn_size`]).
     thinning: Option<RimThinning>,
+    /// In a picture, the spec's own surface with all its points per rim: the rims' lengths,
+    /// which a pattern on a growing edge follows, are measured on it, so that the picture
+    /// shows the shell's own pattern.
+    measured: Option<Sweep>,
 }
 
 impl SweepMesh {
@@ -50,19 +54,95 @@ impl SweepMesh {
             rows_per_rim,
             previous: None,
             thinning: None,
+            measured: None,
         })
     }
 
-    /// The mesh of a picture `pixels` wide: the rims and points per rim of the full mesh
-    /// that keep it within half a pixel of it ([`super::drawn_size`]).
+    /// The mesh of a picture `pixels` wide: of the full mesh's rims those that keep it
+    /// within half a pixel, with as few points per rim as keep it so ([`super::drawn_size`]).
     pub fn drawn_at(spec: &SweepSpec, rows: usize, pixels: u32) -> Result<Self, ShapeError> {
-        let tolerance = half_pixel(Self::new(spec, rows)?.bounds().radius(), pixels);
+        let full = Self::new(spec, rows)?;
+        let tolerance = half_pixel(full.bounds().radius(), pixels);
         let mut coarse = spec.clone();
         coarse.curve.segments = points_per_rim(spec, tolerance)?;
         Ok(Self {
             thinning: Some(RimThinning::new(tolerance)),
+            measured: Some(full.sweep),
             ..Self::new(&coarse, rows)?
         })
+    }
+
+    /// Pushes the vertices of `rim` (outer ring, inner ring, side points) to `mesh`.
+    fn rings(&self, mesh: &mut Mesh, rim: &Rim) -> RimBase {
+        let wall = self.sweep.has_wall();
+        RimBase {
+            outer: self.push_ring(mesh, Self::outer(rim), rim, Surface::Outer),
+            inner: if wall {
+                self.push_ring(mesh, Self::inner(rim), rim, Surface::Inner)
+            } else {
+                0
+            },
+            sides: if wall && !self.sweep.is_closed() {
+                self.push_sides(mesh, rim)
+            } else {
+                0
+            },
+        }
+    }
+
+    /// The band of quads joining two rims' vertices in `mesh` (`count` points a ring): the
+    /// outer surface, the inner one, and an open curve's sides.
+    fn stitch(&self, mesh: &mut Mesh, prev: RimBase, base: RimBase, count: u32) {
+        let wall = self.sweep.has_wall();
+        let (outer_flip, inner_flip) = (self.flip(true), self.flip(false));
+        for j in 0..count - 1 {
+            let (a, b) = (prev.outer + j, base.outer + j);
+            mesh.quad([a, a + 1, b + 1, b], outer_flip);
+            if wall {
+                let (a, b) = (prev.inner + j, base.inner + j);
+                mesh.quad([a, a + 1, b + 1, b], inner_flip);
+            }
+        }
+        if wall && !self.sweep.is_closed() {
+            // Start side (facing −s) then end side (facing +s).
+            for (k, outwards) in [(0, true), (2, false)] {
+                let (a, b) = (prev.sides + k, base.sides + k);
+                mesh.quad([a, b, b + 1, a + 1], self.flip(outwards));
+            }
+        }
+    }
+
+    /// Adds `rim` to the mesh, joined to the rim added before it, and closes the growing edge
+    /// there.
+    fn add(&mut self, mesh: &mut Mesh, edge: &mut Mesh, rim: &Rim) {
+        let wall = self.sweep.has_wall();
+        let base = self.rings(mesh, rim);
+        match self.previous {
+            None if self.sweep.is_closed() => {
+                self.apex_caps(mesh, rim, base.outer, wall.then_some(base.inner));
+            }
+            None if wall => self.edge_band(mesh, rim, false),
+            None => {}
+            Some(prev) => self.stitch(mesh, prev, base, rim.points.len() as u32),
+        }
+        edge.clear();
+        if wall {
+            self.edge_band(edge, rim, true);
+        }
+        self.previous = Some(base);
+    }
+
+    /// A picture's growing edge while rims are held back: the band from the last rim kept to
+    /// the newest rim, closed by the lip there, so that the shell as it stands reaches the
+    /// rim it has grown to (the band passes within the tolerance of the rims between).
+    fn open_band(&self, edge: &mut Mesh, kept: &Rim, newest: &Rim) {
+        edge.clear();
+        let from = self.rings(edge, kept);
+        let to = self.rings(edge, newest);
+        self.stitch(edge, from, to, newest.points.len() as u32);
+        if self.sweep.has_wall() {
+            self.edge_band(edge, newest, true);
+        }
     }
 
     fn vertex(&self, p: DVec3, n: DVec3, j: usize, row: f64, surface: Surface) -> Vertex {
@@ -240,8 +320,9 @@ impl GrowingShape for SweepMesh {
 
     /// The generating curve's length on the rim at that row, sculpture and lip included.
     fn rim_length(&self, row: usize) -> Option<f64> {
-        let t = row as f64 / self.rows_per_rim * self.sweep.step();
-        let rim = self.sweep.rim_at(t.min(self.sweep.t_max()));
+        let sweep = self.measured.as_ref().unwrap_or(&self.sweep);
+        let t = row as f64 / self.rows_per_rim * sweep.step();
+        let rim = sweep.rim_at(t.min(sweep.t_max()));
         let points = rim.points.windows(2);
         Some(points.map(|p| p[0].position.distance(p[1].position)).sum())
     }
@@ -265,62 +346,13 @@ impl GrowingShape for SweepMesh {
             return true;
         };
         let added = thinning.take(rim, self.done == self.sweep.rims());
+        let open = thinning.open();
         for rim in &added {
             self.add(mesh, edge, rim);
         }
-        !added.is_empty()
-    }
-}
-
-impl SweepMesh {
-    /// Adds `rim` to the mesh, joined to the rim added before it, and closes the growing edge
-    /// there.
-    fn add(&mut self, mesh: &mut Mesh, edge: &mut Mesh, rim: &Rim) {
-        let wall = self.sweep.has_wall();
-        let open_wall = wall && !self.sweep.is_closed();
-        let base = RimBase {
-            outer: self.push_ring(mesh, Self::outer(rim), rim, Surface::Outer),
-            inner: if wall {
-                self.push_ring(mesh, Self::inner(rim), rim, Surface::Inner)
-            } else {
-                0
-            },
-            sides: if open_wall {
-                self.push_sides(mesh, rim)
-            } else {
-                0
-            },
-        };
-        let count = rim.points.len() as u32;
-        match self.previous {
-            None if self.sweep.is_closed() => {
-                self.apex_caps(mesh, rim, base.outer, wall.then_some(base.inner));
-            }
-            None if wall => self.edge_band(mesh, rim, false),
-            None => {}
-            Some(prev) => {
-                let (outer_flip, inner_flip) = (self.flip(true), self.flip(false));
-                for j in 0..count - 1 {
-                    let (a, b) = (prev.outer + j, base.outer + j);
-                    mesh.quad([a, a + 1, b + 1, b], outer_flip);
-                    if wall {
-                        let (a, b) = (prev.inner + j, base.inner + j);
-                        mesh.quad([a, a + 1, b + 1, b], inner_flip);
-                    }
-                }
-                if open_wall {
-                    // Start side (facing −s) then end side (facing +s).
-                    for (k, outwards) in [(0, true), (2, false)] {
-                        let (a, b) = (prev.sides + k, base.sides + k);
-                        mesh.quad([a, b, b + 1, a + 1], self.flip(outwards));
-                    }
-                }
-            }
+        if let Some((kept, newest)) = &open {
+            self.open_band(edge, kept, newest);
         }
-        edge.clear();
-        if wall {
-            self.edge_band(edge, rim, true);
-        }
-        self.previous = Some(base);
+        true
     }
 }
