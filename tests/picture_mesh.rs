@@ -82,6 +82,12 @@ fn a_picture_stopped_part_way_is_closed_up_to_where_it_stopped() {
             reach(&full),
             "{what}: as far as the full mesh"
         );
+        let (_, room) = picture.capacity();
+        assert!(
+            picture.edge().vertices.len() <= room.vertices
+                && picture.edge().indices.len() <= room.indices,
+            "{what}: the edge within the room it asks for"
+        );
         common::assert_closed_and_outward(&picture.snapshot(), &what);
     }
 }

@@ -286,16 +286,29 @@ impl GrowingShape for SweepMesh {
         Capacity { vertices, indices }
     }
 
+    /// The lip, and in a picture the open band to the newest rim ([`Self::open_band`]).
     fn edge_capacity(&self) -> Capacity {
-        if self.sweep.has_wall() {
-            let points = self.sweep.points_per_rim();
+        let points = self.sweep.points_per_rim();
+        let wall = self.sweep.has_wall();
+        let mut capacity = if wall {
             Capacity {
                 vertices: 2 * points,
                 indices: (points - 1) * 6,
             }
         } else {
             Capacity::default()
+        };
+        if self.thinning.is_some() {
+            let surfaces = if wall { 2 } else { 1 };
+            let sides = if wall && !self.sweep.is_closed() {
+                4
+            } else {
+                0
+            };
+            capacity.vertices += 2 * (surfaces * points + sides);
+            capacity.indices += surfaces * (points - 1) * 6 + sides * 3;
         }
+        capacity
     }
 
     fn bounds(&self) -> Bounds {
