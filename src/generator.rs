@@ -164,19 +164,23 @@ pub fn pattern_alone(
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
         let rows = spec.growth.rows.max(2) as usize;
-        Self::with_shape(spec, shape_for(spec, rows).map_err(BuildError::Shape)?)
+        Self::with_shape(spec, rows, shape_for(spec, rows))
     }
 
     /// The growth of a picture of `spec` `pixels` wide: the same pattern, on a mesh no finer
     /// than the picture shows ([`picture_shape_for`]).
     pub fn picture(spec: &ShellSpec, pixels: u32) -> Result<Self, BuildError> {
         let rows = spec.growth.rows.max(2) as usize;
-        let shape = picture_shape_for(spec, rows, pixels).map_err(BuildError::Shape)?;
-        Self::with_shape(spec, shape)
+        Self::with_shape(spec, rows, picture_shape_for(spec, rows, pixels))
     }
 
-    fn with_shape(spec: &ShellSpec, shape: Box<dyn GrowingShape>) -> Result<Self, BuildError> {
-        let rows = spec.growth.rows.max(2) as usize;
+    /// The growth of `spec`, `rows` long, on `shape`.
+    fn with_shape(
+        spec: &ShellSpec,
+        rows: usize,
+        shape: Result<Box<dyn GrowingShape>, ShapeError>,
+    ) -> Result<Self, BuildError> {
+        let shape = shape.map_err(BuildError::Shape)?;
         let pattern =
             PatternRun::new(spec, |row| shape.rim_length(row)).map_err(BuildError::Pattern)?;
         let mut generator = Self {

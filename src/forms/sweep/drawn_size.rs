@@ -9,28 +9,28 @@
 //! rims kept are that mesh's, bit for bit. The tolerance is checked on the outer surface; the
 //! inner one, a wall's thickness below, departs by about as much.
 
-use super::surface::{Rim, Sweep};
+use super::surface::{Rim, RimPoint, Sweep};
 use crate::shape::ShapeError;
 use crate::spec::form::sweep::SweepSpec;
-use glam::DVec3;
 use std::f64::consts::TAU;
 
 /// Radians a normal may turn from the one interpolated between the kept rims or points.
 const NORMAL_TOLERANCE: f64 = 0.1;
 
+/// Whether `p`, at fraction `f` of the way from `a` to `b`, lies within `tolerance` of the
+/// point the straight segment from `a` to `b` puts there, its normal within
+/// [`NORMAL_TOLERANCE`] of theirs interpolated.
+fn near(a: &RimPoint, b: &RimPoint, f: f64, p: &RimPoint, tolerance: f64) -> bool {
+    let normal = a.normal.lerp(b.normal, f).normalize_or_zero();
+    a.position.lerp(b.position, f).distance(p.position) <= tolerance
+        && normal.dot(p.normal) >= NORMAL_TOLERANCE.cos()
+}
+
 /// Whether `between`, at fraction `f` of the way from `a` to `b`, is where the straight band
 /// from `a` to `b` puts it, within `tolerance`, and faces the same way.
 fn close(a: &Rim, b: &Rim, between: &Rim, f: f64, tolerance: f64) -> bool {
-    let normal_cos = NORMAL_TOLERANCE.cos();
-    a.points
-        .iter()
-        .zip(&b.points)
-        .zip(&between.points)
-        .all(|((a, b), p)| {
-            let normal = a.normal.lerp(b.normal, f).normalize_or_zero();
-            a.position.lerp(b.position, f).distance(p.position) <= tolerance
-                && normal.dot(p.normal) >= normal_cos
-        })
+    (a.points.iter().zip(&b.points).zip(&between.points))
+        .all(|((a, b), p)| near(a, b, f, p, tolerance))
 }
 
 /// Which rims a picture keeps, decided as they come: the first and the last always, and in
@@ -63,8 +63,8 @@ impl RimThinning {
 
     /// The band still open, while rims are held: the last rim kept and the newest rim, which
     /// the growing edge joins (within the tolerance of every rim between).
-    pub(crate) fn open(&self) -> Option<(Rim, Rim)> {
-        Some((self.kept.clone()?, self.held.last()?.clone()))
+    pub(crate) fn open(&self) -> Option<(&Rim, &Rim)> {
+        Some((self.kept.as_ref()?, self.held.last()?))
     }
 
     /// Takes the next rim of the full mesh (`last`: the opening's); returns the rims to add to
@@ -99,10 +99,13 @@ impl RimThinning {
 
 /// Points per rim for a picture: the first of 4, 5, 7, 9, 12, … (each a quarter more; never
 /// more than the spec's own) whose rims, along the last whorl, stay within `tolerance` of the
-/// spec's own rims there. A rim
-/// departs most from its curve where it is largest, and a shell's largest rims are its last.
-pub(crate) fn points_per_rim(spec: &SweepSpec, tolerance: f64) -> Result<u32, ShapeError> {
-    let full = Sweep::new(spec)?;
+/// spec's own rims there (`full`, its surface). A rim departs most from its curve where it is
+/// largest, and a shell's largest rims are its last.
+pub(crate) fn points_per_rim(
+    spec: &SweepSpec,
+    full: &Sweep,
+    tolerance: f64,
+) -> Result<u32, ShapeError> {
     let t_max = full.t_max();
     let ts: Vec<f64> = (0..8)
         .map(|k| (t_max - TAU * f64::from(k) / 8.0).max(0.0))
@@ -130,15 +133,16 @@ pub(crate) fn points_per_rim(spec: &SweepSpec, tolerance: f64) -> Result<u32, Sh
 fn follows(coarse: &Rim, fine: &Rim, tolerance: f64) -> bool {
     let n = (fine.points.len() - 1) as f64;
     let m = (coarse.points.len() - 1) as f64;
-    let normal_cos = NORMAL_TOLERANCE.cos();
     fine.points.iter().enumerate().all(|(j, p)| {
         let x = j as f64 / n * m;
         let i = (x.floor() as usize).min(coarse.points.len() - 2);
-        let f = x - i as f64;
-        let (a, b) = (&coarse.points[i], &coarse.points[i + 1]);
-        let normal: DVec3 = a.normal.lerp(b.normal, f).normalize_or_zero();
-        a.position.lerp(b.position, f).distance(p.position) <= tolerance
-            && normal.dot(p.normal) >= normal_cos
+        near(
+            &coarse.points[i],
+            &coarse.points[i + 1],
+            x - i as f64,
+            p,
+            tolerance,
+        )
     })
 }
 
@@ -179,7 +183,7 @@ mod tests {
         let radius = last.points[0].position.distance(last.points[32].position) / 2.0;
         for pixels in [4.0, 10.0, 30.0] {
             let tolerance = radius / pixels / 2.0;
-            let n = points_per_rim(&spec, tolerance).unwrap();
+            let n = points_per_rim(&spec, &full, tolerance).unwrap();
             let circle = round_points(pixels);
             assert!(
                 n >= circle.min(spec.curve.segments) && n <= (circle * 2).max(8),

@@ -64,7 +64,7 @@ impl SweepMesh {
         let full = Self::new(spec, rows)?;
         let tolerance = half_pixel(full.bounds().radius(), pixels);
         let mut coarse = spec.clone();
-        coarse.curve.segments = points_per_rim(spec, tolerance)?;
+        coarse.curve.segments = points_per_rim(spec, &full.sweep, tolerance)?;
         Ok(Self {
             thinning: Some(RimThinning::new(tolerance)),
             measured: Some(full.sweep),
@@ -359,11 +359,10 @@ impl GrowingShape for SweepMesh {
             return true;
         };
         let added = thinning.take(rim, self.done == self.sweep.rims());
-        let open = thinning.open();
         for rim in &added {
             self.add(mesh, edge, rim);
         }
-        if let Some((kept, newest)) = &open {
+        if let Some((kept, newest)) = self.thinning.as_ref().and_then(RimThinning::open) {
             self.open_band(edge, kept, newest);
         }
         true
