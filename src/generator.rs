@@ -184,8 +184,8 @@ impl Generator {
         let pattern =
             PatternRun::new(spec, |row| shape.rim_length(row)).map_err(BuildError::Pattern)?;
         let mut generator = Self {
-            mesh: Mesh::with_capacity(shape.capacity()),
-            edge: Mesh::with_capacity(shape.edge_capacity()),
+            mesh: Mesh::default(),
+            edge: Mesh::default(),
             shape,
             pattern,
             rows,
@@ -302,6 +302,14 @@ impl Generator {
         changed
     }
 
+    /// Takes the room the fully grown meshes need at once, before growing step by step, so
+    /// that no step stops to move the whole mesh grown so far into a larger one. Growing to
+    /// the end at once ([`Generator::finish`]) takes only the room the mesh fills.
+    fn reserve(&mut self) {
+        self.mesh.reserve_total(self.shape.capacity());
+        self.edge.reserve_total(self.shape.edge_capacity());
+    }
+
     /// Grows the shape up to the step that the current row has reached.
     fn grow_shape(&mut self) -> bool {
         self.grow_shape_while(|| true)
@@ -320,6 +328,7 @@ impl Generator {
 
     /// Grows by up to `rows` pattern rows.
     pub fn advance(&mut self, rows: usize) -> Advance {
+        self.reserve();
         let (v0, i0, r0) = (
             self.mesh.vertices.len(),
             self.mesh.indices.len(),
@@ -349,6 +358,7 @@ impl Generator {
     /// at least one row, or one step of the shape, is grown when any remains. The shape may lag
     /// behind the rows within a call and catches up in the next.
     pub fn advance_while(&mut self, rows: usize, mut keep_going: impl FnMut() -> bool) -> Advance {
+        self.reserve();
         let (v0, i0, r0) = (
             self.mesh.vertices.len(),
             self.mesh.indices.len(),
@@ -407,6 +417,7 @@ impl Generator {
     /// `steps` steps of its shape (at most as far as those rows reach). Growth is the same bit
     /// for bit however it was cut into calls, so this one then goes on as that one would.
     pub fn catch_up(&mut self, rows: usize, steps: usize) {
+        self.reserve();
         self.advance_pattern(rows.min(self.rows));
         self.hash.take();
         let target = steps.min(self.target_step());

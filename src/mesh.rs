@@ -71,12 +71,6 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    pub fn with_capacity(capacity: Capacity) -> Self {
-        let mut mesh = Self::default();
-        mesh.reserve_total(capacity);
-        mesh
-    }
-
     /// Makes room for `capacity` in all, what the mesh holds included.
     pub fn reserve_total(&mut self, capacity: Capacity) {
         let (v, i) = (self.vertices.len(), self.indices.len());
@@ -99,6 +93,22 @@ impl Mesh {
         let base = self.next_index();
         self.vertices.extend_from_slice(&other.vertices);
         self.indices.extend(other.indices.iter().map(|i| i + base));
+    }
+
+    /// Appends `other` as [`Mesh::append`] does, growing the mesh's room by an eighth at a
+    /// time instead of doubling it: a large mesh joined piece by piece then holds at most an
+    /// eighth more room than it fills, where doubling leaves up to as much again unused. (A
+    /// large buffer grows in place or by moving its pages, not by copying, on the systems we
+    /// know; in a wasm worker the pieces' meshes are small and only the page joins them.)
+    pub fn append_sparingly(&mut self, other: &Mesh) {
+        fn room_for<T>(v: &mut Vec<T>, more: usize) {
+            if v.capacity() - v.len() < more {
+                v.reserve_exact(more.max(v.len() / 8));
+            }
+        }
+        room_for(&mut self.vertices, other.vertices.len());
+        room_for(&mut self.indices, other.indices.len());
+        self.append(other);
     }
 
     /// Pushes the two triangles of a quad a-b-c-d (in order around it); `flip` reverses them.

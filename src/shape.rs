@@ -72,8 +72,9 @@ impl LineGrid {
 
 /// The rest of a shape's growth cut into pieces that can be made apart from the shape (on other
 /// threads, by [`crate::forms::PieceMaker`], from the same spec) and joined in a fixed order:
-/// each piece's mesh is appended to the permanent mesh in the order of the pieces' numbers, so
-/// how the pieces were shared out cannot change a bit of the result.
+/// each group's mesh (its pieces' meshes in the order of the group) is appended to the
+/// permanent mesh in the order of the groups, so how the groups were shared out cannot change
+/// a bit of the result; made in one go, the pieces of all groups in turn give the same.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Pieces {
     /// The growth step the pieces are made at.
@@ -88,12 +89,11 @@ impl Pieces {
         self.groups.iter().map(Vec::len).sum()
     }
 
-    /// Appends the meshes `made` of these pieces (by number, in any order; a piece that holds
-    /// nothing may be missing) to `mesh`, in the order of their numbers.
-    pub fn join(&self, mesh: &mut Mesh, mut made: Vec<(u32, Mesh)>) {
-        made.sort_by_key(|(n, _)| *n);
-        for (_, m) in made {
-            mesh.append(&m);
+    /// Appends the meshes `made` of these pieces' groups (one for each group, in order) to
+    /// `mesh`.
+    pub fn join(mesh: &mut Mesh, made: Vec<Mesh>) {
+        for m in made {
+            mesh.append_sparingly(&m);
         }
     }
 }

@@ -3,12 +3,14 @@
 //! meshes of it enclose the same volume within 2 %; every spine, canal spine and bump that the
 //! model shows stands out of the mesh at the preset's own resolution as at a finer one,
 //! because the polygonizer refines the grid where they stand; and every Murex preset is one
-//! closed, consistently wound piece at each. `make test` compares the preset's own
+//! closed, consistently wound piece at each. Meshing holds little more than the mesh it
+//! makes: each piece is appended to it as it is made. `make test` compares the preset's own
 //! resolution and 128³ with 256³; `make bench` runs the same check against 384³ (the ignored
 //! test below), which takes three times as long.
 
 use crate::common;
 
+use common::heap::peak_of;
 use common::{assert_closed_and_outward, implicit, pieces, signed_volume};
 use glam::DVec3;
 use seashells_core::blobtree::falloff::ISO;
@@ -37,9 +39,24 @@ fn shell_at(spec: &ShellSpec, resolution: u32) -> (Mesh, Vec<(DVec3, f64)>, f64)
             probe.field >= ISO - 0.02 && probe.paint.tint()[3] < 0.5
         })
         .collect();
-    let mut grown = Generator::new(&spec).expect("builds");
-    grown.finish();
-    (grown.snapshot(), shown, extent / f64::from(resolution))
+    let ((grown, meshing), peak) = peak_of(|| {
+        let mut grown = Generator::new(&spec).expect("builds");
+        let ((), meshing) = peak_of(|| grown.finish());
+        (grown, meshing)
+    });
+    let mesh = grown.snapshot();
+    let bytes = size_of_val(mesh.vertices.as_slice()) + size_of_val(mesh.indices.as_slice());
+    let megabytes = |b: usize| b as f64 / 1e6;
+    let held = format!(
+        "{resolution}³: meshing held {:.1} MB at most, building and meshing {:.1} MB, for a \
+         mesh of {:.1} MB",
+        megabytes(meshing),
+        megabytes(peak),
+        megabytes(bytes)
+    );
+    assert!(meshing as f64 <= 1.3 * bytes as f64, "{held}");
+    assert!(resolution > 256 || peak <= 300_000_000, "{held}");
+    (mesh, shown, extent / f64::from(resolution))
 }
 
 /// The BlobTree of `spec` built for a grid of `resolution` voxels.

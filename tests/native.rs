@@ -5,6 +5,10 @@
 
 mod common;
 
+/// Counts the heap each thread holds, for the tests that measure it (`common::heap`).
+#[global_allocator]
+static HEAP: common::heap::Counting = common::heap::Counting;
+
 mod any_link;
 mod automaton;
 mod branching;

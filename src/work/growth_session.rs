@@ -171,14 +171,14 @@ impl GrowthSession {
                 return Ok(Took::Nothing);
             }
             reply @ Reply::Previewed { .. } => return Ok(Took::Previewed(Box::new(reply))),
-            Reply::Made { job, meshes, hash } => {
+            Reply::Made { job, mesh, hash } => {
                 let Request::Pieces { link, .. } = request else {
                     return Ok(Took::Nothing);
                 };
                 if *link != self.link {
                     return Ok(Took::Nothing);
                 }
-                match self.replica.made(job as usize, meshes, hash) {
+                match self.replica.made(job as usize, mesh, hash) {
                     Some(advance) => advance,
                     None => return Ok(Took::Nothing),
                 }

@@ -90,13 +90,6 @@ fn progress(generator: &Generator) -> Progress {
     }
 }
 
-/// The sum of the meshes' content hashes: the content hash of them joined in any order.
-fn hash_of(meshes: &[(u32, Mesh)]) -> u64 {
-    meshes
-        .iter()
-        .fold(0u64, |h, (_, m)| h.wrapping_add(m.content_hash()))
-}
-
 impl Growth {
     /// What `advance` added, as it crosses to the page.
     fn delta(&mut self, advance: &Advance) -> Delta {
@@ -360,7 +353,7 @@ impl Host {
                             self.maker = None;
                             return Ok(Reply::Made {
                                 job,
-                                meshes: Vec::new(),
+                                mesh: Mesh::default(),
                                 hash: 0,
                             });
                         }
@@ -419,9 +412,9 @@ impl Host {
                 if !maker.work(&mut work, keep_going) {
                     return Err(Job::Pieces { job, work });
                 }
-                let meshes = maker.finished(*work);
-                let hash = hash_of(&meshes);
-                Ok(Reply::Made { job, meshes, hash })
+                let mesh = maker.finished(*work);
+                let hash = mesh.content_hash();
+                Ok(Reply::Made { job, mesh, hash })
             }
             Job::Whole { job, mut generator } => {
                 if budget == Budget::Unbounded {

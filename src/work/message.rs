@@ -162,12 +162,8 @@ pub enum Reply {
         state: PreviewState,
         failure: Option<String>,
     },
-    /// The pieces of a job that hold part of the surface, by number, and the hash of them all.
-    Made {
-        job: u32,
-        meshes: Vec<(u32, Mesh)>,
-        hash: u64,
-    },
+    /// The mesh of a job's group of pieces (see [`Pieces`]), and its hash.
+    Made { job: u32, mesh: Mesh, hash: u64 },
     /// A shell grown whole, or why it cannot be.
     Grown {
         job: u32,
@@ -237,9 +233,7 @@ impl Reply {
             Reply::Loaded { delta, .. }
             | Reply::Grew { delta, .. }
             | Reply::Apart { delta, .. } => delta.edge.as_ref().map_or(Ok(()), check_edge),
-            Reply::Made { meshes, .. } => meshes
-                .iter()
-                .try_for_each(|(_, mesh)| check_mesh(mesh, "piece")),
+            Reply::Made { mesh, .. } => check_mesh(mesh, "piece"),
             Reply::Grown {
                 result: Ok(whole), ..
             } => check_mesh(&whole.mesh, "mesh"),

@@ -42,9 +42,8 @@ struct Joining {
     pieces: Pieces,
     /// The hash of the mesh without the pieces.
     hash: u64,
-    /// Which groups are in.
-    arrived: Vec<bool>,
-    made: Vec<(u32, Mesh)>,
+    /// The mesh of each group, once in.
+    made: Vec<Option<Mesh>>,
 }
 
 /// The page's copy of a growing shell.
@@ -165,10 +164,9 @@ impl Replica {
     pub fn apart(&mut self, delta: Delta, pieces: Pieces, hash: u64) -> Result<Advance, OutOfStep> {
         let advance = self.apply(delta)?;
         self.joining = Some(Joining {
-            arrived: vec![false; pieces.groups.len()],
+            made: vec![None; pieces.groups.len()],
             pieces,
             hash,
-            made: Vec::new(),
         });
         Ok(advance)
     }
@@ -178,23 +176,22 @@ impl Replica {
         self.joining.as_ref().map(|j| &j.pieces)
     }
 
-    /// The meshes of group `group` of the pieces have come (with the hash of them all; a
-    /// group that came already is ignored); once every group is in, they are joined and the
-    /// ranges added are returned.
-    pub fn made(&mut self, group: usize, meshes: Vec<(u32, Mesh)>, hash: u64) -> Option<Advance> {
+    /// The mesh of group `group` of the pieces has come (with its hash; a group that came
+    /// already is ignored); once every group is in, they are joined and the ranges added are
+    /// returned.
+    pub fn made(&mut self, group: usize, mesh: Mesh, hash: u64) -> Option<Advance> {
         let joining = self.joining.as_mut()?;
-        if group >= joining.arrived.len() || joining.arrived[group] {
-            return None;
+        match joining.made.get_mut(group) {
+            Some(slot @ None) => *slot = Some(mesh),
+            _ => return None,
         }
-        joining.arrived[group] = true;
-        joining.made.extend(meshes);
         joining.hash = joining.hash.wrapping_add(hash);
-        if joining.arrived.iter().any(|a| !a) {
+        if joining.made.iter().any(Option::is_none) {
             return None;
         }
         let joining = self.joining.take()?;
         let (v0, i0) = (self.mesh.vertices.len(), self.mesh.indices.len());
-        joining.pieces.join(&mut self.mesh, joining.made);
+        Pieces::join(&mut self.mesh, joining.made.into_iter().flatten().collect());
         self.grown.include_vertices(&self.mesh.vertices[v0..]);
         self.progress.mesh_hash = Some(joining.hash);
         Some(Advance {

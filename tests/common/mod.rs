@@ -1,6 +1,8 @@
 //! Checks of meshes shared by the tests of every form, and of implicit specs.
 #![allow(dead_code)]
 
+pub mod heap;
+
 use glam::DVec3;
 use seashells_core::forms::murex::check::check;
 use seashells_core::generator::Generator;

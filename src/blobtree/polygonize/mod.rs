@@ -59,11 +59,7 @@ pub fn block_of(piece: Piece) -> Block {
 pub fn polygonize(tree: &Node, refinement: &Refinement, step: u32) -> Mesh {
     let mut work = ChunkWork::new(step, refinement.pieces_touching(&tree.bounds));
     work.work(tree, refinement, &mut || true);
-    let mut mesh = Mesh::default();
-    for (_, m) in work.into_meshes() {
-        mesh.append(&m);
-    }
-    mesh
+    work.into_mesh()
 }
 
 impl Refinement {
@@ -80,7 +76,8 @@ impl Refinement {
 /// once, and every chunk handing the samples and vertices on its faces to the neighbours met
 /// after it ([`Seams`]). A chunk's mesh is the same, bit for bit, whichever other chunks are
 /// meshed with it, so the chunks of a surface may be shared out among workers and their meshes
-/// joined in a fixed order.
+/// joined in a fixed order. Each chunk's mesh is appended to one mesh as soon as it is made,
+/// so meshing holds no second copy of the surface.
 pub struct ChunkWork {
     step: u32,
     chunks: Vec<Piece>,
@@ -89,12 +86,18 @@ pub struct ChunkWork {
     block: Option<(Block, Option<Node>)>,
     seams: Seams,
     scratch: Scratch,
-    meshes: Vec<(Piece, Mesh)>,
+    mesh: Mesh,
 }
 
 impl ChunkWork {
-    /// The work of meshing the pieces `chunks` at growth step `step`.
+    /// The work of meshing the pieces `chunks` at growth step `step`, grouped by block in
+    /// the order each block first appears (the order their meshes are joined in).
     pub fn new(step: u32, chunks: Vec<Piece>) -> Self {
+        Self::onto(Mesh::default(), step, chunks)
+    }
+
+    /// As [`ChunkWork::new`], the chunks' meshes appended to `mesh`.
+    pub fn onto(mesh: Mesh, step: u32, chunks: Vec<Piece>) -> Self {
         let mut order: Vec<Block> = Vec::new();
         let mut of_block: HashMap<Block, Vec<Piece>> = HashMap::new();
         for chunk in chunks {
@@ -118,7 +121,7 @@ impl ChunkWork {
             block: None,
             seams: Seams::default(),
             scratch: Scratch::default(),
-            meshes: Vec::new(),
+            mesh,
         }
     }
 
@@ -160,9 +163,7 @@ impl ChunkWork {
                 &mut self.scratch,
                 Memory::Seams(&mut self.seams),
             );
-            if !mesh.indices.is_empty() {
-                self.meshes.push((chunk, mesh));
-            }
+            self.mesh.append_sparingly(&mesh);
         }
         self.is_done()
     }
@@ -172,9 +173,9 @@ impl ChunkWork {
         self.next >= self.chunks.len()
     }
 
-    /// The meshes of the pieces that hold part of the surface, in the order they were meshed.
-    pub fn into_meshes(self) -> Vec<(Piece, Mesh)> {
-        self.meshes
+    /// The mesh the chunks were appended to, in the order they were meshed.
+    pub fn into_mesh(self) -> Mesh {
+        self.mesh
     }
 }
 

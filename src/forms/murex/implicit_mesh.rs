@@ -46,7 +46,8 @@ impl PieceMaker {
         Ok(Self { tree, refinement })
     }
 
-    /// The work of meshing the pieces numbered `ids` at growth step `step`.
+    /// The work of meshing the pieces numbered `ids` (one group of [`Pieces`], or several in
+    /// turn) at growth step `step`.
     pub fn start(&self, step: u32, ids: &[u32]) -> ChunkWork {
         let pieces = ids.iter().map(|&n| self.refinement.piece(n)).collect();
         ChunkWork::new(step, pieces)
@@ -57,11 +58,9 @@ impl PieceMaker {
         work.work(&self.tree, &self.refinement, keep_going)
     }
 
-    /// The meshes of the pieces of finished `work` that hold part of the surface, by number.
-    pub fn finished(&self, work: ChunkWork) -> Vec<(u32, Mesh)> {
-        (work.into_meshes().into_iter())
-            .map(|(piece, mesh)| (self.refinement.id(piece), mesh))
-            .collect()
+    /// The mesh of the pieces of finished `work`, joined in the order they were given.
+    pub fn finished(&self, work: ChunkWork) -> Mesh {
+        work.into_mesh()
     }
 }
 
@@ -258,10 +257,17 @@ impl GrowingShape for ImplicitMesh {
     /// Meshes every chunk not yet final once, as it ends up, skipping the stages between.
     fn finish(&mut self, mesh: &mut Mesh, edge: &mut Mesh) {
         if let Some(pieces) = self.finish_apart(mesh, edge) {
-            // One work over all the blocks, so that they hand their faces on to each other too.
-            let mut work = self.maker.start(pieces.step, &pieces.groups.concat());
+            // One work over all the blocks, so that they hand their faces on to each other too,
+            // appending each piece to the mesh as it is made: the groups in turn, as
+            // `Pieces::join` joins them.
+            let ids = pieces.groups.concat();
+            let chunks = ids
+                .iter()
+                .map(|&n| self.maker.refinement.piece(n))
+                .collect();
+            let mut work = ChunkWork::onto(std::mem::take(mesh), pieces.step, chunks);
             self.maker.work(&mut work, &mut || true);
-            pieces.join(mesh, self.maker.finished(work));
+            *mesh = self.maker.finished(work);
         }
     }
 
