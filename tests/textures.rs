@@ -10,8 +10,9 @@ use common::{assert_refused_and_repaired, implicit};
 use glam::DVec3;
 use seashells_core::blobtree::blob_tree::Node;
 use seashells_core::blobtree::falloff::support_of;
+use seashells_core::blobtree::image_map::ImageMap;
 use seashells_core::blobtree::primitive::Primitive;
-use seashells_core::blobtree::texture_blend::{Look, Texture};
+use seashells_core::blobtree::texture_blend::{Look, MapOn, Texture};
 use seashells_core::export::MeshFormat;
 use seashells_core::export::job::Export;
 use seashells_core::export::paint::Paint;
@@ -26,7 +27,8 @@ use seashells_core::mesh::{Surface, Vertex};
 use seashells_core::presets;
 use seashells_core::share::link::{decode, encode};
 use seashells_core::spec::ShellSpec;
-use seashells_core::spec::form::textures::{TextureKind, TexturesSpec};
+use seashells_core::spec::form::textures::{ImageOf, PartTexture, TextureKind, TexturesSpec};
+use seashells_core::spec::pattern::Model;
 use serde_json::Value;
 
 fn spec_of(id: &str) -> ShellSpec {
@@ -144,7 +146,8 @@ fn the_default_spines_darken_from_base_to_tip() {
             1.0,
             &mut FineParts::new(0.0, 0.0),
             0.0,
-            textures,
+            &textures.spines,
+            Look::Pattern,
         )
         .expect("a spine")
     };
@@ -177,7 +180,10 @@ fn the_default_spines_darken_from_base_to_tip() {
         tree.probe(direction * 1.5).paint.tint(),
         [0.0, 0.0, 0.0, 1.0]
     );
-    assert_eq!(look(&patterned.spines, 0.2), Look::Pattern);
+    assert_eq!(
+        look(&patterned.spines, MapOn::Part { start: 0.2 }),
+        Look::Pattern
+    );
 }
 
 #[test]
@@ -313,4 +319,176 @@ fn the_same_textures_give_the_same_bits_and_other_textures_only_other_colours() 
             .all(|(x, y)| x.position == y.position && x.normal == y.normal),
         "the geometry does not depend on the colours"
     );
+}
+
+/// The texture of a part made `look` with image `image`.
+fn imaged(image: ImageOf) -> PartTexture {
+    PartTexture {
+        look: TextureKind::Image,
+        image,
+        ..PartTexture::default()
+    }
+}
+
+/// The image a part textured with `image` shows.
+fn image_of(image: ImageOf) -> &'static ImageMap {
+    match look(&imaged(image), MapOn::Part { start: 0.0 }) {
+        Look::Image { map, .. } => map,
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn every_species_offered_as_an_image_is_a_pattern_that_shows_one() {
+    for &id in ImageOf::IDS {
+        let image: ImageOf = serde_json::from_value(Value::String(id.into())).expect(id);
+        assert_eq!(image.id(), id);
+        let preset = presets::preset(id).expect(id);
+        assert_ne!(preset.spec.pattern.model, Model::None, "{id}");
+        // An image, not a flat colour: its texels' luminance spreads over a tenth at least.
+        let map = image_of(image);
+        let lums: Vec<f64> = (0..64)
+            .flat_map(|i| (0..64).map(move |j| (f64::from(i) / 64.0, f64::from(j) / 64.0)))
+            .map(|(u, v)| luminance(map.at(u, v)))
+            .collect();
+        let (low, high) = lums
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(l, h), &x| (l.min(x), h.max(x)));
+        assert!(high - low > 0.1, "{id}: luminance {low}..{high}");
+    }
+}
+
+#[test]
+fn an_image_lies_on_a_spines_own_parameterisation_and_on_the_bodys_growth() {
+    let map = image_of(ImageOf::OlivaPorphyria);
+    let spine = Primitive::Cone {
+        from: DVec3::ZERO,
+        to: DVec3::new(0.0, 3.0, 0.0),
+        radii: [support_of(0.5), support_of(0.2)],
+    };
+    let start = 0.1;
+    let look = Look::Image {
+        map,
+        on: MapOn::Part { start },
+    };
+    let tree = Node::leaf(spine.clone(), Texture::around(0.0).looking(look));
+    // Around and along the spine, its colour is the image's there, and no pattern shows.
+    for (k, p) in [(0.3, 0.5, 0.1), (-0.2, 2.0, 0.1), (0.05, 2.6, -0.1)]
+        .map(|(x, y, z)| DVec3::new(x, y, z))
+        .into_iter()
+        .enumerate()
+    {
+        let [r, g, b, share] = tree.probe(p).paint.tint();
+        let along = (spine.along(p) - start) / (1.0 - start);
+        let want = map.at(spine.around(p), along);
+        for (got, want) in [r, g, b].into_iter().zip(want) {
+            assert!((got - want).abs() < 1e-12, "point {k}: {got} {want}");
+        }
+        assert_eq!(share, 0.0);
+    }
+    // Going around the spine at one height passes through different columns of the image.
+    let around: Vec<f64> = (0..8)
+        .map(|k| {
+            let a = f64::from(k) * std::f64::consts::TAU / 8.0;
+            spine.around(DVec3::new(0.2 * a.cos(), 1.0, 0.2 * a.sin()))
+        })
+        .collect();
+    let mut sorted = around.clone();
+    sorted.sort_by(f64::total_cmp);
+    sorted.dedup_by(|a, b| (*a - *b).abs() < 0.1);
+    assert_eq!(sorted.len(), 8, "{around:?}");
+    // On the body, the image runs on the growth: across it along the generating curve, along
+    // it the growth time over the rows.
+    let body = Primitive::Point {
+        centre: DVec3::ZERO,
+        radius: support_of(1.0),
+    };
+    let rows = 200.0;
+    let at = Node::leaf(
+        body,
+        Texture::around(50.0).looking(Look::Image {
+            map,
+            on: MapOn::Growth { rows },
+        }),
+    );
+    let p = DVec3::new(0.0, 0.3, 0.1);
+    let [r, g, b, _] = at.probe(p).paint.tint();
+    let want = map.at(0.25, 50.0 / rows);
+    for (got, want) in [r, g, b].into_iter().zip(want) {
+        assert!((got - want).abs() < 1e-12, "{got} {want}");
+    }
+}
+
+#[test]
+fn a_murex_wears_another_species_pattern_on_its_spines_from_a_link() {
+    let link = "v=1&preset=murex-cabritii&form.resolution=64\
+                &form.textures.spines.look=image&form.textures.spines.image=oliva-porphyria\
+                &form.textures.bumps.look=image&form.textures.bumps.image=ca-waves";
+    let decoded = decode(link);
+    assert!(decoded.problems.is_empty(), "{:?}", decoded.problems);
+    let spec = decoded.spec;
+    let mut read = spec.clone();
+    let spines = implicit(&mut read).textures.spines;
+    assert_eq!(
+        (spines.look, spines.image),
+        (TextureKind::Image, ImageOf::OlivaPorphyria)
+    );
+    let preset = presets::preset("murex-cabritii").unwrap();
+    let again = encode(preset, &spec);
+    assert!(
+        again.contains("form.textures.spines.image=oliva-porphyria"),
+        "{again}"
+    );
+    assert_eq!(decode(&again).spec, spec);
+    let bad = decode("v=1&preset=murex-cabritii&form.textures.spines.image=nautilus");
+    assert!(
+        (bad.problems.iter()).any(|p| p.key == "form.textures.spines.image"),
+        "{:?}",
+        bad.problems
+    );
+
+    // Grown: the same link gives the same bits; the geometry is the ramp's, and the spines
+    // show more colours than a ramp along them gives.
+    let a = grown(&spec);
+    assert_eq!(a.mesh_hash(), grown(&spec).mesh_hash());
+    let mut ramped = spec.clone();
+    *implicit(&mut ramped).textures = TexturesSpec::default();
+    let b = grown(&ramped);
+    let (ma, mb) = (a.snapshot(), b.snapshot());
+    assert_eq!(ma.indices, mb.indices);
+    assert!(
+        (ma.vertices.iter().zip(&mb.vertices)).all(|(x, y)| x.position == y.position),
+        "the geometry does not depend on the textures"
+    );
+    // Where no pattern shows, a ramp's colour lies on the line from its base to its tip; most
+    // of the imaged parts' colours lie off every ramp's line.
+    let textures = TexturesSpec::default();
+    let lines = [textures.spines, textures.bumps].map(|t| {
+        (
+            t.base.linear().map(f64::from),
+            t.tip.linear().map(f64::from),
+        )
+    });
+    let off_ramps = |vertices: &[Vertex]| {
+        let parts: Vec<[f64; 3]> = (vertices.iter())
+            .filter(|v| v.is_outer() && v.tint[3] == 0.0)
+            .map(|v| std::array::from_fn(|k| f64::from(v.tint[k])))
+            .collect();
+        let off = (parts.iter())
+            .filter(|&&c| lines.iter().all(|&(a, b)| off_segment(c, a, b) > 0.02))
+            .count();
+        off as f64 / parts.len().max(1) as f64
+    };
+    let (imaged, ramps) = (off_ramps(&ma.vertices), off_ramps(&mb.vertices));
+    assert!(
+        imaged > 0.3 && ramps < 0.05,
+        "off the ramps: {imaged:.3} of the imaged parts' colours, {ramps:.3} of the ramps'"
+    );
+}
+
+/// How far the colour `c` lies from the segment from `a` to `b`.
+fn off_segment(c: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
+    let (c, a, b) = (DVec3::from(c), DVec3::from(a), DVec3::from(b));
+    let t = ((c - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+    (c - (a + (b - a) * t)).length()
 }

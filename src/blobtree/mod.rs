@@ -6,6 +6,7 @@
 pub mod bend;
 pub mod blob_tree;
 pub mod falloff;
+pub mod image_map;
 pub mod polygonize;
 pub mod primitive;
 pub mod texture_blend;

@@ -130,6 +130,20 @@ impl Primitive {
         }
     }
 
+    /// How far around the primitive `p` lies, in [0, 1): the angle about a cone's segment or a
+    /// torus's axis from a direction square to it (the same for the same primitive), about the
+    /// z axis for a point; the across of an image mapped onto the primitive.
+    pub fn around(&self, p: DVec3) -> f64 {
+        let (axis, q) = match *self {
+            Primitive::Point { centre, .. } => (DVec3::Z, p - centre),
+            Primitive::Cone { from, to, .. } => ((to - from).normalize_or(DVec3::Z), p - from),
+            Primitive::Torus { centre, axis, .. } => (axis, p - centre),
+        };
+        let x = axis.any_orthonormal_vector();
+        let y = axis.cross(x);
+        (libm::atan2(q.dot(y), q.dot(x)) / std::f64::consts::TAU).rem_euclid(1.0)
+    }
+
     /// The primitive moved by a similarity `m` (a map that scales all lengths by `scale`).
     pub fn moved(&self, m: &DAffine3, scale: f64) -> Primitive {
         match *self {

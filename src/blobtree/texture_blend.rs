@@ -1,9 +1,10 @@
 //! Texturing an implicit surface by blending (Galbraith, Prusinkiewicz & Wyvill §3.4, after
 //! Tigges & Wyvill 1999): every primitive carries its own texture, and where primitives blend,
 //! the colour at a surface point is the linear combination of their colours, each weighted by
-//! its field there. Two kinds of texture ([`Look`]): the shell's pattern, which the body whorl
-//! keeps on its growing edge, and a colour ramp along the primitive's own parameterisation (a
-//! spine from its base to its tip, a bump from its rim to its top).
+//! its field there. Three kinds of texture ([`Look`]): the shell's pattern, which the body whorl
+//! keeps on its growing edge; a colour ramp along the primitive's own parameterisation (a
+//! spine from its base to its tip, a bump from its rim to its top); and an image, a 2D texture
+//! map ([`ImageMap`]) on that parameterisation or on the growth's.
 //!
 //! The pattern's colour is only known where the page or an export samples the pattern, so the
 //! primitives showing it blend their pattern coordinates among themselves (growth time, and
@@ -12,6 +13,7 @@
 //! are summed, weighted, at once. A surface point's colour is then
 //! share · pattern(coordinates) + Σ fᵢ·colourᵢ / Σ fⱼ over the ramps: see [`Paint::tint`].
 
+use super::image_map::ImageMap;
 use super::primitive::Primitive;
 use glam::{DAffine3, DVec3};
 use std::f64::consts::TAU;
@@ -31,6 +33,22 @@ pub enum Look {
         shade: f64,
         start: f64,
     },
+    /// The image `map`, in linear light, on the primitive ([`MapOn`]).
+    Image { map: &'static ImageMap, on: MapOn },
+}
+
+/// Where an image lies on a primitive.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MapOn {
+    /// On the primitive's own parameterisation, as the paper maps textures onto spines and
+    /// bumps: across the image around it ([`Primitive::around`]), along it from `start` of the
+    /// way along the primitive ([`Primitive::along`]) to its tip, as a ramp runs.
+    Part { start: f64 },
+    /// On the growth's parameterisation, the pattern's own: across the image along the
+    /// generating curve, along it the growth time over `rows` rows. The paper maps the body's
+    /// image onto a bounding surface's parameterisation for the same end: one image running on
+    /// over every generating surface.
+    Growth { rows: f64 },
 }
 
 impl Look {
@@ -131,15 +149,40 @@ impl Paint {
                 tip,
                 shade,
                 start,
-            } => {
-                let colour = Look::ramp(base, tip, shade, start, primitive.along(p));
-                Self {
-                    weight: f,
-                    rest: coordinates,
-                    rgb: colour.map(|c| f * c),
-                    ..Self::default()
-                }
+            } => Self::coloured(
+                Look::ramp(base, tip, shade, start, primitive.along(p)),
+                coordinates,
+                f,
+            ),
+            Look::Image { map, on } => {
+                let (across, along) = match on {
+                    MapOn::Part { start } => {
+                        let t = primitive.along(p);
+                        let along = if start < 1.0 {
+                            (t - start) / (1.0 - start)
+                        } else {
+                            1.0
+                        };
+                        (primitive.around(p), along)
+                    }
+                    MapOn::Growth { rows } => (
+                        (libm::atan2(sin, cos) / TAU).rem_euclid(1.0),
+                        texture.time / rows.max(1.0),
+                    ),
+                };
+                Self::coloured(map.at(across, along), coordinates, f)
             }
+        }
+    }
+
+    /// A colour known here, `colour`, weighted by the field `f`, with the pattern
+    /// `coordinates` serving where no pattern shows.
+    fn coloured(colour: [f64; 3], coordinates: [f64; 3], f: f64) -> Self {
+        Self {
+            weight: f,
+            rest: coordinates,
+            rgb: colour.map(|c| f * c),
+            ..Self::default()
         }
     }
 

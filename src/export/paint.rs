@@ -16,7 +16,7 @@
 use crate::mesh::Vertex;
 use crate::pattern::run::PatternRun;
 use crate::spec::Colours;
-use crate::spec::colour::Rgb;
+use crate::spec::colour::{Rgb, linear};
 
 /// The most rows the exported texture has: a longer pattern (only links with very few cells
 /// can have one) is averaged a whole number of rows to a texel, so that every viewer can load
@@ -65,7 +65,7 @@ pub struct Paint {
 impl Paint {
     /// The paint of a shell with these colours and, when it has one, this pattern.
     pub fn new(colours: &Colours, pattern: Option<PatternImage>) -> Self {
-        let linear = std::array::from_fn(|i| to_linear(i as u8));
+        let linear = std::array::from_fn(|i| linear(i as u8));
         let texture = pattern
             .filter(|p| p.cells > 0 && p.rows > 0)
             .map(|p| texture(p, &linear));
@@ -188,16 +188,6 @@ fn texture(p: PatternImage, linear: &[f32; 256]) -> Texture {
     }
 }
 
-/// sRGB byte to linear light (IEC 61966-2-1), with `libm` so that native and wasm agree.
-fn to_linear(c: u8) -> f32 {
-    let x = f32::from(c) / 255.0;
-    if x <= 0.04045 {
-        x / 12.92
-    } else {
-        libm::powf((x + 0.055) / 1.055, 2.4)
-    }
-}
-
 /// Linear light to the nearest sRGB byte.
 fn to_srgb(x: f32) -> u8 {
     let x = x.clamp(0.0, 1.0);
@@ -245,7 +235,7 @@ mod tests {
     #[test]
     fn every_byte_survives_linear_light_and_back() {
         for c in 0..=255u8 {
-            assert_eq!(to_srgb(to_linear(c)), c);
+            assert_eq!(to_srgb(linear(c)), c);
         }
     }
 

@@ -13,14 +13,7 @@ impl Rgb {
     /// The colour as linear-light fractions, for shading and for the colours an implicit
     /// shell's parts blend (with `libm`, so that native and wasm builds agree to the bit).
     pub fn linear(self) -> [f32; 3] {
-        self.0.map(|c| {
-            let x = f32::from(c) / 255.0;
-            if x <= 0.04045 {
-                x / 12.92
-            } else {
-                libm::powf((x + 0.055) / 1.055, 2.4)
-            }
-        })
+        self.0.map(linear)
     }
 
     /// Linear interpolation in sRGB space, `x` in [0, 1], to the nearest step. Rounded by
@@ -31,6 +24,16 @@ impl Rgb {
         Rgb(std::array::from_fn(|i| {
             (f32::from(self.0[i]) * (1.0 - x) + f32::from(other.0[i]) * x + 0.5) as u8
         }))
+    }
+}
+
+/// An sRGB byte in linear light (IEC 61966-2-1), with `libm` so that native and wasm agree.
+pub fn linear(c: u8) -> f32 {
+    let x = f32::from(c) / 255.0;
+    if x <= 0.04045 {
+        x / 12.92
+    } else {
+        libm::powf((x + 0.055) / 1.055, 2.4)
     }
 }
 

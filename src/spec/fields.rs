@@ -212,7 +212,7 @@ const fn f(
     }
 }
 
-use super::form::textures::SHADE_RANGE;
+use super::form::textures::{ImageOf, SHADE_RANGE};
 use Section::*;
 
 /// The largest diffusion per iteration that explicit Euler with Δt = Δx = 1 integrates
@@ -359,19 +359,23 @@ pub const IMPLICIT: &[Field] = &[
     f("form.opening.wall", Opening, "", "generating surfaces of inside wall at the aperture (eq 15)", int(0, 64)),
     f("form.opening.ahead", Opening, "", "generating surfaces the hollow reaches beyond the edge", int(0, 16)),
     f("form.opening.shows", Opening, "", "solid drawn (fig 10)", Kind::Choice(&["shell", "inside", "opening"])),
-    f("form.textures.body.look", Textures, "", "body whorl: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.body.look", Textures, "", "body whorl: texture", Kind::Choice(&["pattern", "ramp", "image"])),
+    f("form.textures.body.image", Textures, "", "body whorl: species whose pattern is the image", Kind::Choice(ImageOf::IDS)),
     f("form.textures.body.base", Textures, "", "body whorl: ramp colour at the base", Kind::Colour),
     f("form.textures.body.tip", Textures, "", "body whorl: ramp colour at the tip", Kind::Colour),
     f("form.textures.body.shade", Textures, "", "body whorl: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
-    f("form.textures.spines.look", Textures, "", "spines in the varices: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.spines.look", Textures, "", "spines in the varices: texture", Kind::Choice(&["pattern", "ramp", "image"])),
+    f("form.textures.spines.image", Textures, "", "spines in the varices: species whose pattern is the image", Kind::Choice(ImageOf::IDS)),
     f("form.textures.spines.base", Textures, "", "spines in the varices: ramp colour at the base", Kind::Colour),
     f("form.textures.spines.tip", Textures, "", "spines in the varices: ramp colour at the tip", Kind::Colour),
     f("form.textures.spines.shade", Textures, "", "spines in the varices: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
-    f("form.textures.canal_spines.look", Textures, "", "spines on the canal: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.canal_spines.look", Textures, "", "spines on the canal: texture", Kind::Choice(&["pattern", "ramp", "image"])),
+    f("form.textures.canal_spines.image", Textures, "", "spines on the canal: species whose pattern is the image", Kind::Choice(ImageOf::IDS)),
     f("form.textures.canal_spines.base", Textures, "", "spines on the canal: ramp colour at the base", Kind::Colour),
     f("form.textures.canal_spines.tip", Textures, "", "spines on the canal: ramp colour at the tip", Kind::Colour),
     f("form.textures.canal_spines.shade", Textures, "", "spines on the canal: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),
-    f("form.textures.bumps.look", Textures, "", "bumps: texture", Kind::Choice(&["pattern", "ramp"])),
+    f("form.textures.bumps.look", Textures, "", "bumps: texture", Kind::Choice(&["pattern", "ramp", "image"])),
+    f("form.textures.bumps.image", Textures, "", "bumps: species whose pattern is the image", Kind::Choice(ImageOf::IDS)),
     f("form.textures.bumps.base", Textures, "", "bumps: ramp colour at the base", Kind::Colour),
     f("form.textures.bumps.tip", Textures, "", "bumps: ramp colour at the tip", Kind::Colour),
     f("form.textures.bumps.shade", Textures, "", "bumps: ramp exponent (above 1: darker toward the tip)", log(SHADE_RANGE[0], SHADE_RANGE[1])),

@@ -12,7 +12,7 @@ use crate::blobtree::bend::Bend;
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::support_of;
 use crate::blobtree::primitive::Primitive;
-use crate::blobtree::texture_blend::Texture;
+use crate::blobtree::texture_blend::{MapOn, Texture};
 use crate::pattern::noise::Noise;
 use crate::spec::form::textures::PartTexture;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
@@ -76,9 +76,12 @@ pub fn canal_row(
                 to: DVec3::X * spine_length,
                 radii: radii.map(support_of),
             },
-            Texture::around(time)
-                .moved(placed)
-                .looking(look(texture, canal_radius / spine_length)),
+            Texture::around(time).moved(placed).looking(look(
+                texture,
+                MapOn::Part {
+                    start: canal_radius / spine_length,
+                },
+            )),
         );
         let bends = 1 + noise.below(3);
         let piece = spine_length / (bends + 1) as f64;

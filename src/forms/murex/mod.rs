@@ -16,6 +16,7 @@ pub(crate) mod opening;
 pub mod rd_placement;
 pub(crate) mod repair;
 pub(crate) mod sections;
+mod species_image;
 pub mod textures;
 pub mod varix;
 pub mod whorl;

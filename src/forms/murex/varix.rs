@@ -18,10 +18,10 @@ use crate::blobtree::bend::Bend;
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::{ISO, support_of};
 use crate::blobtree::primitive::Primitive;
-use crate::blobtree::texture_blend::Texture;
+use crate::blobtree::texture_blend::{Look, MapOn, Texture};
 use crate::mesh::Bounds;
 use crate::spec::form::implicit::VaricesSpec;
-use crate::spec::form::textures::{PartTexture, TexturesSpec};
+use crate::spec::form::textures::PartTexture;
 use glam::{DAffine3, DMat3, DVec3};
 
 /// One spine of a varix.
@@ -118,7 +118,7 @@ pub struct Standing {
 
 /// The varix of eq 12: the spines `standing` on the surface, joined by the ridge, with
 /// pattern time `time`; the spines wear the spines' texture from base to tip, the ridge the
-/// body's. `sigma_max` is the table's largest σ. Each spine and ridge is noted in `fine` with
+/// body's look `body`. `sigma_max` is the table's largest σ. Each spine and ridge is noted in `fine` with
 /// the level of refinement that shows its thinnest end; a spine or ridge thinner than the
 /// model's floor is thickened to it ([`FineParts::thickened`]), so that it stays joined to the
 /// shell at every resolution.
@@ -128,11 +128,12 @@ pub fn varix(
     sigma_max: f64,
     fine: &mut FineParts,
     time: f64,
-    textures: &TexturesSpec,
+    spines: &PartTexture,
+    body: Look,
 ) -> Option<Node> {
     let mut parts: Vec<Node> = standing
         .iter()
-        .map(|s| spine(spec, s, sigma_max, fine, time, &textures.spines))
+        .map(|s| spine(spec, s, sigma_max, fine, time, spines))
         .collect();
     if spec.ridge > 0.0 {
         let radius = fine.thickened(spec.ridge);
@@ -148,7 +149,7 @@ pub fn varix(
                         to,
                         radii: [support_of(radius); 2],
                     },
-                    Texture::around(time).looking(look(&textures.body, 0.0)),
+                    Texture::around(time).looking(body),
                 ));
             }
         }
@@ -206,9 +207,12 @@ fn spine(
             to: DVec3::X * length,
             radii: [support_of(base), support_of(tip)],
         },
-        Texture::around(time)
-            .moved(frame)
-            .looking(look(texture, base / length)),
+        Texture::around(time).moved(frame).looking(look(
+            texture,
+            MapOn::Part {
+                start: base / length,
+            },
+        )),
     );
     Node::transform(frame, Node::warp(Bend::new(bend, length), cone))
 }

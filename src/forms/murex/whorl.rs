@@ -19,7 +19,7 @@ use super::textures::look;
 use super::varix::{Spine, Standing, standing, table_spines, varix};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::polygonize::MAX_LEVEL;
-use crate::blobtree::texture_blend::Look;
+use crate::blobtree::texture_blend::{Look, MapOn};
 use crate::mesh::Bounds;
 use crate::pattern::noise::Noise;
 use crate::shape::ShapeError;
@@ -71,6 +71,7 @@ pub fn whorl(
     rows: usize,
 ) -> Result<Whorl, ShapeError> {
     check(spec)?;
+    let body_look = look(&spec.textures.body, MapOn::Growth { rows: rows as f64 });
     let instances = Instances::new(spec, rows);
     let count = instances.count;
     let mut gathered = Gathered {
@@ -193,10 +194,17 @@ pub fn whorl(
         };
         let time = instances.time(kf);
         let mut thin = fine_at(kf);
-        let mut members: Vec<Node> =
-            varix(v, &on_surface, sigma_max, &mut thin, time, &spec.textures)
-                .into_iter()
-                .collect();
+        let mut members: Vec<Node> = varix(
+            v,
+            &on_surface,
+            sigma_max,
+            &mut thin,
+            time,
+            &spec.textures.spines,
+            body_look,
+        )
+        .into_iter()
+        .collect();
         if let Some(spines) = members.first() {
             kept.push((k, spines.clone()));
         }
@@ -275,7 +283,7 @@ pub fn whorl(
                 &mut bump_noise,
             );
             thin.place(&at, instances.size(kf), &mut fine);
-            let bump_look = look(&spec.textures.bumps, 0.0);
+            let bump_look = look(&spec.textures.bumps, MapOn::Part { start: 0.0 });
             for bump in bumps {
                 let bump = bump.looking(bump_look);
                 extra[section].push(gathered.placed(at, bump, kb.round() as u32));
@@ -285,7 +293,6 @@ pub fn whorl(
             }
         }
     }
-    let body_look = look(&spec.textures.body, 0.0);
     for ((_, node), bumps) in sections.iter_mut().zip(extra) {
         if body_look != Look::Pattern {
             *node = std::mem::replace(node, Node::blend(Vec::new())).looking(body_look);

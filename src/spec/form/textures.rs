@@ -1,8 +1,10 @@
 //! How the parts of an implicit shell are coloured (Galbraith, Prusinkiewicz & Wyvill §3.4,
 //! fig 12): the paper textures four parts separately (the main body whorl, the spines in the
 //! varices, the axial spines on the canal, the bumps) and blends their colours by field where
-//! the parts meet. Each part shows either the shell's pattern or a colour ramp along its own
-//! parameterisation, with its own colours.
+//! the parts meet. Each part shows the shell's pattern, a colour ramp along its own
+//! parameterisation with its own colours, or an image: the paper's 2D texture map (its node m),
+//! here the pattern another species' model computes, mapped onto the part's own
+//! parameterisation (onto the body, onto its growth's).
 
 use crate::spec::colour::Rgb;
 use serde::{Deserialize, Serialize};
@@ -29,9 +31,8 @@ impl Default for TexturesSpec {
     fn default() -> Self {
         let spine = PartTexture {
             look: TextureKind::Ramp,
-            base: Rgb([236, 222, 208]),
-            tip: Rgb([92, 54, 38]),
             shade: 1.6,
+            ..PartTexture::default()
         };
         Self {
             body: PartTexture::default(),
@@ -39,9 +40,8 @@ impl Default for TexturesSpec {
             canal_spines: spine,
             bumps: PartTexture {
                 look: TextureKind::Ramp,
-                base: Rgb([236, 222, 208]),
                 tip: Rgb([176, 128, 100]),
-                shade: 1.0,
+                ..PartTexture::default()
             },
         }
     }
@@ -55,6 +55,42 @@ pub enum TextureKind {
     Pattern,
     /// A ramp from `base` to `tip` along the part's own parameterisation.
     Ramp,
+    /// The pattern of the species `image`, computed by its own model: across the image around
+    /// the part, its growth from the part's base to its tip.
+    Image,
+}
+
+/// The species whose pattern a part may show as its image: of each pattern model, those whose
+/// pattern an image of a part still shows (each a preset with a pattern whose image is not
+/// flat, `tests/textures.rs` checks; Amoria's fine lines average out, for one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ImageOf {
+    Stripes,
+    VolutoconusBednalli,
+    OlivaPorphyria,
+    ConusMarmoreus,
+    CaConusPrinceps,
+    CaSolitons,
+    CaWaves,
+}
+
+impl ImageOf {
+    /// The presets' ids, as the field table offers them.
+    pub const IDS: &[&str] = &[
+        "stripes",
+        "volutoconus-bednalli",
+        "oliva-porphyria",
+        "conus-marmoreus",
+        "ca-conus-princeps",
+        "ca-solitons",
+        "ca-waves",
+    ];
+
+    /// The preset whose pattern this is.
+    pub fn id(self) -> &'static str {
+        Self::IDS[self as usize]
+    }
 }
 
 /// One part's texture.
@@ -69,6 +105,8 @@ pub struct PartTexture {
     /// How the ramp bends: the colour moves from base to tip as sᵉ of the way s along the
     /// part (1: evenly; above 1: it stays pale longer and darkens toward the tip).
     pub shade: f64,
+    /// The species whose pattern an image shows.
+    pub image: ImageOf,
 }
 
 impl Default for PartTexture {
@@ -79,6 +117,7 @@ impl Default for PartTexture {
             base: Rgb([236, 222, 208]),
             tip: Rgb([92, 54, 38]),
             shade: 1.0,
+            image: ImageOf::ConusMarmoreus,
         }
     }
 }
