@@ -176,6 +176,11 @@ readme-pictures: build deps-browser
 	  'B_opening, what is carved (fig. 10)|v=1&preset=murex-cabritii&form.opening.shows=opening' \
 	  'carved by eq. 14 alone (fig. 11)|v=1&preset=murex-cabritii&form.opening.wall=0' \
 	  'with the inside wall, eq. 15 (fig. 11)|v=1&preset=murex-cabritii'
+	ZOOM=1.8 $(XVFB) node tests/page/sheet.mjs www/img/murex-textures-fig12.png 4 400 \
+	  'the four textures of fig. 12|v=1&preset=murex-cabritii&form.resolution=192' \
+	  'where each lies: spines red, canal spines blue|v=1&preset=murex-cabritii&form.resolution=192&form.textures.spines.tip=c01818&form.textures.canal_spines.tip=1830c0' \
+	  'Conus on the spines, Volutoconus on the canal, stripes on the bumps|v=1&preset=murex-cabritii&form.resolution=192&form.textures.spines.look=image&form.textures.spines.image=conus-marmoreus&form.textures.canal_spines.look=image&form.textures.canal_spines.image=volutoconus-bednalli&form.textures.bumps.look=image&form.textures.bumps.image=stripes' \
+	  'Conus marmoreus on the body|v=1&preset=murex-cabritii&form.resolution=192&form.textures.body.look=image&form.textures.body.image=conus-marmoreus'
 	ZOOM=1.6 $(XVFB) node tests/page/sheet.mjs www/img/murex-resolutions.png 3 400 \
 	  'Murex cabritii at 128³|v=1&preset=murex-cabritii&form.resolution=128' \
 	  'Murex pecten at 128³|v=1&preset=murex-pecten&form.resolution=128' \
