@@ -18,10 +18,10 @@ use crate::spec::ShellSpec;
 use crate::stories::stories;
 use crate::work::message::WholeShell;
 use crate::work::picture_queue::{PictureQueue, Place, Wanted};
+use crate::work::recent_pictures::RecentPictures;
 use crate::work::viewer_command::ViewCommand;
 use crate::work::viewer_status::Device;
 use std::cell::RefCell;
-use std::collections::VecDeque;
 use std::rc::Rc;
 use web_sys::{Element, HtmlImageElement};
 
@@ -101,15 +101,11 @@ fn images(selector: &str) -> Vec<HtmlImageElement> {
         .collect()
 }
 
-/// Keeps the address of a tile's picture by its link, letting the oldest go past [`KEPT`].
-fn keep(drawn: &mut VecDeque<(String, String)>, link: String, url: String) {
-    if drawn.len() >= KEPT
-        && let Some((_, old)) = drawn.pop_front()
-    {
-        // The address of a picture no longer kept; a tile showing it keeps its image.
-        let _ = web_sys::Url::revoke_object_url(&old);
+/// Releases the address of a picture no longer kept; a tile showing it keeps its image.
+fn release(url: Option<String>) {
+    if let Some(url) = url {
+        let _ = web_sys::Url::revoke_object_url(&url);
     }
-    drawn.push_back((link, url));
 }
 
 /// Draws the gallery's and the shape map's pictures: each shell is grown whole by a worker of
@@ -118,14 +114,9 @@ fn keep(drawn: &mut VecDeque<(String, String)>, link: String, url: String) {
 pub struct Pictures {
     viewer: Viewer,
     queue: PictureQueue,
-    /// The addresses of tiles' pictures drawn lately, by the link they were grown from: a tile
-    /// asked again (a parent that was an offspring, a generation gone back to, a map drawn
-    /// again) is shown at once.
-    drawn: Rc<RefCell<VecDeque<(String, String)>>>,
+    /// The object URLs of tiles' pictures drawn lately, by link.
+    drawn: Rc<RefCell<RecentPictures<String>>>,
 }
-
-/// Tiles' pictures kept by [`Pictures::drawn`] (the oldest are let go).
-const KEPT: usize = 256;
 
 impl Pictures {
     /// Pictures drawn by `viewer` (none where it draws nothing).
@@ -159,7 +150,7 @@ impl Pictures {
     ) -> bool {
         let picture = PictureQueue::tile_picture(preset, spec);
         let drawn = self.drawn.borrow();
-        if let Some((_, url)) = drawn.iter().find(|(l, _)| *l == picture.1)
+        if let Some(url) = drawn.get(&picture.1)
             && let Some(img) = image(&selector(Place::Tile { job, small }, preset))
         {
             img.set_src(url);
@@ -181,7 +172,7 @@ impl Pictures {
     /// would be shown at once.
     pub fn drawn_lately(&self, preset: &'static Preset, spec: &ShellSpec) -> bool {
         let link = PictureQueue::tile_picture(preset, spec).1;
-        self.drawn.borrow().iter().any(|(l, _)| *l == link)
+        self.drawn.borrow().get(&link).is_some()
     }
 
     /// Takes `seconds` as the pace of this machine (a test's slow machine).
@@ -192,9 +183,7 @@ impl Pictures {
     /// A picture that may have been drawn blank by a lost device is forgotten, to be drawn
     /// again.
     fn forget(&self, wanted: &Wanted) {
-        self.drawn
-            .borrow_mut()
-            .retain(|(link, _)| *link != wanted.link);
+        release(self.drawn.borrow_mut().forget(&wanted.link));
     }
 
     /// The gallery was left: the cards' pictures not yet sent to a worker wait until it is
@@ -256,7 +245,7 @@ impl Pictures {
                         img.set_src(&url);
                     }
                     if let Some((link, drawn)) = kept {
-                        keep(&mut drawn.borrow_mut(), link, url);
+                        release(drawn.borrow_mut().keep(link, url));
                     }
                 }
             });

@@ -24,6 +24,7 @@ pub mod panel_controls;
 pub mod picture_queue;
 pub mod planar_update;
 pub mod pool;
+pub mod recent_pictures;
 pub mod recording;
 pub mod replica;
 pub mod session;
