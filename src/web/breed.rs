@@ -7,11 +7,10 @@
 use super::debug;
 use super::dom::attr;
 use super::gallery::Pictures;
-use super::page::{element, set_text, signal};
+use super::page::{element, element_as, set_text, signal};
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::variation::breeding::{Breeding, PARENT};
-use wasm_bindgen::JsCast;
 use web_sys::HtmlInputElement;
 
 /// Tiles along each side of the breeding grid: the parent in the middle of its offspring.
@@ -58,9 +57,7 @@ impl BreedView {
         if let Some(section) = element("breed") {
             section.set_hidden(false);
         }
-        if let Some(rate) =
-            element("breed-rate").and_then(|e| e.dyn_into::<HtmlInputElement>().ok())
-        {
+        if let Some(rate) = element_as::<HtmlInputElement>("breed-rate") {
             rate.set_value(&breeding.lineage.rate.to_string());
         }
         set_text("breed-rate-value", &breeding.lineage.rate.to_string());

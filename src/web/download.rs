@@ -3,7 +3,7 @@
 //! offers each file written as a download.
 
 use super::clock::now;
-use super::page::{self, element, set_text, show_message, signal};
+use super::page::{self, element, element_as, set_text, show_message, signal};
 use crate::export::Download;
 use crate::export::print_size::PrintSize;
 use crate::work::download_menu::{DownloadMenu, MenuShown, Message};
@@ -24,8 +24,7 @@ impl Downloads {
     /// What to ask the viewer for the file `what` of the shell it shows, at the size the
     /// field asks for; a message says why when it cannot be made.
     pub fn start(&mut self, what: Download) -> Option<ViewCommand> {
-        let size_mm = element("download-size")
-            .and_then(|e| e.dyn_into::<HtmlInputElement>().ok())
+        let size_mm = element_as::<HtmlInputElement>("download-size")
             .map_or(PrintSize::DEFAULT_MM, |i| i.value_as_number());
         let (command, shown) = self.0.start(what, size_mm);
         apply(shown);
@@ -84,8 +83,7 @@ fn apply(shown: MenuShown) {
     }
     show_sizes(&shown.sizes);
     if let Some(progress) = shown.progress {
-        let bar =
-            element("download-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok());
+        let bar = element_as::<HtmlProgressElement>("download-progress");
         if let Some(bar) = bar {
             bar.set_value(progress.as_ref().map_or(0.0, |p| p.0));
             bar.set_hidden(progress.is_none());
@@ -123,7 +121,12 @@ pub fn offer(name: &str, mime: &str, bytes: &[u8]) -> Result<(), String> {
     options.set_type(mime);
     let blob = Blob::new_with_u8_array_sequence_and_options(&parts, &options)
         .map_err(|_| "the browser refused to make the file".to_string())?;
-    let url = Url::create_object_url_with_blob(&blob)
+    offer_blob(name, &blob)
+}
+
+/// Starts the download of `blob` as `name`.
+pub fn offer_blob(name: &str, blob: &Blob) -> Result<(), String> {
+    let url = Url::create_object_url_with_blob(blob)
         .map_err(|_| "the browser refused the file's address".to_string())?;
     let result = offer_url(name, &url);
     // The object URL is no longer needed once the click has started the download.

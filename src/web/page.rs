@@ -45,6 +45,11 @@ pub fn element(id: &str) -> Option<HtmlElement> {
     DOCUMENT.with(|d| d.get_element_by_id(id))?.dyn_into().ok()
 }
 
+/// The element with this id, as a `T` (an input, a select, …).
+pub fn element_as<T: JsCast>(id: &str) -> Option<T> {
+    DOCUMENT.with(|d| d.get_element_by_id(id))?.dyn_into().ok()
+}
+
 /// Sets `data-<key>` on <body>; `key` is in the dataset's camelCase (`patternHash` sets
 /// `data-pattern-hash`). A value the attribute has already is not written again: most are set
 /// every frame, and each write is a call into the page and a change of the document.

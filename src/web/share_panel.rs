@@ -2,11 +2,10 @@
 //! (`ui=controls` or `ui=none` hide the page around the shell, by classes on <body> that
 //! style.css reads).
 
-use super::page::{self, element, set_text, signal};
+use super::page::{self, element_as, set_text, signal};
 use crate::share::embed;
 use crate::share::presentation::{Presentation, Ui};
 use crate::share::qr;
-use wasm_bindgen::JsCast;
 use web_sys::{HtmlImageElement, HtmlSelectElement, HtmlTextAreaElement};
 
 /// The QR code's size in CSS pixels.
@@ -27,7 +26,7 @@ pub fn page_url() -> String {
 
 /// Shows the QR code of `url`, or why there is none.
 pub fn show_qr(url: &str) {
-    let Some(img) = element("qr").and_then(|e| e.dyn_into::<HtmlImageElement>().ok()) else {
+    let Some(img) = element_as::<HtmlImageElement>("qr") else {
         return;
     };
     match qr::svg(url, QR_SIZE) {
@@ -49,15 +48,12 @@ pub fn show_qr(url: &str) {
 
 /// The interface chosen for the embed code.
 pub fn chosen_ui() -> Ui {
-    element("embed-ui")
-        .and_then(|e| e.dyn_into::<HtmlSelectElement>().ok())
-        .map_or(Ui::None, |s| Ui::parse(&s.value()).0)
+    element_as::<HtmlSelectElement>("embed-ui").map_or(Ui::None, |s| Ui::parse(&s.value()).0)
 }
 
 /// Shows `snippet` in the panel, selectable, and copies it, saying whether it was copied.
 pub fn copy_embed(snippet: String) {
-    if let Some(area) = element("embed-code").and_then(|e| e.dyn_into::<HtmlTextAreaElement>().ok())
-    {
+    if let Some(area) = element_as::<HtmlTextAreaElement>("embed-code") {
         area.set_value(&snippet);
         area.set_hidden(false);
     }

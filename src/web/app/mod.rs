@@ -34,7 +34,7 @@ use super::clock::now;
 use super::download::Downloads;
 use super::gallery::Pictures;
 use super::map::MapView;
-use super::page::{self, element, set_text, signal};
+use super::page::{self, element, element_as, set_text, signal};
 use super::panel::{OnChange, Panel};
 use super::planar::PlanarView;
 use super::record::Recording;
@@ -217,9 +217,7 @@ impl App {
                     .close(&mut self.workers.borrow_mut(), &mut self.pictures),
                 Effect::UpdateAddress => self.update_url(),
                 Effect::Progress(done, total) => {
-                    if let Some(bar) =
-                        element("progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
-                    {
+                    if let Some(bar) = element_as::<HtmlProgressElement>("progress") {
                         bar.set_max(total as f64);
                         bar.set_value(done as f64);
                     }

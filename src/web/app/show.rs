@@ -7,11 +7,10 @@ use crate::share::presentation::{Layout, Presentation};
 use crate::stories::StoryAt;
 use crate::view::panes::arrangement;
 use crate::web::dom;
-use crate::web::page::{self, element, set_text, show_message, signal};
+use crate::web::page::{self, element, element_as, set_text, show_message, signal};
 use crate::web::share_panel;
 use crate::web::viewer_handle::ViewerHandle;
 use crate::work::status_readout::Say;
-use wasm_bindgen::JsCast;
 use web_sys::HtmlInputElement;
 
 /// Shows which backend the main view is drawn with (none: no 3D).
@@ -39,7 +38,7 @@ pub(super) fn say(say: Say) {
 
 /// The speed box shows `speed` rows per frame.
 pub(super) fn show_speed(speed: f64) {
-    if let Some(input) = element("speed").and_then(|e| e.dyn_into::<HtmlInputElement>().ok()) {
+    if let Some(input) = element_as::<HtmlInputElement>("speed") {
         input.set_value(&crate::spec::fields::display(speed));
     }
 }

@@ -14,7 +14,7 @@ use sink::{Collected, Sink, codec_sink, stream_sink};
 
 use super::clock::now;
 use super::download;
-use super::page::{element, set_text, signal};
+use super::page::{element, element_as, set_text, signal};
 use super::webcodecs::{self, VideoEncoder, VideoFrame, describe};
 use crate::export::webm::VideoCodec;
 use crate::view::recording::{
@@ -23,7 +23,6 @@ use crate::view::recording::{
 use crate::work::recording::{self, Support};
 use std::cell::RefCell;
 use std::rc::Rc;
-use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 use web_sys::{HtmlProgressElement, HtmlSelectElement};
 
@@ -73,8 +72,7 @@ pub async fn probe() -> Support {
 /// The options chosen on the page.
 pub fn options() -> RecordingOptions {
     let choice = |id: &str| {
-        element(id)
-            .and_then(|e| e.dyn_into::<HtmlSelectElement>().ok())
+        element_as::<HtmlSelectElement>(id)
             .map(|s| s.value())
             .unwrap_or_default()
     };
@@ -298,12 +296,7 @@ impl Recording {
             .plan
             .file_name(self.preset)
             .replace(".webm", &format!(".{extension}"));
-        let url = web_sys::Url::create_object_url_with_blob(&blob)
-            .map_err(|_| "the browser refused the file's address".to_string())?;
-        let offered = download::offer_url(&name, &url);
-        // The object URL is no longer needed once the click has started the download.
-        let _ = web_sys::Url::revoke_object_url(&url);
-        offered.map(|()| name)
+        download::offer_blob(&name, &blob).map(|()| name)
     }
 }
 
@@ -321,15 +314,13 @@ pub fn show_recording(recording: Option<&Recording>) {
         }
     }
     for id in ["record-size", "record-fps", "record-turntable"] {
-        if let Some(select) = element(id).and_then(|e| e.dyn_into::<HtmlSelectElement>().ok()) {
+        if let Some(select) = element_as::<HtmlSelectElement>(id) {
             select.set_disabled(active);
         }
     }
     let Some(r) = recording else { return };
     let frames = r.plan.frames();
-    if let Some(bar) =
-        element("record-progress").and_then(|e| e.dyn_into::<HtmlProgressElement>().ok())
-    {
+    if let Some(bar) = element_as::<HtmlProgressElement>("record-progress") {
         bar.set_max(frames as f64);
         bar.set_value(r.progress.frames_done() as f64);
     }
