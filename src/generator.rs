@@ -304,7 +304,8 @@ impl Generator {
 
     /// Takes the room the fully grown meshes need at once, before growing step by step, so
     /// that no step stops to move the whole mesh grown so far into a larger one. Growing to
-    /// the end at once ([`Generator::finish`]) takes only the room the mesh fills.
+    /// the end at once ([`Generator::finish`]) takes the room the shape asks for finishing
+    /// ([`GrowingShape::finish_capacity`]) instead.
     fn reserve(&mut self) {
         self.mesh.reserve_total(self.shape.capacity());
         self.edge.reserve_total(self.shape.edge_capacity());
@@ -385,6 +386,7 @@ impl Generator {
     /// Grows to the end at once: to the last row, or to the row where the pattern stopped (the
     /// shape stops there too, however growth was cut into calls before).
     pub fn finish(&mut self) {
+        self.mesh.reserve_total(self.shape.finish_capacity());
         self.advance_pattern(self.rows);
         self.hash.take();
         if self.failure.is_some() {
@@ -399,6 +401,7 @@ impl Generator {
     /// copy of the shell, `work::replica`), the mesh lacks them. `None` when nothing is left
     /// apart: the shell is then whole.
     pub fn finish_apart(&mut self) -> Option<Pieces> {
+        self.mesh.reserve_total(self.shape.finish_capacity());
         self.advance_pattern(self.rows);
         self.hash.take();
         if self.failure.is_some() {

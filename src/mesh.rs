@@ -95,15 +95,21 @@ impl Mesh {
         self.indices.extend(other.indices.iter().map(|i| i + base));
     }
 
-    /// Appends `other` as [`Mesh::append`] does, growing the mesh's room by an eighth at a
-    /// time instead of doubling it: a large mesh joined piece by piece then holds at most an
-    /// eighth more room than it fills, where doubling leaves up to as much again unused. (A
-    /// large buffer grows in place or by moving its pages, not by copying, on the systems we
-    /// know; in a wasm worker the pieces' meshes are small and only the page joins them.)
+    /// Appends `other` as [`Mesh::append`] does, but once the mesh holds a million bytes or so,
+    /// growing its room by an eighth at a time instead of doubling it: a large mesh joined
+    /// piece by piece then holds at most an eighth more room than it fills, where doubling
+    /// leaves up to as much again unused. Where a growing buffer is copied (WebAssembly's
+    /// allocator; natively, large buffers move their pages instead) the copies add up to
+    /// about eight times the mesh, against twice when doubling.
     pub fn append_sparingly(&mut self, other: &Mesh) {
         fn room_for<T>(v: &mut Vec<T>, more: usize) {
             if v.capacity() - v.len() < more {
-                v.reserve_exact(more.max(v.len() / 8));
+                let step = if size_of_val(v.as_slice()) < 1 << 20 {
+                    v.len()
+                } else {
+                    v.len() / 8
+                };
+                v.reserve_exact(more.max(step));
             }
         }
         room_for(&mut self.vertices, other.vertices.len());

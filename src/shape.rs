@@ -89,8 +89,8 @@ impl Pieces {
         self.groups.iter().map(Vec::len).sum()
     }
 
-    /// Appends the meshes `made` of these pieces' groups (one for each group, in order) to
-    /// `mesh`.
+    /// Appends `made`, the meshes of the groups of some [`Pieces`] (one for each group, in the
+    /// groups' order), to `mesh`.
     pub fn join(mesh: &mut Mesh, made: Vec<Mesh>) {
         for m in made {
             mesh.append_sparingly(&m);
@@ -130,6 +130,12 @@ pub trait GrowingShape {
     fn capacity(&self) -> Capacity;
     /// The largest the transient edge mesh ever gets.
     fn edge_capacity(&self) -> Capacity;
+    /// The room the permanent mesh takes before the shape is grown to its end at once: its
+    /// capacity, unless that is only a guess the mesh may stay far below (then none, and the
+    /// mesh grows as it fills).
+    fn finish_capacity(&self) -> Capacity {
+        self.capacity()
+    }
     /// Bounding box of the fully grown shape.
     fn bounds(&self) -> Bounds;
     /// The direction the fully grown shape is best seen from (where its opening faces).
@@ -161,7 +167,7 @@ pub trait GrowingShape {
         }
     }
     /// Ends growth as [`Self::finish`] does, but leaves out the pieces it returns, to be made
-    /// apart and appended to `mesh` in the order of their numbers (see [`Pieces`]). A form
+    /// apart and appended to `mesh` group by group (see [`Pieces`]). A form
     /// whose rest of growth does not split finishes here and returns `None`.
     fn finish_apart(&mut self, mesh: &mut Mesh, edge: &mut Mesh) -> Option<Pieces> {
         self.finish(mesh, edge);

@@ -87,3 +87,26 @@ fn a_diverging_pattern_stops_growth_with_a_message() {
     }
     assert_eq!(budgeted.mesh_hash(), alone, "budgeted");
 }
+
+/// Growing a swept, chambered or branching shell to its end at once takes the room its mesh
+/// needs once (`GrowingShape::finish_capacity`), not by doubling as it fills.
+#[test]
+fn a_shell_grown_to_its_end_at_once_holds_little_more_than_its_mesh() {
+    use crate::common::heap::peak_of;
+    for id in [
+        "turbinate",
+        "conus-marmoreus",
+        "kawaguchi-horn",
+        "kawaguchi-coral",
+    ] {
+        let spec = preset(id).expect(id).spec.clone();
+        let mut generator = Generator::new(&spec).expect(id);
+        let ((), peak) = peak_of(|| generator.finish());
+        let mesh = generator.mesh();
+        let bytes = size_of_val(mesh.vertices.as_slice()) + size_of_val(mesh.indices.as_slice());
+        assert!(
+            peak as f64 <= 1.25 * bytes as f64 && bytes > 100_000,
+            "{id}: finishing held {peak} bytes at most for a mesh of {bytes}"
+        );
+    }
+}

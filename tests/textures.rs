@@ -359,44 +359,90 @@ fn every_species_offered_as_an_image_is_a_pattern_that_shows_one() {
 }
 
 #[test]
-fn an_image_lies_on_a_spines_own_parameterisation_and_on_the_bodys_growth() {
+fn an_image_lies_around_and_along_a_spine_and_a_bump_and_on_the_bodys_growth() {
     let map = image_of(ImageOf::OlivaPorphyria);
+    let close = |got: [f64; 4], want: [f64; 3], what: &str| {
+        for (g, w) in got.into_iter().zip(want) {
+            assert!((g - w).abs() < 1e-12, "{what}: {got:?} against {want:?}");
+        }
+        assert_eq!(got[3], 0.0, "{what}: no pattern shows");
+    };
+    // A spine along y from 0 to 3, its image starting a tenth of the way along.
     let spine = Primitive::Cone {
         from: DVec3::ZERO,
         to: DVec3::new(0.0, 3.0, 0.0),
         radii: [support_of(0.5), support_of(0.2)],
     };
     let start = 0.1;
-    let look = Look::Image {
-        map,
-        on: MapOn::Part { start },
-    };
-    let tree = Node::leaf(spine.clone(), Texture::around(0.0).looking(look));
-    // Around and along the spine, its colour is the image's there, and no pattern shows.
-    for (k, p) in [(0.3, 0.5, 0.1), (-0.2, 2.0, 0.1), (0.05, 2.6, -0.1)]
-        .map(|(x, y, z)| DVec3::new(x, y, z))
-        .into_iter()
-        .enumerate()
-    {
-        let [r, g, b, share] = tree.probe(p).paint.tint();
-        let along = (spine.along(p) - start) / (1.0 - start);
-        let want = map.at(spine.around(p), along);
-        for (got, want) in [r, g, b].into_iter().zip(want) {
-            assert!((got - want).abs() < 1e-12, "point {k}: {got} {want}");
-        }
-        assert_eq!(share, 0.0);
+    let tree = Node::leaf(
+        spine.clone(),
+        Texture::around(0.0).looking(Look::Image {
+            map,
+            on: MapOn::Part { start },
+        }),
+    );
+    // Along: a point 2.1 up is (0.7 − 0.1)/0.9 of the way from the image's first row to its
+    // last; one at the base, before the start, shows the first row.
+    let across = |p: DVec3| spine.mapped(p)[0];
+    let p = DVec3::new(0.3, 2.1, 0.0);
+    close(
+        tree.probe(p).paint.tint(),
+        map.at(across(p), 0.6 / 0.9),
+        "2.1 up",
+    );
+    let p = DVec3::new(0.3, 0.15, 0.0);
+    close(
+        tree.probe(p).paint.tint(),
+        map.at(across(p), 0.0),
+        "at the base",
+    );
+    // Around: a quarter turn about the spine is a quarter of the image across, whichever way
+    // the spine points.
+    for k in 0..8 {
+        let a = f64::from(k) * std::f64::consts::TAU / 8.0;
+        let at = |a: f64| DVec3::new(0.2 * a.cos(), 1.0, 0.2 * a.sin());
+        let step = (across(at(a + std::f64::consts::FRAC_PI_2)) - across(at(a))).rem_euclid(1.0);
+        assert!(
+            (step - 0.25).abs() < 1e-9 || (step - 0.75).abs() < 1e-9,
+            "a quarter turn from {a}: {step}"
+        );
     }
-    // Going around the spine at one height passes through different columns of the image.
-    let around: Vec<f64> = (0..8)
-        .map(|k| {
-            let a = f64::from(k) * std::f64::consts::TAU / 8.0;
-            spine.around(DVec3::new(0.2 * a.cos(), 1.0, 0.2 * a.sin()))
-        })
-        .collect();
-    let mut sorted = around.clone();
-    sorted.sort_by(f64::total_cmp);
-    sorted.dedup_by(|a, b| (*a - *b).abs() < 0.1);
-    assert_eq!(sorted.len(), 8, "{around:?}");
+    // A bump standing out along x: its top is the image's last row, where it leaves the
+    // surface (a right angle from x) its first; around x, a quarter turn from y to z is a
+    // quarter of the image across.
+    let bump = Primitive::Point {
+        centre: DVec3::ZERO,
+        radius: support_of(1.0),
+    };
+    let tree = Node::leaf(
+        bump,
+        Texture::around(0.0).looking(Look::Image {
+            map,
+            on: MapOn::Part { start: 0.0 },
+        }),
+    );
+    let r = 0.7;
+    close(
+        tree.probe(DVec3::X * r).paint.tint(),
+        map.at(0.0, 1.0),
+        "its top",
+    );
+    close(
+        tree.probe(DVec3::Y * r).paint.tint(),
+        map.at(0.0, 0.0),
+        "its rim, y",
+    );
+    close(
+        tree.probe(DVec3::Z * r).paint.tint(),
+        map.at(0.25, 0.0),
+        "its rim, z",
+    );
+    let halfway = DVec3::new(1.0, 0.0, 1.0).normalize() * r;
+    close(
+        tree.probe(halfway).paint.tint(),
+        map.at(0.25, 0.5),
+        "half way up, z",
+    );
     // On the body, the image runs on the growth: across it along the generating curve, along
     // it the growth time over the rows.
     let body = Primitive::Point {

@@ -5,11 +5,18 @@
 //! around it.
 
 /// An image of `width` × `height` texels in linear light, row by row from along = 0.
-#[derive(Debug, PartialEq)]
+#[derive(PartialEq)]
 pub struct ImageMap {
     width: usize,
     height: usize,
     texels: Vec<[f32; 3]>,
+}
+
+/// Its size, not its thousands of texels (a tree printed names its images so).
+impl std::fmt::Debug for ImageMap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "ImageMap({} × {})", self.width, self.height)
+    }
 }
 
 impl ImageMap {

@@ -130,18 +130,31 @@ impl Primitive {
         }
     }
 
-    /// How far around the primitive `p` lies, in [0, 1): the angle about a cone's segment or a
-    /// torus's axis from a direction square to it (the same for the same primitive), about the
-    /// z axis for a point; the across of an image mapped onto the primitive.
-    pub fn around(&self, p: DVec3) -> f64 {
-        let (axis, q) = match *self {
-            Primitive::Point { centre, .. } => (DVec3::Z, p - centre),
-            Primitive::Cone { from, to, .. } => ((to - from).normalize_or(DVec3::Z), p - from),
-            Primitive::Torus { centre, axis, .. } => (axis, p - centre),
+    /// Where `p` lies on the primitive's own 2D parameterisation, by which an image is mapped
+    /// onto it (the paper's faster texturing, §3.4): (around, along), each in [0, 1]. On a
+    /// cone, around its segment from a direction square to it (the same for the same cone),
+    /// and along the segment ([`Primitive::along`]); on a point, around its x axis (the way a
+    /// bump stands out of its surface, `bumps.rs`) from y, and along from a right angle to x,
+    /// where a bump leaves its surface, to x, its top; on a torus, around its axis, 0 along.
+    pub fn mapped(&self, p: DVec3) -> [f64; 2] {
+        let turn = |y: f64, x: f64| (libm::atan2(y, x) / std::f64::consts::TAU).rem_euclid(1.0);
+        let around = |axis: DVec3, q: DVec3| {
+            let x = axis.any_orthonormal_vector();
+            turn(q.dot(axis.cross(x)), q.dot(x))
         };
-        let x = axis.any_orthonormal_vector();
-        let y = axis.cross(x);
-        (libm::atan2(q.dot(y), q.dot(x)) / std::f64::consts::TAU).rem_euclid(1.0)
+        match *self {
+            Primitive::Point { centre, .. } => {
+                let q = p - centre;
+                let off_axis = q.y.hypot(q.z);
+                let from_top = libm::atan2(off_axis, q.x) / std::f64::consts::FRAC_PI_2;
+                [turn(q.z, q.y), (1.0 - from_top).clamp(0.0, 1.0)]
+            }
+            Primitive::Cone { from, to, .. } => [
+                around((to - from).normalize_or(DVec3::Z), p - from),
+                self.along(p),
+            ],
+            Primitive::Torus { centre, axis, .. } => [around(axis, p - centre), 0.0],
+        }
     }
 
     /// The primitive moved by a similarity `m` (a map that scales all lengths by `scale`).

@@ -9,9 +9,10 @@
 //! The pattern's colour is only known where the page or an export samples the pattern, so the
 //! primitives showing it blend their pattern coordinates among themselves (growth time, and
 //! position along the generating curve averaged as an angle on the unit circle: 0.99 and 0.01
-//! blend to 0, not to 0.5), and the blend keeps their share of the field; the ramps' colours
-//! are summed, weighted, at once. A surface point's colour is then
-//! share · pattern(coordinates) + Σ fᵢ·colourᵢ / Σ fⱼ over the ramps: see [`Paint::tint`].
+//! blend to 0, not to 0.5), and the blend keeps their share of the field; the colours of
+//! the ramps and images are summed, weighted, at once. A surface point's colour is then
+//! share · pattern(coordinates) + Σ fᵢ·colourᵢ / Σ fⱼ, the first sum over the ramps and
+//! images, the second over all: see [`Paint::tint`].
 
 use super::image_map::ImageMap;
 use super::primitive::Primitive;
@@ -41,8 +42,8 @@ pub enum Look {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MapOn {
     /// On the primitive's own parameterisation, as the paper maps textures onto spines and
-    /// bumps: across the image around it ([`Primitive::around`]), along it from `start` of the
-    /// way along the primitive ([`Primitive::along`]) to its tip, as a ramp runs.
+    /// bumps ([`Primitive::mapped`]): across the image around it, along it from `start` of the
+    /// way along the primitive to its tip, as a ramp runs.
     Part { start: f64 },
     /// On the growth's parameterisation, the pattern's own: across the image along the
     /// generating curve, along it the growth time over `rows` rows. The paper maps the body's
@@ -126,7 +127,7 @@ pub struct Paint {
     /// The same over the others, whose coordinates serve only where no pattern shows (for the
     /// growth lines and the depth into the opening).
     rest: [f64; 3],
-    /// Σ f·colour over the ramps, linear light.
+    /// Σ f·colour over the ramps and images, linear light.
     rgb: [f64; 3],
     /// Whether the point lies on a surface carved by a CSG difference: the inside of a wall.
     pub inner: bool,
@@ -157,13 +158,13 @@ impl Paint {
             Look::Image { map, on } => {
                 let (across, along) = match on {
                     MapOn::Part { start } => {
-                        let t = primitive.along(p);
+                        let [around, t] = primitive.mapped(p);
                         let along = if start < 1.0 {
                             (t - start) / (1.0 - start)
                         } else {
                             1.0
                         };
-                        (primitive.around(p), along)
+                        (around, along)
                     }
                     MapOn::Growth { rows } => (
                         (libm::atan2(sin, cos) / TAU).rem_euclid(1.0),
@@ -209,7 +210,7 @@ impl Paint {
         [along, time / weight]
     }
 
-    /// The blend of colours that are known here, as (r, g, b, share): the ramps' colours
+    /// The blend of colours that are known here, as (r, g, b, share): the ramps' and images' colours
     /// summed in linear light, each weighted by its field over the sum of all fields, and the
     /// pattern's share of the fields. The colour at the point is share · pattern + (r, g, b).
     /// A point no primitive reaches shows the pattern alone.

@@ -1,8 +1,8 @@
 //! The page's copy of a shell growing on a worker: the permanent mesh, the edge, the pattern's
 //! rows, where growth stands, and the hashes, kept up to date from the [`Delta`]s a worker
 //! sends. Each delta is taken in only if it continues exactly what the copy holds. When the
-//! shell is finished apart, the pieces' meshes come back from any workers in any order and are
-//! joined once all are in, in the order of their numbers: the mesh is then the one a single
+//! shell is finished apart, the meshes of the pieces' groups come back from any workers in any
+//! order and are joined once all are in, in the order of the groups: the mesh is then the one a single
 //! thread finishing the shell would have made, bit for bit, whatever the number of workers.
 
 use super::message::{Delta, Progress, ShellInfo, WholeShell};

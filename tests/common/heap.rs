@@ -2,8 +2,10 @@
 //! adds its size to the allocating thread's count, every release takes it off the releasing
 //! thread's, and each thread keeps the highest count it reached. A test that measures meshes
 //! on its own thread, so what other tests hold at the time is not counted. A reallocation
-//! counts as the change of size: for the large buffers of a mesh, the system allocator moves
-//! the pages (`mremap`) instead of copying them, so the old and the new are never held at once.
+//! counts as the change of size: a model of the large buffers of a mesh, whose pages glibc
+//! moves (`mremap`) instead of copying, so that the old and the new are never held at once.
+//! Below its threshold for mapping (128 KB to 32 MB, as it adapts) a buffer may be copied, and
+//! for that moment both are held; the counts leave that moment out.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;

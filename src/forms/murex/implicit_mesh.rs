@@ -7,7 +7,7 @@
 //! always one closed surface. A chunk that no later instance reaches is final and moves to the
 //! permanent mesh; the others, still open to change, make up the transient edge mesh.
 //! Finishing meshes every chunk not yet final once, as it ends up: those chunks are pieces that
-//! other threads may mesh apart ([`PieceMaker`]), joined in the order of their numbers.
+//! other threads may mesh apart ([`PieceMaker`]) group by group, joined in the groups' order.
 
 use super::whorl::{Whorl, whorl};
 use crate::blobtree::blob_tree::Node;
@@ -46,11 +46,19 @@ impl PieceMaker {
         Ok(Self { tree, refinement })
     }
 
-    /// The work of meshing the pieces numbered `ids` (one group of [`Pieces`], or several in
-    /// turn) at growth step `step`.
+    /// The work of meshing the pieces numbered `ids` (one group of [`Pieces`]) at growth step
+    /// `step`.
     pub fn start(&self, step: u32, ids: &[u32]) -> ChunkWork {
+        self.start_onto(Mesh::default(), step, ids)
+    }
+
+    /// As [`PieceMaker::start`], the pieces' meshes appended to `mesh`. `ids` may be several
+    /// groups in turn, each of one block (as [`ImplicitMesh::finish_apart`] makes them): the
+    /// work meshes a block's pieces together, so the mesh is then the groups' meshes joined
+    /// in their order.
+    fn start_onto(&self, mesh: Mesh, step: u32, ids: &[u32]) -> ChunkWork {
         let pieces = ids.iter().map(|&n| self.refinement.piece(n)).collect();
-        ChunkWork::new(step, pieces)
+        ChunkWork::onto(mesh, step, pieces)
     }
 
     /// Meshes chunks of `work` while `keep_going` allows (at least one); says whether all are.
@@ -191,6 +199,12 @@ impl GrowingShape for ImplicitMesh {
         self.capacity()
     }
 
+    /// None: the capacity is a guess for growth step by step, and finishing appends each
+    /// chunk's mesh as it is made, taking room an eighth at a time (`Mesh::append_sparingly`).
+    fn finish_capacity(&self) -> Capacity {
+        Capacity::default()
+    }
+
     /// Each live piece is a part: a step changes the few it re-meshes. The edge joins them in
     /// the order of their numbers (`publish`), so each lies where those before it end.
     fn edge_parts(&self, _edge: &Mesh) -> Vec<EdgePart> {
@@ -259,13 +273,17 @@ impl GrowingShape for ImplicitMesh {
         if let Some(pieces) = self.finish_apart(mesh, edge) {
             // One work over all the blocks, so that they hand their faces on to each other too,
             // appending each piece to the mesh as it is made: the groups in turn, as
-            // `Pieces::join` joins them.
+            // `Pieces::join` joins them, since each group is one block.
+            debug_assert!({
+                let block = |n: &u32| block_of(self.maker.refinement.piece(*n));
+                let blocks: BTreeSet<_> = pieces.groups.iter().map(|g| block(&g[0])).collect();
+                blocks.len() == pieces.groups.len()
+                    && (pieces.groups.iter()).all(|g| g.iter().all(|n| block(n) == block(&g[0])))
+            });
             let ids = pieces.groups.concat();
-            let chunks = ids
-                .iter()
-                .map(|&n| self.maker.refinement.piece(n))
-                .collect();
-            let mut work = ChunkWork::onto(std::mem::take(mesh), pieces.step, chunks);
+            let mut work = self
+                .maker
+                .start_onto(std::mem::take(mesh), pieces.step, &ids);
             self.maker.work(&mut work, &mut || true);
             *mesh = self.maker.finished(work);
         }
