@@ -577,7 +577,8 @@ impl Page {
             Step::Restart => self.session.restart(),
             Step::Play => self.session.toggle_playing(),
             Step::Speed { tenths } => {
-                self.session.set_speed(f64::from(*tenths) / 10.0, now);
+                self.session
+                    .set_speed(&(f64::from(*tenths) / 10.0).to_string(), now);
             }
             Step::Views => self.session.toggle_views(),
             Step::Cover(covered) => self.covered = *covered,

@@ -180,8 +180,8 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
                 .target()
                 .and_then(|t| t.dyn_into::<HtmlInputElement>().ok())
                 .map(|i| i.value());
-            if let Some(v) = value.and_then(|v| v.parse::<f64>().ok()) {
-                a.set_speed(v);
+            if let Some(v) = value {
+                a.set_speed(&v);
             }
         })?;
     }
@@ -251,7 +251,7 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
             Shortcut::ResetCamera => a.reset_camera(),
             Shortcut::ToggleViews => a.toggle_views(),
             Shortcut::Fullscreen => a.toggle_fullscreen(),
-            Shortcut::Speed(change) => a.set_speed(change.of(a.speed())),
+            Shortcut::Speed(change) => a.set_speed(&change.of(a.speed()).to_string()),
             Shortcut::StoryStep(forward) => a.story_step(forward),
         }
         e.prevent_default();

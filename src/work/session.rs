@@ -497,9 +497,10 @@ impl Session {
         self.view(ViewCommand::Finish);
     }
 
-    /// Sets the growth speed in rows per frame at `now`, read as the link reads it (a speed
-    /// out of range is clamped, and said); growth goes on, and the link follows.
-    pub fn set_speed(&mut self, speed: f64, now: f64) {
+    /// Sets the growth speed in rows per frame at `now` from the text `speed`, read as the link
+    /// reads it (a speed out of range is clamped, and said; one that is no number is said, and
+    /// the speed kept); growth goes on, and the link follows.
+    pub fn set_speed(&mut self, speed: &str, now: f64) {
         let Some((preset, spec)) = &self.current else {
             return;
         };
@@ -507,7 +508,7 @@ impl Session {
             spec: next,
             problems,
             ..
-        } = link::with(preset, spec, "growth.speed", &speed.to_string());
+        } = link::with(preset, spec, "growth.speed", speed);
         let speed = next.growth.speed;
         if let Some((_, spec)) = &mut self.current {
             spec.growth.speed = speed;
@@ -873,7 +874,7 @@ mod tests {
     #[test]
     fn a_speed_out_of_range_is_clamped_as_the_link_clamps_it_and_said() {
         let mut session = opened("#v=1&preset=stripes");
-        session.set_speed(1e9, 0.0);
+        session.set_speed("1e9", 0.0);
         let effects = session.take_effects();
         assert_eq!(session.speed(), 200.0);
         assert!(
@@ -881,10 +882,25 @@ mod tests {
                 |e| matches!(e, Effect::Say(Say::Show(words)) if words.contains("growth.speed"))
             )
         );
-        session.set_speed(3.0, 1.0);
+        session.set_speed("3", 1.0);
         let effects = session.take_effects();
         assert!(!effects.iter().any(|e| matches!(e, Effect::Say(_))));
         assert_eq!(session.speed(), 3.0);
+        // What is not a number is said, and the box shows the speed kept.
+        session.set_speed("fast", 2.0);
+        let effects = session.take_effects();
+        assert_eq!(session.speed(), 3.0);
+        assert!(
+            effects.iter().any(
+                |e| matches!(e, Effect::Say(Say::Show(words)) if words.contains("growth.speed"))
+            ),
+            "not said"
+        );
+        assert!(
+            effects
+                .iter()
+                .any(|e| matches!(e, Effect::SpeedBox(s) if *s == 3.0))
+        );
     }
 
     #[test]

@@ -310,8 +310,9 @@ impl App {
         self.apply();
     }
 
-    /// Sets the growth speed in rows per frame (part of the link; growth goes on).
-    pub fn set_speed(&mut self, speed: f64) {
+    /// Sets the growth speed in rows per frame from the text `speed` (part of the link; growth
+    /// goes on).
+    pub fn set_speed(&mut self, speed: &str) {
         self.session.set_speed(speed, now());
         self.apply();
     }
