@@ -3,7 +3,7 @@
 //! offers each file written as a download.
 
 use super::clock::now;
-use super::page::{self, element, element_as, set_text, show_message, signal};
+use super::page::{self, element_as, set_text, show_message, signal};
 use crate::export::Download;
 use crate::export::print_size::PrintSize;
 use crate::work::download_menu::{DownloadMenu, MenuShown, Message};
@@ -92,9 +92,7 @@ fn apply(shown: MenuShown) {
     }
     if let Some(enabled) = shown.buttons {
         for what in Download::ALL {
-            if let Some(b) = element(&format!("download-{}", what.name()))
-                .and_then(|e| e.dyn_into::<HtmlButtonElement>().ok())
-            {
+            if let Some(b) = element_as::<HtmlButtonElement>(&format!("download-{}", what.name())) {
                 b.set_disabled(!enabled);
             }
         }
@@ -102,7 +100,7 @@ fn apply(shown: MenuShown) {
 }
 
 /// Starts the download of the resource at `url` (an object or data URL) as `name`.
-pub fn offer_url(name: &str, url: &str) -> Result<(), String> {
+fn offer_url(name: &str, url: &str) -> Result<(), String> {
     let anchor: HtmlAnchorElement = page::document()
         .create_element("a")
         .map_err(|_| "cannot create a link".to_string())?

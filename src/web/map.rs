@@ -7,7 +7,7 @@
 use super::debug;
 use super::dom::{append, attr, clear, create, typed};
 use super::gallery::Pictures;
-use super::page::{element, set_text, signal};
+use super::page::{element, element_as, set_text, signal};
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
 use crate::presets::Preset;
@@ -20,7 +20,6 @@ use crate::variation::parameter_map::{
 };
 use crate::variation::tile::Picture;
 use crate::work::message::Request;
-use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlInputElement, HtmlOptionElement, HtmlSelectElement};
 
 /// The controls of one axis: the parameter, and its range.
@@ -32,13 +31,10 @@ struct AxisControls {
 
 impl AxisControls {
     fn find(name: &str) -> Option<Self> {
-        fn get<T: JsCast>(id: String) -> Option<T> {
-            element(&id)?.dyn_into().ok()
-        }
         Some(Self {
-            select: get(format!("map-{name}"))?,
-            from: get(format!("map-{name}-from"))?,
-            to: get(format!("map-{name}-to"))?,
+            select: element_as(&format!("map-{name}"))?,
+            from: element_as(&format!("map-{name}-from"))?,
+            to: element_as(&format!("map-{name}-to"))?,
         })
     }
 

@@ -499,7 +499,7 @@ impl Session {
 
     /// Sets the growth speed in rows per frame at `now` from the text `speed`, read as the link
     /// reads it (a speed out of range is clamped, and said; one that is no number is said, and
-    /// the speed kept); growth goes on, and the link follows.
+    /// the speed kept, which is then no edit); growth goes on, and the link follows.
     pub fn set_speed(&mut self, speed: &str, now: f64) {
         let Some((preset, spec)) = &self.current else {
             return;
@@ -509,6 +509,7 @@ impl Session {
             problems,
             ..
         } = link::with(preset, spec, "growth.speed", speed);
+        let refused = !problems.is_empty() && next.growth.speed == spec.growth.speed;
         let speed = next.growth.speed;
         if let Some((_, spec)) = &mut self.current {
             spec.growth.speed = speed;
@@ -516,8 +517,11 @@ impl Session {
         if !problems.is_empty() {
             self.say(&problems);
         }
-        self.view(ViewCommand::Speed(speed));
         self.push(Effect::SpeedBox(speed));
+        if refused {
+            return;
+        }
+        self.view(ViewCommand::Speed(speed));
         self.story_edited = true;
         self.url_due = Some(now + URL_DELAY_MS);
     }
@@ -886,10 +890,15 @@ mod tests {
         let effects = session.take_effects();
         assert!(!effects.iter().any(|e| matches!(e, Effect::Say(_))));
         assert_eq!(session.speed(), 3.0);
-        // What is not a number is said, and the box shows the speed kept.
-        session.set_speed("fast", 2.0);
+        // What is not a number (a number box's cleared text) is said, and the box shows the
+        // speed kept; it is no edit, and the address waits for none.
+        session.address_due(2.0 + URL_DELAY_MS);
+        session.take_effects();
+        session.set_speed("", 2.0);
         let effects = session.take_effects();
         assert_eq!(session.speed(), 3.0);
+        session.address_due(3.0 + URL_DELAY_MS);
+        assert!(session.take_effects().is_empty(), "no address is written");
         assert!(
             effects.iter().any(
                 |e| matches!(e, Effect::Say(Say::Show(words)) if words.contains("growth.speed"))
