@@ -53,14 +53,19 @@ pub enum MapOn {
 }
 
 impl Look {
-    /// The ramp's colour (linear light) at t along its primitive.
-    pub fn ramp(base: [f64; 3], tip: [f64; 3], shade: f64, start: f64, t: f64) -> [f64; 3] {
-        let s = if start < 1.0 {
+    /// How far t along a primitive lies from `start` to its tip, in [0, 1]: where a part's ramp
+    /// or image runs from where it leaves the surface it stands on.
+    fn past_start(start: f64, t: f64) -> f64 {
+        if start < 1.0 {
             ((t - start) / (1.0 - start)).clamp(0.0, 1.0)
         } else {
             1.0
-        };
-        let s = libm::pow(s, shade);
+        }
+    }
+
+    /// The ramp's colour (linear light) at t along its primitive.
+    pub fn ramp(base: [f64; 3], tip: [f64; 3], shade: f64, start: f64, t: f64) -> [f64; 3] {
+        let s = libm::pow(Self::past_start(start, t), shade);
         std::array::from_fn(|k| base[k] + (tip[k] - base[k]) * s)
     }
 }
@@ -159,12 +164,7 @@ impl Paint {
                 let (across, along) = match on {
                     MapOn::Part { start } => {
                         let [around, t] = primitive.mapped(p);
-                        let along = if start < 1.0 {
-                            (t - start) / (1.0 - start)
-                        } else {
-                            1.0
-                        };
-                        (around, along)
+                        (around, Look::past_start(start, t))
                     }
                     MapOn::Growth { rows } => (
                         (libm::atan2(sin, cos) / TAU).rem_euclid(1.0),
