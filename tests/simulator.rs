@@ -1,5 +1,6 @@
 //! The page simulated deterministically from a seed: the real session of the page
-//! ([`Session`]), the real core of the viewer in the drawing worker ([`ViewerState`]), the real
+//! ([`Session`]), the real viewer of the drawing worker ([`ViewerDriver`]) on a simulated
+//! screen, the real
 //! pool and its rules for its workers' events ([`Pool`], [`Pool::take_events`]) and the real
 //! host each Web Worker runs ([`Host`]), joined by simulated message channels and a simulated
 //! clock, with faults and user input drawn from the seed. Every command crosses to the
@@ -31,22 +32,26 @@
 use crate::simulated_workers::{Workers, within_copy};
 use rand_core::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
-use seashells_core::generator::{GROWTH_BUDGET_MS, Generator};
+use seashells_core::generator::{Advance, GROWTH_BUDGET_MS, Generator};
 use seashells_core::presets::Preset;
 use seashells_core::share::link;
+use seashells_core::share::presentation::Layout;
 use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
-use seashells_core::work::device_survival::{Loss, Open, Survival};
+use seashells_core::work::device_survival::Loss;
 use seashells_core::work::drawing_link::DrawingLink;
+use seashells_core::work::pool::{Polled, Pool, PoolPlan};
+use seashells_core::work::screen::Screen;
 use seashells_core::work::session::{Edit, Effect, Heard, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
+use seashells_core::work::viewer_driver::{PoolWorkers, ViewerDriver};
 use seashells_core::work::viewer_inbox;
 use seashells_core::work::viewer_message::{
     ViewerNews, decode_command, decode_news, encode_command, encode_news,
 };
-use seashells_core::work::viewer_state::{ScreenChange, ViewerState};
-use seashells_core::work::viewer_status::{Device, FrameReport, ViewStatus};
+use seashells_core::work::viewer_state::Growing;
+use seashells_core::work::viewer_status::{Device, FrameReport};
 use std::collections::{HashMap, VecDeque};
 use std::sync::{Mutex, OnceLock};
 
@@ -165,7 +170,7 @@ struct VideoFrame;
 /// between them, and what the checks remember.
 struct Page {
     session: Session,
-    state: ViewerState,
+    viewer: ViewerDriver<SimScreen>,
     /// The drawing worker's pool and its workers.
     workers: Workers,
     /// Commands on their way to the drawing worker, and frames on their way back, with the
@@ -176,15 +181,14 @@ struct Page {
     frame: u64,
     /// The shell of each session the viewer opened (its preset).
     sessions: HashMap<u32, &'static str>,
-    /// The rows the renderer has taken of the shell shown (`None`: not built yet).
-    uploaded: Option<usize>,
     /// Whether the map or breeding covers the shell.
     covered: bool,
     /// Whether a recording holds the viewer, and its frames asked and drawn.
     recording: bool,
     asked_frames: usize,
     drawn_frames: usize,
-    gpu: Gpu,
+    /// The page said the device is gone for good.
+    gone: bool,
     /// The words the page said while each shell (by its viewer and session) was shown.
     said: Vec<(u32, u32, String)>,
     /// Viewers that took the drawing worker's place so far (each numbers its sessions afresh).
@@ -198,9 +202,13 @@ struct Page {
     drawing_hung: bool,
 }
 
-/// The drawing worker's graphics device, simulated.
+/// The drawing worker's screen, simulated: its graphics device, which the browser takes away
+/// and gives back as the steps say, and what its renderer has taken of the shell shown, which
+/// must be the shell last asked for, its rows in order from the first.
 #[derive(Default)]
-struct Gpu {
+struct SimScreen {
+    /// The drawing worker's frame now (the browser answers an opening two frames later).
+    frame: u64,
     /// Lost, and how (a WebGL context may come back).
     lost: Option<Loss>,
     /// The frame a lost context comes back in.
@@ -209,11 +217,178 @@ struct Gpu {
     opening: Option<(u64, Result<(), String>)>,
     /// The next opening fails.
     fail_next: bool,
-    survival: Survival,
-    /// The page said the device is gone for good.
-    gone: bool,
     /// Renderers opened again so far.
     reopened: usize,
+    /// The rows the renderer has taken of the shell shown (`None`: not built yet).
+    uploaded: Option<usize>,
+    size: (u32, u32),
+    /// The first thing handed to it that breaks the rules above.
+    fault: Option<Failure>,
+}
+
+impl SimScreen {
+    /// The drawing worker's frame `frame` begins: a lost context due back comes back.
+    fn tick(&mut self, frame: u64) {
+        self.frame = frame;
+        if let (Some(at), Some(lost)) = (self.restore_at, &mut self.lost)
+            && at <= frame
+        {
+            lost.restored = true;
+            self.restore_at = None;
+        }
+    }
+
+    fn fault(&mut self, failure: Failure) {
+        self.fault.get_or_insert(failure);
+    }
+
+    /// Starts opening a renderer: the browser answers two frames later.
+    fn open(&mut self) {
+        let answer = if std::mem::take(&mut self.fail_next) {
+            Err("the browser would not open a device".to_string())
+        } else {
+            Ok(())
+        };
+        self.opening = Some((self.frame + 2, answer));
+    }
+}
+
+impl Screen for SimScreen {
+    type Video = VideoFrame;
+    type Canvas = ();
+
+    fn backend(&self) -> Option<&'static str> {
+        Some("simulated")
+    }
+
+    fn load(&mut self, _: &Growing) {
+        self.uploaded = Some(0);
+    }
+
+    fn look(&mut self, _: &Growing) {
+        if self.uploaded.is_none() {
+            self.fault("a look for a shell not built".into());
+        }
+    }
+
+    fn upload(&mut self, growing: &Growing, advance: &Advance) -> usize {
+        let Some(rows) = self.uploaded else {
+            self.fault("rows of a shell not built".into());
+            return 0;
+        };
+        if advance.rows.start != rows {
+            self.fault(format!(
+                "the renderer holds {rows} rows and was handed rows {:?}",
+                advance.rows
+            ));
+        } else if !within_copy(advance, growing.replica()) {
+            // What the renderer reads, as the copy stands now, must be there.
+            self.fault(format!(
+                "the renderer was handed {advance:?}, beyond the copy"
+            ));
+        }
+        self.uploaded = Some(advance.rows.end);
+        // What a renderer would upload: vertices, indices and the pattern's rows.
+        advance.vertices.len() * 24
+            + advance.indices.len() * 4
+            + advance.rows.len() * growing.replica().cells() * 4
+    }
+
+    fn grew(&mut self, _: &Growing) {}
+
+    fn set_background(&mut self, _: [u8; 3]) {}
+
+    fn failure(&mut self) -> Option<String> {
+        None
+    }
+
+    fn lost(&self) -> Option<Loss> {
+        self.lost.clone()
+    }
+
+    fn open_again(&mut self) {
+        self.open();
+    }
+
+    fn open_on(&mut self, (): ()) {
+        self.open();
+    }
+
+    fn opened(&mut self) -> Option<Result<(), String>> {
+        let (_, answer) = self.opening.take_if(|(at, _)| *at <= self.frame)?;
+        if answer.is_ok() {
+            // A fresh renderer, on a device of its own, holding no shell yet.
+            self.reopened += 1;
+            self.lost = None;
+            self.restore_at = None;
+            self.uploaded = None;
+        }
+        Some(answer)
+    }
+
+    fn ready(&self) -> bool {
+        true
+    }
+
+    fn flush(&mut self) {}
+
+    fn size(&self) -> (u32, u32) {
+        self.size
+    }
+
+    fn resize(&mut self, size: (u32, u32)) {
+        self.size = size;
+    }
+
+    fn draw(&mut self, _: &Growing, _: Layout) -> Result<(), String> {
+        Ok(())
+    }
+
+    fn video(&mut self, _: &FrameAsk) -> Result<VideoFrame, String> {
+        Ok(VideoFrame)
+    }
+
+    fn release(&mut self, _: VideoFrame) {}
+}
+
+/// The drawing worker's viewer, freshly opened at `now`, on a screen that has opened
+/// `reopened` renderers again so far.
+fn viewer(now: f64, reopened: usize) -> ViewerDriver<SimScreen> {
+    let screen = SimScreen {
+        reopened,
+        size: (1, 1),
+        ..SimScreen::default()
+    };
+    ViewerDriver::new(screen, true, true, now)
+}
+
+/// The drawing worker's pool as its frame `frame` at `now` uses it: what was asked is sent
+/// as the bytes a worker reads, and whether it could be read is kept.
+struct Polling<'a> {
+    workers: &'a mut Workers,
+    frame: u64,
+    now: f64,
+    rng: &'a mut Pcg64,
+    sent: Result<(), Failure>,
+}
+
+impl PoolWorkers for Polling<'_> {
+    fn poll(&mut self) -> Polled {
+        self.workers.poll(self.frame, self.now, self.rng)
+    }
+
+    fn pool(&mut self) -> &mut Pool {
+        &mut self.workers.pool
+    }
+
+    /// A worker's least growth, as the page's plan sets it.
+    fn min_growth_ms(&self) -> f64 {
+        PoolPlan::from_query(|_| None, 1).worker_growth_ms
+    }
+
+    fn send(&mut self) {
+        self.sent = self.workers.dispatch(self.now);
+    }
 }
 
 /// A failed check, in words.
@@ -223,19 +398,18 @@ impl Page {
     fn new(size: usize) -> Self {
         Self {
             session: Session::default(),
-            state: ViewerState::new(true, true, 0.0),
+            viewer: viewer(0.0, 0),
             workers: Workers::new(size),
             to_viewer: VecDeque::new(),
             to_page: VecDeque::new(),
             now: 0.0,
             frame: 0,
             sessions: HashMap::new(),
-            uploaded: None,
             covered: false,
             recording: false,
             asked_frames: 0,
             drawn_frames: 0,
-            gpu: Gpu::default(),
+            gone: false,
             said: Vec::new(),
             viewers: 0,
             shown_state: String::new(),
@@ -281,38 +455,9 @@ impl Page {
         }
     }
 
-    /// The renderer's part: it takes what changed of the shell shown, which must be the
-    /// shell last asked for, its rows in order from the first.
+    /// Fails with what the screen was handed against its rules, if anything.
     fn screen(&mut self) -> Result<(), Failure> {
-        for change in self.state.take_screen() {
-            self.state
-                .shell()
-                .ok_or("the renderer was handed no shell")?;
-            match change {
-                ScreenChange::Shell => self.uploaded = Some(0),
-                ScreenChange::Look => {
-                    self.uploaded.ok_or("a look for a shell not built")?;
-                }
-                ScreenChange::Rows(advance) => {
-                    let rows = self.uploaded.ok_or("rows of a shell not built")?;
-                    if advance.rows.start != rows {
-                        return Err(format!(
-                            "the renderer holds {rows} rows and was handed rows {:?}",
-                            advance.rows
-                        ));
-                    }
-                    // What the renderer reads, as the copy stands now, is there.
-                    let replica = self.state.shell().ok_or("no shell")?.replica();
-                    if !within_copy(&advance, replica) {
-                        return Err(format!(
-                            "the renderer was handed {advance:?}, beyond the copy"
-                        ));
-                    }
-                    self.uploaded = Some(advance.rows.end);
-                }
-            }
-        }
-        Ok(())
+        self.viewer.screen_mut().fault.take().map_or(Ok(()), Err)
     }
 
     /// One animation frame: the page holds growth or not and takes in the drawing worker's
@@ -343,130 +488,65 @@ impl Page {
             let command = decode_command(bytes).map_err(|e| e.to_string())?;
             self.to_viewer.pop_front();
             let load = matches!(command, ViewCommand::Load { .. });
-            self.state.command(command, &mut self.workers.pool);
-            if load && let Some(shell) = self.state.shell() {
+            if load {
+                // Whatever the renderer held, the shell to come is not built yet.
+                self.viewer.screen_mut().uploaded = None;
+            }
+            self.viewer.command(command, &mut self.workers.pool);
+            if load && let Some(shell) = self.viewer.state().shell() {
                 self.sessions
                     .insert(shell.replica().session(), shell.preset().id);
-                self.uploaded = None;
             }
             self.screen()?;
         }
-        let device = self.survive();
-        if !matches!(device, Device::Ready | Device::Reopened(_)) {
-            // The drawing worker says where its device stands and does nothing else; its
-            // workers go on with what they hold.
-            self.post(lag, device, None, false);
-            self.workers.work(self.frame, FRAME_MS, lag, rng);
-            return Ok(());
+        self.viewer.screen_mut().tick(self.frame);
+        let mut polling = Polling {
+            workers: &mut self.workers,
+            frame: self.frame,
+            now: self.now,
+            rng,
+            sent: Ok(()),
+        };
+        let tick = self.viewer.tick(self.now, GROWTH_BUDGET_MS, &mut polling);
+        polling.sent?;
+        if let Device::NeedsCanvas(_) = tick.device {
+            // The page makes the fresh canvas asked for at once.
+            self.viewer.give_canvas(());
         }
-        let polled = self.workers.poll(self.frame, self.now, rng);
-        let replies = polled.replies;
-        if let Err(message) =
-            self.state
-                .take_all(replies, polled.sessions_lost, &mut self.workers.pool)
-        {
+        self.screen()?;
+        if let Some(message) = tick.refused {
             return Err(format!("the shell was dropped: {message}"));
         }
-        self.screen()?;
-        let mut drawn = false;
-        let mut recorded = false;
-        if !self.state.held() {
-            if self.state.recording() {
-                if let Some(frame) = self
-                    .state
-                    .recording_frame(GROWTH_BUDGET_MS, &mut self.workers.pool)
-                {
-                    frame.map_err(|e| format!("a recording's frame was refused: {e}"))?;
-                    recorded = true;
-                    self.state.recorded(self.now);
-                }
-            } else if self
-                .state
-                .frame(self.now, GROWTH_BUDGET_MS, 24.0, &mut self.workers.pool)
-            {
-                drawn = true;
-                self.state.drawn();
+        let (report, recorded) = match tick.frame {
+            // The drawing worker says where its device stands and does nothing else; its
+            // workers go on with what they hold.
+            None => (None, false),
+            Some(frame) => {
+                let frame = frame?;
+                let recorded = match frame.recorded {
+                    Some(Err(e)) => return Err(format!("a recording's frame was refused: {e}")),
+                    Some(Ok(VideoFrame)) => true,
+                    None => false,
+                };
+                (Some(frame.report), recorded)
             }
-        }
-        self.screen()?;
-        self.state.take_planar();
-        let status = self.state.status((1, 1));
-        self.post(lag, device, Some((status, drawn)), recorded);
-        self.workers.dispatch(self.now)?;
+        };
+        self.post(lag, tick.device, report, recorded);
         self.workers.work(self.frame, FRAME_MS, lag, rng);
         Ok(())
     }
 
     /// The drawing worker posts a frame's news to the page, as the bytes it reads, arriving
     /// `lag` frames later; a recording's video frame goes beside it.
-    fn post(&mut self, lag: u8, device: Device, frame: Option<(ViewStatus, bool)>, recorded: bool) {
+    fn post(&mut self, lag: u8, device: Device, report: Option<FrameReport>, recorded: bool) {
         let at = (self.frame + u64::from(lag)).max(self.to_page.back().map_or(0, |(a, ..)| *a));
-        let loads = self.state.loads();
         let news = ViewerNews::Frame {
             device,
-            report: frame.map(|(status, drawn)| {
-                Box::new(FrameReport {
-                    loads,
-                    drawn,
-                    status,
-                    ..FrameReport::default()
-                })
-            }),
+            report: report.map(Box::new),
             recorded: recorded.then_some(Ok(())),
         };
         let video = recorded.then_some(VideoFrame);
         self.to_page.push_back((at, encode_news(&news), video));
-    }
-
-    /// The drawing worker keeps its device as the core decides, before its frame: it opens
-    /// renderers where asked (the browser answers two frames later), gives the fresh canvas
-    /// the page makes, and hands a renderer opened again everything grown so far.
-    fn survive(&mut self) -> Device {
-        let gpu = &mut self.gpu;
-        if let (Some(at), Some(lost)) = (gpu.restore_at, &mut gpu.lost)
-            && at <= self.frame
-        {
-            lost.restored = true;
-            gpu.restore_at = None;
-        }
-        let answer = match gpu.opening.take() {
-            Some((at, answer)) if at <= self.frame => Some(answer),
-            opening => {
-                gpu.opening = opening;
-                None
-            }
-        };
-        let (device, open) = gpu.survival.frame(self.now, gpu.lost.as_ref(), answer);
-        let open_now = |gpu: &mut Gpu| {
-            let answer = if std::mem::take(&mut gpu.fail_next) {
-                Err("the browser would not open a device".to_string())
-            } else {
-                Ok(())
-            };
-            gpu.opening = Some((self.frame + 2, answer));
-        };
-        if open == Some(Open::Same) {
-            open_now(gpu);
-        }
-        match &device {
-            Device::NeedsCanvas(_) if gpu.survival.canvas_given() == Some(Open::Fresh) => {
-                open_now(gpu);
-            }
-            Device::Reopened(_) => {
-                gpu.reopened += 1;
-                gpu.lost = None;
-                gpu.restore_at = None;
-                // The renderer opened again takes everything grown so far.
-                self.uploaded = self
-                    .state
-                    .shell()
-                    .filter(|g| g.replica().shell().is_some())
-                    .map(|g| g.replica().rows_done());
-                self.state.touch();
-            }
-            _ => {}
-        }
-        device
     }
 
     /// The viewer on the page's thread takes the failed drawing worker's place: a fresh
@@ -477,15 +557,10 @@ impl Page {
         self.drawing_hung = false;
         self.link = DrawingLink::default();
         self.viewers += 1;
-        self.state = ViewerState::new(true, true, self.now);
+        self.viewer = viewer(self.now, self.viewer.screen().reopened);
         self.workers = Workers::new(self.workers.count().max(1));
         self.to_viewer.clear();
         self.to_page.clear();
-        self.gpu = Gpu {
-            reopened: self.gpu.reopened,
-            ..Gpu::default()
-        };
-        self.uploaded = None;
         self.stop_recording(0);
         self.session.viewer_replaced([255, 255, 255]);
         self.apply(0);
@@ -512,7 +587,7 @@ impl Page {
         }
         if self.session.device(self.link.device()).is_err() {
             // No device can be opened again: the page says so, and draws no more.
-            self.gpu.gone = true;
+            self.gone = true;
             return Ok(());
         }
         self.apply(0);
@@ -623,22 +698,23 @@ impl Page {
             Step::Garble { slot } => self.workers.garble(usize::from(*slot)),
             Step::Twice { slot } => self.workers.twice(usize::from(*slot)),
             Step::LoseDevice { webgl, restore } => {
-                self.gpu.lost = Some(Loss {
+                let screen = self.viewer.screen_mut();
+                screen.lost = Some(Loss {
                     reason: "taken by the browser".into(),
                     restored: false,
                     webgl: *webgl,
                 });
-                self.gpu.restore_at =
+                screen.restore_at =
                     (*webgl && *restore > 0).then(|| self.frame + u64::from(*restore));
             }
             Step::Restore => {
-                if let Some(lost) = &mut self.gpu.lost
+                if let Some(lost) = &mut self.viewer.screen_mut().lost
                     && lost.webgl
                 {
                     lost.restored = true;
                 }
             }
-            Step::FailOpen => self.gpu.fail_next = true,
+            Step::FailOpen => self.viewer.screen_mut().fail_next = true,
             Step::HangDrawing => self.drawing_hung = true,
             Step::Fallback { frames } => {
                 if self.moving.is_none() {
@@ -655,7 +731,7 @@ impl Page {
     fn check(&self) -> Result<(), Failure> {
         if self.to_viewer.is_empty()
             && let (Some((preset, spec)), Some(shell)) =
-                (self.session.current(), self.state.shell())
+                (self.session.current(), self.viewer.state().shell())
             && (shell.preset().id != preset.id || !shell.spec().grows_like(spec))
         {
             return Err(format!(
@@ -692,7 +768,7 @@ impl Page {
         let deadline = self.now + 20.0 * 60_000.0;
         let mut finished = false;
         loop {
-            if self.gpu.gone {
+            if self.gone {
                 // The page said why it draws no more.
                 return Ok(());
             }
@@ -723,7 +799,7 @@ impl Page {
             self.check()?;
         }
         let (preset, spec) = self.session.current().ok_or("no shell")?;
-        let shell = self.state.shell().ok_or("the viewer shows no shell")?;
+        let shell = (self.viewer.state().shell()).ok_or("the viewer shows no shell")?;
         let replica = shell.replica();
         let (mesh, pattern) = reference(preset, spec);
         if replica.mesh_hash() != Some(mesh) || replica.pattern_hash() != pattern {
@@ -750,10 +826,10 @@ impl Page {
                 return Err(format!("\"{failure}\" was said {times} times"));
             }
         }
-        if self.uploaded != Some(replica.rows_done()) {
+        let uploaded = self.viewer.screen().uploaded;
+        if uploaded != Some(replica.rows_done()) {
             return Err(format!(
-                "the renderer holds {:?} rows of the {} grown",
-                self.uploaded,
+                "the renderer holds {uploaded:?} rows of the {} grown",
                 replica.rows_done()
             ));
         }
@@ -863,7 +939,7 @@ fn run(workers: usize, steps: &[Step]) -> Result<Went, Failure> {
     }
     page.settle().map_err(|e| format!("settling: {e}"))?;
     Ok(Went {
-        reopened: page.gpu.reopened,
+        reopened: page.viewer.screen().reopened,
         replaced: page.workers.pool.deaths(),
         moved: page.viewers,
     })

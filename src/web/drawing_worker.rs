@@ -205,60 +205,43 @@ fn pool_news(workers: &Workers, deaths: usize, words: Option<String>) -> ViewerN
     })
 }
 
-/// One frame of the worker: keeps the device, takes in the pool's replies, runs the viewer's
-/// frame, posts the news. Returns whether the loop goes on.
+/// One frame of the worker ([`Viewer::tick`]): posts the news of its device, its pool, a
+/// shell refused and the frame. Returns whether the loop goes on.
 fn frame(run: &mut Running) -> bool {
-    let device = run.viewer.survive();
-    let ready = matches!(device, Device::Ready | Device::Reopened(_));
-    if !ready {
-        post(
-            &ViewerNews::Frame {
-                device: device.clone(),
-                report: None,
-                recorded: None,
-            },
-            None,
-        );
-        return !matches!(device, Device::Gone(_));
-    }
-    let polled = run.workers.borrow_mut().poll();
-    if let Some(replaced) = &polled.replaced {
+    let tick = run.viewer.tick();
+    if let Some(replaced) = &tick.replaced {
         post(
             &pool_news(&run.workers.borrow(), replaced.deaths, replaced.words()),
             None,
         );
     }
-    if let Err(message) = run.viewer.take_all(polled.replies, polled.sessions_lost) {
+    if let Some(why) = tick.refused {
         let loads = Some(run.viewer.loads());
-        post(
-            &ViewerNews::Refused {
-                loads,
-                why: message,
-            },
-            None,
-        );
+        post(&ViewerNews::Refused { loads, why }, None);
     }
-    let frame = run.viewer.run_frame();
-    run.workers.borrow_mut().send();
-    let frame = match frame {
-        Ok(frame) => frame,
-        Err(failure) => {
+    let (report, recorded, video) = match tick.frame {
+        None => (None, None, None),
+        Some(Err(failure)) => {
             post(&ViewerNews::Failed(failure), None);
             return false;
         }
+        Some(Ok(frame)) => {
+            let (recorded, video) = match frame.recorded {
+                Some(Ok(video)) => (Some(Ok(())), Some(JsValue::from(video))),
+                Some(Err(e)) => (Some(Err(e)), None),
+                None => (None, None),
+            };
+            (Some(Box::new(frame.report)), recorded, video)
+        }
     };
-    let (recorded, video) = match frame.recorded {
-        Some(Ok(video)) => (Some(Ok(())), Some(JsValue::from(video))),
-        Some(Err(e)) => (Some(Err(e)), None),
-        None => (None, None),
-    };
+    let gone = matches!(tick.device, Device::Gone(_));
     post(
         &ViewerNews::Frame {
-            device,
-            report: Some(Box::new(frame.report)),
+            device: tick.device,
+            report,
             recorded,
         },
         video.as_ref(),
     );
-    true
+    !gone
 }

@@ -20,6 +20,7 @@ use crate::work::message::WholeShell;
 use crate::work::picture_queue::{PictureQueue, Place, Wanted};
 use crate::work::recent_pictures::RecentPictures;
 use crate::work::viewer_command::ViewCommand;
+use crate::work::viewer_driver::PoolWorkers;
 use crate::work::viewer_status::Device;
 use std::cell::RefCell;
 use std::rc::Rc;

@@ -18,7 +18,6 @@ mod page;
 mod panel;
 mod planar;
 mod record;
-mod recovery;
 mod scope;
 mod share_panel;
 mod shown_size;

@@ -23,6 +23,7 @@ use crate::work::message::{Request, decode_reply, encode_request};
 use crate::work::pool::{
     Faults, Polled, Pool, PoolPlan, Replaced, SESSIONS, WorkerEvent, given_up_status, local_status,
 };
+use crate::work::viewer_driver::PoolWorkers;
 use js_sys::{Array, Uint8Array};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -160,20 +161,6 @@ impl Workers {
         &self.status
     }
 
-    /// The least milliseconds one request grows the shell for: none on the page's thread (a
-    /// frame's budget), the plan's least growth on a worker ([`PoolPlan`]).
-    pub fn min_growth_ms(&self) -> f64 {
-        match self.backend {
-            Backend::Local(_) => 0.0,
-            Backend::Workers { .. } => self.worker_growth_ms,
-        }
-    }
-
-    /// The pool the requests wait in, for the core's rules to submit to.
-    pub fn pool(&mut self) -> &mut Pool {
-        &mut self.pool
-    }
-
     /// Asks for `request` (sent in the next [`Self::poll`]).
     pub fn submit(&mut self, request: Request) {
         self.pool.submit(request);
@@ -184,39 +171,24 @@ impl Workers {
         self.pool.cancel(drop);
     }
 
-    /// Sends what waits: called at the end of each frame, so that a request asked in a frame
-    /// is worked on while the page waits for the next, not a frame later.
-    pub fn send(&mut self) {
-        let sends = self.pool.dispatch(now());
-        match &mut self.backend {
-            Backend::Local(host) => {
-                for send in sends {
-                    host.push(send.ticket, send.request);
-                }
-            }
-            Backend::Workers { slots, .. } => {
-                for send in sends {
-                    let fill = matches!(send.request, Request::Fill { .. });
-                    let bytes = if fill && debug::crash_on_fill_asked() {
-                        // Bytes no worker can read: it throws, as a worker that fails would.
-                        Vec::new()
-                    } else {
-                        encode_request(send.ticket, &send.request)
-                    };
-                    let buffer = Uint8Array::from(&bytes[..]).buffer();
-                    let transfer = Array::of1(&buffer);
-                    // A worker that cannot take a message is found out by its silence.
-                    let _ = slots[send.slot]
-                        .worker
-                        .post_message_with_transfer(&buffer, &transfer);
-                }
-            }
-        }
+    /// Workers cannot run here: the pool's owner's thread takes their work (a frame's budget
+    /// at a time); the pool has handed back the sessions they held, to be grown again there.
+    fn run_here(&mut self, polled: &mut Polled, why: String) {
+        self.backend = Backend::Local(Box::default());
+        self.worker_growth_ms = self.budget_ms;
+        self.status = given_up_status(scope::thread_name(), &why);
+        polled.replaced = Some(Replaced {
+            deaths: self.pool.deaths(),
+            why,
+            given_up: Some(self.status.clone()),
+        });
     }
+}
 
+impl PoolWorkers for Workers {
     /// Sends what waits, replaces workers that died or hang, and returns what came back, as
     /// the pool's rules take its workers' events in ([`Pool::take_events`]).
-    pub fn poll(&mut self) -> Polled {
+    fn poll(&mut self) -> Polled {
         self.send();
         let Self {
             pool,
@@ -262,16 +234,47 @@ impl Workers {
         polled
     }
 
-    /// Workers cannot run here: the pool's owner's thread takes their work (a frame's budget
-    /// at a time); the pool has handed back the sessions they held, to be grown again there.
-    fn run_here(&mut self, polled: &mut Polled, why: String) {
-        self.backend = Backend::Local(Box::default());
-        self.worker_growth_ms = self.budget_ms;
-        self.status = given_up_status(scope::thread_name(), &why);
-        polled.replaced = Some(Replaced {
-            deaths: self.pool.deaths(),
-            why,
-            given_up: Some(self.status.clone()),
-        });
+    /// The least milliseconds one request grows the shell for: none on the page's thread (a
+    /// frame's budget), the plan's least growth on a worker ([`PoolPlan`]).
+    fn min_growth_ms(&self) -> f64 {
+        match self.backend {
+            Backend::Local(_) => 0.0,
+            Backend::Workers { .. } => self.worker_growth_ms,
+        }
+    }
+
+    /// The pool the requests wait in, for the core's rules to submit to.
+    fn pool(&mut self) -> &mut Pool {
+        &mut self.pool
+    }
+
+    /// Sends what waits: called at the end of each frame, so that a request asked in a frame
+    /// is worked on while the page waits for the next, not a frame later.
+    fn send(&mut self) {
+        let sends = self.pool.dispatch(now());
+        match &mut self.backend {
+            Backend::Local(host) => {
+                for send in sends {
+                    host.push(send.ticket, send.request);
+                }
+            }
+            Backend::Workers { slots, .. } => {
+                for send in sends {
+                    let fill = matches!(send.request, Request::Fill { .. });
+                    let bytes = if fill && debug::crash_on_fill_asked() {
+                        // Bytes no worker can read: it throws, as a worker that fails would.
+                        Vec::new()
+                    } else {
+                        encode_request(send.ticket, &send.request)
+                    };
+                    let buffer = Uint8Array::from(&bytes[..]).buffer();
+                    let transfer = Array::of1(&buffer);
+                    // A worker that cannot take a message is found out by its silence.
+                    let _ = slots[send.slot]
+                        .worker
+                        .post_message_with_transfer(&buffer, &transfer);
+                }
+            }
+        }
     }
 }

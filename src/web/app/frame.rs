@@ -8,6 +8,7 @@ use crate::web::clock::now;
 use crate::web::page::{set_text, show_message, signal};
 use crate::work::message::{Reply, Request};
 use crate::work::session::{FrameTask, Heard};
+use crate::work::viewer_driver::PoolWorkers;
 use crate::work::viewer_inbox::Taken;
 use crate::work::viewer_message::PoolNews;
 

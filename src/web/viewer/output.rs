@@ -1,12 +1,13 @@
 //! What a viewer gives besides the screen: pictures of the shell (a gallery card, the file
-//! offered), the files written where its copy of the shell is, and a recording's frames.
+//! offered) and the files written where its copy of the shell is.
 
-use super::{NO_DRAWING, Viewer};
-use crate::view::recording::FrameAsk;
+use super::Viewer;
 use crate::web::canvases::{object_url, png};
 use crate::web::clock::now;
-use crate::web::webcodecs::{self, VideoFrame};
 use crate::work::file_writer::{FileStage, Needs};
+use crate::work::screen::Screen;
+use crate::work::viewer_driver::NO_DRAWING;
+use crate::work::viewer_driver::PoolWorkers;
 use crate::work::viewer_state::Growing;
 use std::rc::Rc;
 
@@ -18,11 +19,11 @@ impl Viewer {
         pixels: u32,
         multisampled: bool,
     ) -> Result<js_sys::Promise, String> {
-        if let Some(d) = &mut self.drawing {
-            if d.canvas.size() != (pixels, pixels) {
-                d.canvas.set_size((pixels, pixels));
-                d.renderer.resize(pixels, pixels);
-            }
+        let screen = self.driver.screen_mut();
+        if screen.size() != (pixels, pixels) {
+            screen.resize((pixels, pixels));
+        }
+        if let Some(d) = &mut screen.drawing {
             d.renderer.multisample(multisampled);
         }
         self.picture()
@@ -31,14 +32,15 @@ impl Viewer {
     /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
     /// browser clears the drawing).
     pub fn picture(&mut self) -> Result<js_sys::Promise, String> {
-        let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
+        let (state, screen) = self.driver.parts();
+        let d = screen.drawing.as_mut().ok_or(NO_DRAWING)?;
         if let Some(loss) = d.renderer.lost() {
             return Err(format!("the graphics device was lost ({})", loss.reason));
         }
-        let Some(g) = self.state.shell() else {
+        let Some(g) = state.shell() else {
             return Err("nothing is drawn yet".into());
         };
-        d.draw(g, self.state.layout())?;
+        d.draw(g, state.layout())?;
         png(&d.canvas)
     }
 
@@ -52,15 +54,12 @@ impl Viewer {
         if self.writer.busy() {
             return;
         }
-        let source = self.state.shell().map(Growing::source);
+        let source = self.driver.state().shell().map(Growing::source);
         match self.writer.start(what, size, source) {
             Needs::Nothing => {}
             Needs::Finish => {
-                {
-                    let mut workers = self.workers.borrow_mut();
-                    self.state.finish(workers.pool());
-                }
-                self.apply_screen();
+                let mut workers = self.workers.borrow_mut();
+                self.driver.finish(workers.pool());
             }
             Needs::Picture => {
                 let slot = Rc::clone(&self.picture_read);
@@ -83,22 +82,6 @@ impl Viewer {
             self.writer.picture_taken(read);
         }
         self.writer
-            .work(self.state.shell().map(Growing::source), &now)
-    }
-
-    /// Draws the frame `ask` asks for (the core state posed the camera for it) and reads it
-    /// as a video frame.
-    pub(super) fn draw_recorded(&mut self, ask: &FrameAsk) -> Result<VideoFrame, String> {
-        self.fit_canvas();
-        let g = self.state.shell().ok_or("no shell is loaded")?;
-        let d = self.drawing.as_mut().ok_or(NO_DRAWING)?;
-        d.draw(g, self.state.layout())?;
-        self.state.recorded(now());
-        let init = webcodecs::object(&[
-            ("timestamp", (ask.timestamp_us as f64).into()),
-            ("duration", (ask.duration_us as f64).into()),
-        ]);
-        VideoFrame::new(d.canvas.as_js(), &init)
-            .map_err(|e| format!("the canvas could not be read ({})", webcodecs::describe(&e)))
+            .work(self.driver.state().shell().map(Growing::source), &now)
     }
 }
