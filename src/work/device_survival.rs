@@ -4,9 +4,10 @@
 //! same canvas when its context can still be had (WebGPU's, or a WebGL context the browser
 //! gave back), else — or when that fails: WebGPU gone for good leaves only WebGL2, which a
 //! canvas that once had a WebGPU context cannot give — on a fresh canvas the page makes; when
-//! that fails too, the device is gone for good, said once with both reasons. The web runner
-//! (`web/recovery.rs`, `web/viewer/`) opens what this asks for and reports the answers; the
-//! simulator (`tests/simulator.rs`) loses and restores devices in any order against it.
+//! that fails too, the device is gone for good, said once with both reasons. A viewer
+//! follows it through [`super::viewer_driver::ViewerDriver::survive`]: its screen
+//! (`web/viewer/screen.rs`) opens what this asks for and reports the answers; the simulator
+//! (`tests/simulator.rs`) loses and restores devices in any order against the same driver.
 
 use super::viewer_status::Device;
 

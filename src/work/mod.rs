@@ -10,7 +10,9 @@
 //! reads of it are plain data ([`viewer_command::ViewCommand`], [`viewer_status::ViewStatus`],
 //! [`planar_update::PlanarUpdate`]), and what the page shows of that status is decided here
 //! too ([`status_readout::Readout`]). What a viewer decides without its canvas is its core
-//! state, [`viewer_state::ViewerState`]: the web runner only applies it.
+//! state, [`viewer_state::ViewerState`], driven frame by frame onto a
+//! [`screen::Screen`] by [`viewer_driver::ViewerDriver`]: the web runner only gives it the
+//! renderer.
 
 pub mod device_survival;
 pub mod download_menu;
