@@ -8,6 +8,7 @@ pub mod export;
 mod fnv;
 pub mod forms;
 pub mod generator;
+pub mod markup;
 pub mod mesh;
 pub mod papers;
 pub mod pattern;

@@ -26,6 +26,7 @@ mod implicit;
 mod implicit_whorl;
 mod layers;
 mod link;
+mod markup;
 mod murex;
 mod murex_opening;
 mod murex_resolutions;

@@ -1,6 +1,7 @@
 //! A few helpers for building the page's elements from Rust (text only, never HTML).
 
 use super::page::document;
+use crate::markup;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlElement};
 
@@ -43,4 +44,16 @@ pub fn append(parent: &Element, children: &[&Element]) {
 /// Removes every child.
 pub fn clear(e: &Element) {
     e.set_text_content(None);
+}
+
+/// Appends the elements `markup` describes to `parent`.
+pub fn build(parent: &Element, markup: &[markup::Element]) {
+    for m in markup {
+        let e = create(m.tag, m.class, m.text.as_deref());
+        for (name, value) in &m.attributes {
+            attr(&e, name, value);
+        }
+        build(&e, &m.children);
+        append(parent, &[&e]);
+    }
 }

@@ -1,21 +1,15 @@
-//! The gallery: the stories of species/stories/, each a card with its title, its steps and a
-//! line about it; then every preset in species/, grouped by where it comes from, each a card
-//! with its name, the figure it reproduces, a line of description and a picture of the shell. The cards
-//! are plain links to the preset's fragment, so the browser's history does the navigation; the
-//! shells are grown whole by the pool of workers and drawn by a second viewer on a small canvas
-//! laid out off the screen as they come, each card's picture a PNG read back from it.
+//! The gallery's pictures (its cards are the core's, [`crate::markup::gallery`]): the
+//! shells are grown whole by the pool of workers and drawn by a second viewer on a small
+//! canvas laid out off the screen as they come, each card's picture a PNG read back from it.
 
 use super::canvases::{object_url, replace};
 use super::clock::now;
 use super::debug::Loss;
-use super::dom::{append, attr, create, typed};
 use super::viewer::Viewer;
 use super::workers::Workers;
-use crate::presets::{Preset, presets};
+use crate::presets::Preset;
 use crate::render::Canvas;
-use crate::share::link;
 use crate::spec::ShellSpec;
-use crate::stories::stories;
 use crate::work::message::WholeShell;
 use crate::work::picture_queue::{PictureQueue, Place, Wanted};
 use crate::work::recent_pictures::RecentPictures;
@@ -24,58 +18,7 @@ use crate::work::viewer_driver::PoolWorkers;
 use crate::work::viewer_status::Device;
 use std::cell::RefCell;
 use std::rc::Rc;
-use web_sys::{Element, HtmlImageElement};
-
-/// Fills `container` with the stories, then one section per group and one card per preset.
-pub fn build(container: &Element) {
-    let section = create("section", "group stories", None);
-    let heading = create("h2", "", Some("Stories"));
-    let cards = create("div", "cards", None);
-    append(&section, &[&heading, &cards]);
-    append(container, &[&section]);
-    for story in stories() {
-        let card = create("a", "story-card", None);
-        attr(&card, "href", &format!("#story={}", story.id));
-        attr(&card, "data-story", story.id);
-        let title = create("h3", "", Some(&story.title));
-        let steps = create("p", "source", Some(&format!("{} steps", story.steps.len())));
-        let summary = create("p", "description", Some(&story.summary));
-        append(&card, &[&title, &steps, &summary]);
-        append(&cards, &[&card]);
-    }
-    let mut group = None;
-    let mut grid: Option<Element> = None;
-    for preset in presets() {
-        if group != Some(preset.group) {
-            group = Some(preset.group);
-            let section = create("section", "group", None);
-            let heading = create("h2", "", Some(preset.group.title()));
-            let cards = create("div", "cards", None);
-            append(&section, &[&heading, &cards]);
-            append(container, &[&section]);
-            grid = Some(cards.into());
-        }
-        let card = create("a", "card", None);
-        attr(
-            &card,
-            "href",
-            &format!("#{}", link::encode(preset, &preset.spec)),
-        );
-        attr(&card, "data-preset", preset.id);
-        let picture: HtmlImageElement = typed("img", "picture");
-        attr(&picture, "data-picture", preset.id);
-        picture.set_alt(&format!("{}, grown from the model", preset.name));
-        picture.set_width(256);
-        picture.set_height(256);
-        let name = create("h3", "", Some(&preset.name));
-        let source = create("p", "source", Some(&preset.source));
-        let description = create("p", "description", Some(&preset.description));
-        append(&card, &[&picture, &name, &source, &description]);
-        if let Some(g) = &grid {
-            append(g, &[&card]);
-        }
-    }
-}
+use web_sys::HtmlImageElement;
 
 /// The `img`s a picture of `preset` for `place` is shown in: a card's, and the figures'
 /// section's beside it.

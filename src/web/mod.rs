@@ -10,7 +10,6 @@ mod debug;
 mod dom;
 mod download;
 mod drawing_worker;
-mod figures;
 mod gallery;
 mod listen;
 mod map;
@@ -72,10 +71,10 @@ pub fn preset_pattern(id: &str) -> Option<String> {
 pub async fn start() -> Result<(), JsValue> {
     signal_loading();
     if let Some(groups) = page::element("gallery-groups") {
-        gallery::build(&groups);
+        dom::build(&groups, &crate::markup::gallery());
     }
     if let Some(list) = page::element("figures-list") {
-        figures::build(&list);
+        dom::build(&list, &crate::markup::figures());
     }
     let background = page::background();
     let workers = workers::Workers::start(crate::generator::GROWTH_BUDGET_MS);

@@ -1,0 +1,123 @@
+//! The page's fixed sections as the core builds them (`seashells_core::markup`): every card
+//! and every link of the gallery and of the papers' figures leads where it says, read here
+//! without a browser.
+
+use seashells_core::markup::{Element, figures, gallery};
+use seashells_core::papers::papers;
+use seashells_core::presets::presets;
+use seashells_core::share::link;
+use seashells_core::stories::{stories, story};
+
+/// Every element of `sections` of `class`.
+fn of_class<'a>(sections: &'a [Element], class: &str) -> Vec<&'a Element> {
+    (sections.iter())
+        .flat_map(Element::all)
+        .filter(|e| e.class == class)
+        .collect()
+}
+
+/// The fragment a link element leads to.
+fn href(e: &Element) -> &str {
+    e.get("href").expect("a link has an address")
+}
+
+/// Asserts that `a` leads to `id`'s preset as it stands in species/, read as a link is.
+fn leads_to_preset(a: &Element, id: &str) {
+    let decoded = link::decode(href(a));
+    assert!(decoded.problems.is_empty(), "{id}: {:?}", decoded.problems);
+    assert_eq!(decoded.preset.id, id);
+    assert_eq!(
+        decoded.spec, decoded.preset.spec,
+        "{id}: the preset's own values"
+    );
+}
+
+#[test]
+fn every_preset_has_one_card_leading_to_it_under_its_group() {
+    let sections = gallery();
+    let cards = of_class(&sections, "card");
+    assert_eq!(cards.len(), presets().len());
+    for preset in presets() {
+        let card = (cards.iter())
+            .find(|c| c.get("data-preset") == Some(preset.id))
+            .unwrap_or_else(|| panic!("no card for {}", preset.id));
+        leads_to_preset(card, preset.id);
+        let picture = &card.children[0];
+        assert_eq!(picture.tag, "img");
+        assert_eq!(picture.get("data-picture"), Some(preset.id));
+        assert!(picture.get("alt").is_some_and(|a| a.contains(&preset.name)));
+        let texts: Vec<&String> = card
+            .children
+            .iter()
+            .filter_map(|c| c.text.as_ref())
+            .collect();
+        assert_eq!(
+            texts,
+            [&preset.name, &preset.source, &preset.description],
+            "{}",
+            preset.id
+        );
+        let section = (sections.iter())
+            .find(|s| s.all().iter().any(|e| std::ptr::eq(*e, *card)))
+            .expect("a card is in a section");
+        assert_eq!(
+            section.children[0].text.as_deref(),
+            Some(preset.group.title())
+        );
+    }
+    let titles: Vec<_> = sections.iter().map(|s| &s.children[0].text).collect();
+    for (i, title) in titles.iter().enumerate() {
+        assert!(!titles[..i].contains(title), "{title:?} heads two sections");
+    }
+}
+
+#[test]
+fn every_story_has_a_card_that_opens_it() {
+    let sections = gallery();
+    assert_eq!(sections[0].children[0].text.as_deref(), Some("Stories"));
+    let cards = of_class(&sections, "story-card");
+    assert_eq!(cards.len(), stories().len());
+    for card in cards {
+        let id = href(card).strip_prefix("#story=").expect("a story's link");
+        let found = story(id).expect("the story exists");
+        assert_eq!(card.get("data-story"), Some(found.id));
+        assert_eq!(card.children[0].text.as_deref(), Some(found.title.as_str()));
+    }
+}
+
+#[test]
+fn every_figure_of_every_paper_is_listed_once_with_what_shows_it_or_why_not() {
+    let sections = figures();
+    assert_eq!(sections.len(), papers().len());
+    for (section, paper) in sections.iter().zip(papers()) {
+        assert_eq!(
+            section.children[0].text.as_deref(),
+            Some(paper.source.as_str())
+        );
+        let listed = of_class(std::slice::from_ref(section), "figure");
+        assert_eq!(listed.len(), paper.shown().len(), "{}", paper.source);
+        for (item, shown) in listed.iter().zip(paper.shown()) {
+            let number = shown.figure.number.to_string();
+            assert_eq!(item.get("data-figure"), Some(number.as_str()));
+            let ours = &item.children[2];
+            let shells: Vec<_> = (ours.children.iter())
+                .filter(|e| e.class == "ours-shell")
+                .collect();
+            assert_eq!(shells.len(), shown.presets.len());
+            for (a, preset) in shells.iter().zip(&shown.presets) {
+                leads_to_preset(a, preset.id);
+            }
+            let steps = ours.children.iter().filter(|e| e.class == "ours-step");
+            for (a, (story, index)) in steps.zip(&shown.steps) {
+                let step = format!("#story={}&step={}", story.id, index + 1);
+                assert_eq!(href(a), step);
+            }
+            let why_not = ours.children.iter().any(|e| e.class == "why-not");
+            assert_eq!(why_not, shown.figure.why_not.is_some(), "fig. {number}");
+            assert!(
+                !ours.children.is_empty(),
+                "fig. {number} shows something or says why not"
+            );
+        }
+    }
+}
