@@ -1,12 +1,15 @@
-//! The page's fixed sections as the core builds them (`seashells_core::markup`): every card
-//! and every link of the gallery and of the papers' figures leads where it says, read here
-//! without a browser.
+//! The page's elements as the core builds them (`seashells_core::markup`): every card and
+//! every link of the gallery and of the papers' figures leads where it says, and every field
+//! of the panel has one labelled control of its kind, read here without a browser.
 
-use seashells_core::markup::{Element, figures, gallery};
+use seashells_core::markup::{Element, field_id, field_options, figures, gallery, panel};
 use seashells_core::papers::papers;
 use seashells_core::presets::presets;
 use seashells_core::share::link;
 use seashells_core::stories::{stories, story};
+use seashells_core::variation::parameter_map::parameters;
+use seashells_core::work::panel_controls::{Control, control, panel_fields};
+use std::collections::HashSet;
 
 /// Every element of `sections` of `class`.
 fn of_class<'a>(sections: &'a [Element], class: &str) -> Vec<&'a Element> {
@@ -117,6 +120,104 @@ fn every_figure_of_every_paper_is_listed_once_with_what_shows_it_or_why_not() {
             assert!(
                 !ours.children.is_empty(),
                 "fig. {number} shows something or says why not"
+            );
+        }
+    }
+}
+
+#[test]
+fn every_field_of_every_preset_has_one_labelled_control_of_its_kind() {
+    for preset in presets() {
+        let (fields, _) = panel_fields(&preset.spec);
+        let groups = panel(&fields);
+        let rows = of_class(&groups, "field");
+        assert_eq!(rows.len(), fields.len(), "{}", preset.id);
+        let mut ids = HashSet::new();
+        for (row, field) in rows.iter().zip(&fields) {
+            assert_eq!(row.get("data-key"), Some(field.key));
+            let id = field_id(field.key);
+            let label = &row.children[0];
+            assert_eq!(label.tag, "label");
+            assert_eq!(label.get("for"), Some(id.as_str()));
+            assert_eq!(label.text.as_deref(), Some(field.label().as_str()));
+            let with_id: Vec<_> = (row.all().into_iter())
+                .filter(|e| e.get("id").is_some())
+                .collect();
+            assert_eq!(
+                with_id.len(),
+                1,
+                "{}: one control holds the value",
+                field.key
+            );
+            let held = with_id[0];
+            assert_eq!(held.get("id"), Some(id.as_str()));
+            assert!(
+                ids.insert(id.clone()),
+                "{id} twice in {}'s panel",
+                preset.id
+            );
+            match control(field) {
+                Control::Slider {
+                    lo, hi, positions, ..
+                } => {
+                    let range = &row.children[1];
+                    assert_eq!(range.get("type"), Some("range"));
+                    assert_eq!(range.get("max"), Some(positions.to_string().as_str()));
+                    assert_eq!(held.get("type"), Some("number"));
+                    let bound = |k| held.get(k).and_then(|v| v.parse::<f64>().ok());
+                    assert_eq!((bound("min"), bound("max")), (Some(lo), Some(hi)));
+                }
+                Control::Check => assert_eq!(held.get("type"), Some("checkbox")),
+                Control::Colour => assert_eq!(held.get("type"), Some("color")),
+                Control::Text => assert_eq!(held.get("type"), Some("text")),
+                Control::Choice(options) => {
+                    assert_eq!(held.tag, "select");
+                    let offered: Vec<_> = held
+                        .children
+                        .iter()
+                        .filter_map(|o| o.get("value"))
+                        .collect();
+                    assert_eq!(offered, options, "{}", field.key);
+                }
+            }
+        }
+        let sections: Vec<_> = groups.iter().map(|g| g.children[0].text.clone()).collect();
+        for (i, section) in sections.iter().enumerate() {
+            assert!(
+                !sections[..i].contains(section),
+                "{section:?} twice in {}",
+                preset.id
+            );
+        }
+    }
+}
+
+#[test]
+fn the_map_offers_every_parameter_once_under_its_section() {
+    for preset in presets() {
+        let fields: Vec<_> = parameters(&preset.spec)
+            .into_iter()
+            .map(|(f, _)| f)
+            .collect();
+        let groups = field_options(fields.iter().copied());
+        let offered: Vec<(&str, &str)> = (groups.iter())
+            .flat_map(|g| {
+                let section = g.get("label").expect("a group is labelled");
+                g.children
+                    .iter()
+                    .map(move |o| (section, o.get("value").expect("a value")))
+            })
+            .collect();
+        let expected: Vec<_> = (fields.iter())
+            .map(|f| (f.section.title(), f.key))
+            .collect();
+        assert_eq!(offered, expected, "{}", preset.id);
+        let sections: Vec<_> = groups.iter().map(|g| g.get("label")).collect();
+        for (i, section) in sections.iter().enumerate() {
+            assert!(
+                !sections[..i].contains(section),
+                "{section:?} twice for {}",
+                preset.id
             );
         }
     }

@@ -1,12 +1,15 @@
-//! The page's fixed sections as data: the gallery's cards ([`gallery`]) and the papers'
-//! figures beside ours ([`figures`]), built here from the presets, the stories and the papers
-//! so that a native test reads every card and link; the web adapter (`web/dom.rs`) only turns
-//! an [`Element`] into the page's. Text only, never HTML.
+//! The page's elements as data: the gallery's cards ([`gallery`]), the papers' figures beside
+//! ours ([`figures`]) and the parameter panel's rows ([`panel`]), built here from the presets,
+//! the stories, the papers and the field table so that a native test reads every card, link
+//! and control; the web adapter (`web/dom.rs`) only turns an [`Element`] into the page's, and
+//! wires the controls. Text only, never HTML.
 
 mod element;
 mod figures;
 mod gallery;
+mod panel;
 
 pub use element::Element;
 pub use figures::figures;
 pub use gallery::gallery;
+pub use panel::{field_id, field_options, panel};

@@ -5,14 +5,15 @@
 //! form it is the whole shell, grown and drawn as a gallery card's picture is.
 
 use super::debug;
-use super::dom::{append, attr, clear, create, typed};
+use super::dom::{append, attr, build, clear, create};
 use super::gallery::Pictures;
 use super::page::{element, element_as, set_text, signal};
 use super::tile_grid::{Shows, TileGrid, signal_filled};
 use super::workers::Workers;
+use crate::markup;
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
-use crate::spec::fields::{Field, Section, display};
+use crate::spec::fields::{Field, display};
 use crate::stories::MapAxes;
 use crate::variation::map_plan::{self, MapPlan};
 use crate::variation::parameter_map::{
@@ -20,7 +21,7 @@ use crate::variation::parameter_map::{
 };
 use crate::variation::tile::Picture;
 use crate::work::message::Request;
-use web_sys::{Element, HtmlInputElement, HtmlOptionElement, HtmlSelectElement};
+use web_sys::{HtmlInputElement, HtmlSelectElement};
 
 /// The controls of one axis: the parameter, and its range.
 struct AxisControls {
@@ -42,21 +43,10 @@ impl AxisControls {
     /// spread around its value.
     fn offer(&self, kind: &str, parameters: &[(&'static Field, f64)], chosen: usize) {
         clear(&self.select);
-        let mut group: Option<(Section, Element)> = None;
-        for (field, _) in parameters {
-            if group.as_ref().is_none_or(|(s, _)| *s != field.section) {
-                let optgroup = create("optgroup", "", None);
-                attr(&optgroup, "label", field.section.title());
-                append(&self.select, &[&optgroup]);
-                group = Some((field.section, optgroup.into()));
-            }
-            let option: HtmlOptionElement = typed("option", "");
-            option.set_value(field.key);
-            option.set_text(&field.label());
-            if let Some((_, g)) = &group {
-                append(g, &[&option]);
-            }
-        }
+        build(
+            &self.select,
+            &markup::field_options(parameters.iter().map(|(f, _)| *f)),
+        );
         if let Some((field, _)) = parameters.get(chosen) {
             self.select.set_value(field.key);
         }
