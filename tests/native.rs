@@ -33,6 +33,7 @@ mod murex_resolutions;
 mod parameter_map;
 mod pattern;
 mod picture_mesh;
+mod pictures;
 mod simulated_workers;
 mod simulator;
 mod species;

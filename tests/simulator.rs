@@ -255,6 +255,7 @@ impl SimScreen {
 
 impl Screen for SimScreen {
     type Video = VideoFrame;
+    type Picture = ();
     type Canvas = ();
 
     fn backend(&self) -> Option<&'static str> {
@@ -349,6 +350,12 @@ impl Screen for SimScreen {
     }
 
     fn release(&mut self, _: VideoFrame) {}
+
+    fn multisample(&mut self, _: bool) {}
+
+    fn picture(&mut self) -> Result<(), String> {
+        Ok(())
+    }
 }
 
 /// The drawing worker's viewer, freshly opened at `now`, on a screen that has opened

@@ -5,17 +5,17 @@
 use super::canvases::{object_url, replace};
 use super::clock::now;
 use super::debug::Loss;
-use super::viewer::Viewer;
+use super::viewer::WebScreen;
 use super::workers::Workers;
 use crate::presets::Preset;
 use crate::render::Canvas;
 use crate::spec::ShellSpec;
 use crate::work::message::WholeShell;
-use crate::work::picture_queue::{PictureQueue, Place, Wanted};
+use crate::work::picture_drawer::PictureDrawer;
+use crate::work::picture_queue::{PictureQueue, Place};
 use crate::work::recent_pictures::RecentPictures;
-use crate::work::viewer_command::ViewCommand;
+use crate::work::screen::Screen;
 use crate::work::viewer_driver::PoolWorkers;
-use crate::work::viewer_status::Device;
 use std::cell::RefCell;
 use std::rc::Rc;
 use web_sys::HtmlImageElement;
@@ -52,34 +52,26 @@ fn release(url: Option<String>) {
     }
 }
 
-/// Draws the gallery's and the shape map's pictures: each shell is grown whole by a worker of
-/// the pool (all at once, shared among them), and drawn here by a viewer of its own as its
-/// answer comes, in the order and with the care the core's [`PictureQueue`] decides.
+/// Draws the gallery's and the shape map's pictures as the core's [`PictureDrawer`] decides,
+/// and shows each in the images that wait for it.
 pub struct Pictures {
-    viewer: Viewer,
-    queue: PictureQueue,
+    drawer: PictureDrawer<WebScreen>,
     /// The object URLs of tiles' pictures drawn lately, by link.
     drawn: Rc<RefCell<RecentPictures<String>>>,
 }
 
 impl Pictures {
-    /// Pictures drawn by `viewer` (none where it draws nothing).
-    pub fn new(viewer: Viewer) -> Self {
-        let queue = if viewer.backend().is_some() {
-            PictureQueue::of_cards()
-        } else {
-            PictureQueue::default()
-        };
+    /// Pictures drawn on `screen` (none where it draws nothing).
+    pub fn new(screen: WebScreen) -> Self {
         Self {
-            viewer,
-            queue,
+            drawer: PictureDrawer::new(screen, now()),
             drawn: Rc::default(),
         }
     }
 
     /// Asks the pool for the cards' pictures not drawn yet (once while the gallery is shown).
     pub fn ask(&mut self, workers: &mut Workers) {
-        self.queue.ask_cards(workers.pool());
+        self.drawer.queue_mut().ask_cards(workers.pool());
     }
 
     /// Asks the pool for the picture of tile `job` (`small`: one of many), the shell `spec`;
@@ -101,15 +93,14 @@ impl Pictures {
             return true;
         }
         drop(drawn);
-        self.queue
-            .ask_tile(job, small, preset, picture, workers.pool(), now());
+        (self.drawer.queue_mut()).ask_tile(job, small, preset, picture, workers.pool(), now());
         false
     }
 
     /// Seconds a tile's picture (`small`: a map's) took over the last set of such tiles drawn
     /// whole: how slow this machine draws shells ([`PictureQueue::pace`]).
     pub fn pace(&self, small: bool) -> Option<f64> {
-        self.queue.pace(small)
+        self.drawer.queue().pace(small)
     }
 
     /// Whether the picture of a tile of `spec` (a variant of `preset`) was drawn lately, and
@@ -121,66 +112,39 @@ impl Pictures {
 
     /// Takes `seconds` as the pace of this machine (a test's slow machine).
     pub fn assume_pace(&mut self, seconds: f64) {
-        self.queue.assume_pace(seconds);
-    }
-
-    /// A picture that may have been drawn blank by a lost device is forgotten, to be drawn
-    /// again.
-    fn forget(&self, wanted: &Wanted) {
-        release(self.drawn.borrow_mut().forget(&wanted.link));
+        self.drawer.queue_mut().assume_pace(seconds);
     }
 
     /// The gallery was left: the cards' pictures not yet sent to a worker wait until it is
     /// shown again.
     pub fn pause(&mut self, workers: &mut Workers) {
-        self.queue.pause(workers.pool());
+        self.drawer.queue_mut().pause(workers.pool());
     }
 
     /// The shape map was closed or drawn anew: its tiles' pictures are drawn no more.
     pub fn drop_tiles(&mut self, workers: &mut Workers) {
-        self.queue.drop_tiles(workers.pool());
+        self.drawer.queue_mut().drop_tiles(workers.pool());
     }
 
     /// A worker grew the shell of picture `job`: it waits to be drawn ([`Self::work`]). A
     /// map's tile whose shell could not be grown is returned with the reason.
     pub fn take(&mut self, job: u32, result: Result<WholeShell, String>) -> Option<(u32, String)> {
-        self.queue.take(job, result)
+        self.drawer.queue_mut().take(job, result)
     }
 
-    /// Keeps the pictures' graphics device and draws the next shell waiting for it; returns
-    /// the map's tile it drew, if it was one. After a loss, the pictures drawn just before it
-    /// are grown and drawn again on the next device.
+    /// Draws the next picture ([`PictureDrawer::work`]; a canvas that cannot be drawn on again
+    /// is replaced by a fresh copy) and shows it; returns the map's tile it drew, if it was
+    /// one.
     pub fn work(&mut self, workers: &mut Workers) -> Option<u32> {
-        let mut device = self.viewer.survive();
-        if matches!(device, Device::NeedsCanvas(_)) {
-            // The canvas cannot be drawn on again: a fresh copy takes its place (or, failing
-            // that, the pictures are drawn no more).
-            match replace("picture-canvas") {
-                Ok(fresh) => self.viewer.give_canvas(Canvas::Element(fresh)),
-                Err(e) => device = Device::Gone(e),
-            }
+        let fresh = || replace("picture-canvas").ok().map(Canvas::Element);
+        let drew = self.drawer.work(now(), workers.pool(), fresh);
+        for wanted in drew.forgotten {
+            release(self.drawn.borrow_mut().forget(&wanted.link));
         }
-        if device != Device::Ready {
-            for wanted in self.queue.device_lost(workers.pool()) {
-                self.forget(&wanted);
-            }
-            return None;
-        }
-        let (wanted, whole) = self.queue.next(now())?;
-        self.viewer.show_whole(wanted.preset, &wanted.spec, whole);
-        let place = wanted.place;
-        let picture = self.viewer.picture_at(place.pixels(), place.multisampled());
-        if self.viewer.survive() != Device::Ready {
-            // Lost while drawing: the picture may be blank; it is drawn on the next device.
-            self.forget(&wanted);
-            self.queue.ask_again(&wanted, workers.pool());
-            return None;
-        }
-        let blob = picture.ok()?;
-        let imgs = images(&selector(place, wanted.preset));
-        let kept = matches!(place, Place::Tile { .. })
+        let (wanted, blob) = drew.drawn?;
+        let imgs = images(&selector(wanted.place, wanted.preset));
+        let kept = matches!(wanted.place, Place::Tile { .. })
             .then(|| (wanted.link.clone(), Rc::clone(&self.drawn)));
-        self.queue.drawn(wanted, now());
         if !imgs.is_empty() {
             wasm_bindgen_futures::spawn_local(async move {
                 // A picture the browser could not read leaves the card as it was.
@@ -194,7 +158,7 @@ impl Pictures {
                 }
             });
         }
-        match place {
+        match wanted.place {
             Place::Tile { job, .. } => Some(job),
             Place::Card => None,
         }
@@ -202,21 +166,21 @@ impl Pictures {
 
     /// Follows a change of the page's theme (pictures already drawn keep theirs).
     pub fn set_background(&mut self, srgb: [u8; 3]) {
-        self.viewer.command(ViewCommand::Background(srgb));
+        self.drawer.screen_mut().set_background(srgb);
     }
 
     /// Test-only (see `debug.rs`): takes the pictures' graphics device away.
     pub fn take_device(&self, loss: Loss) -> Result<(), String> {
-        self.viewer.take_device(loss)
+        self.drawer.screen().take_device(loss)
     }
 
     /// Whether it draws pictures at all (not where the browser draws no 3D).
     pub fn draws(&self) -> bool {
-        self.viewer.backend().is_some()
+        self.drawer.draws()
     }
 
     /// The page's signal of the gallery's pictures (`data-pictures`).
     pub fn signal(&self) -> &'static str {
-        self.queue.signal(self.draws())
+        self.drawer.queue().signal(self.draws())
     }
 }

@@ -106,15 +106,7 @@ pub async fn start() -> Result<(), JsValue> {
             )))
         }
     };
-    let pictures = Viewer::new(
-        Canvas::Element(pictures),
-        false,
-        background,
-        false,
-        shared(),
-    )
-    .await
-    .unwrap_or_else(|_| Viewer::without_drawing(false, background, shared()));
+    let pictures = viewer::WebScreen::on(Canvas::Element(pictures), background).await;
     let app: Shared = Rc::new(RefCell::new(App::new(
         main,
         gallery::Pictures::new(pictures),

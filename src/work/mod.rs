@@ -23,6 +23,7 @@ pub mod growth_session;
 pub mod host;
 pub mod message;
 pub mod panel_controls;
+pub mod picture_drawer;
 pub mod picture_queue;
 pub mod planar_update;
 pub mod pool;

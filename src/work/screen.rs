@@ -13,6 +13,8 @@ use crate::view::recording::FrameAsk;
 pub trait Screen {
     /// A recording's frame, read from the drawing.
     type Video;
+    /// A picture read back from the drawing (a gallery card's, a file's).
+    type Picture;
     /// A fresh canvas the page makes when a lost device cannot be opened again on the old one.
     type Canvas;
 
@@ -55,4 +57,8 @@ pub trait Screen {
     fn video(&mut self, ask: &FrameAsk) -> Result<Self::Video, String>;
     /// Lets go of a recording's frame nobody will take.
     fn release(&mut self, video: Self::Video);
+    /// Draws with several samples a pixel (smooth edges) or one (a small picture's sharp ones).
+    fn multisample(&mut self, on: bool);
+    /// Reads what was just drawn back as a picture.
+    fn picture(&mut self) -> Result<Self::Picture, String>;
 }

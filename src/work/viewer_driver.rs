@@ -327,6 +327,31 @@ impl<S: Screen> ViewerDriver<S> {
         }
     }
 
+    /// Draws the shell now and reads it back as a picture (a gallery card's, a file's).
+    pub fn picture(&mut self) -> Result<S::Picture, String> {
+        if !self.draws() {
+            return Err(NO_DRAWING.into());
+        }
+        if let Some(loss) = self.screen.lost() {
+            return Err(format!("the graphics device was lost ({})", loss.reason));
+        }
+        let g = self.state.shell().ok_or("nothing is drawn yet")?;
+        self.screen.draw(g, self.state.layout())?;
+        self.screen.picture()
+    }
+
+    /// [`Self::picture`], on a drawing buffer of `pixels` × `pixels`, `multisampled` or with
+    /// one sample a pixel (a viewer of pictures only, whose canvas is not laid out on the page).
+    pub fn picture_at(&mut self, pixels: u32, multisampled: bool) -> Result<S::Picture, String> {
+        if self.draws() {
+            if self.screen.size() != (pixels, pixels) {
+                self.screen.resize((pixels, pixels));
+            }
+            self.screen.multisample(multisampled);
+        }
+        self.picture()
+    }
+
     /// Draws the recording's frame `ask` (the core state posed the camera for it) and reads it.
     fn draw_recorded(&mut self, now: f64, ask: &FrameAsk) -> Result<S::Video, String> {
         self.fit();

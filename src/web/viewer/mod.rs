@@ -15,23 +15,20 @@ mod output;
 mod screen;
 
 use super::activity;
-use super::canvases::lose_context;
 use super::clock::now;
 use super::debug::Loss;
 use super::webcodecs::VideoFrame;
 use super::workers::Workers;
 use crate::generator::GROWTH_BUDGET_MS;
-use crate::presets::Preset;
 use crate::render::{Canvas, Renderer};
-use crate::spec::ShellSpec;
 use crate::work::file_writer::FileWriter;
-use crate::work::message::{Reply, Request, WholeShell};
+use crate::work::message::{Reply, Request};
 use crate::work::screen::Screen;
 use crate::work::viewer_command::ViewCommand;
 use crate::work::viewer_driver::{PoolWorkers, Tick, ViewerDriver};
 use crate::work::viewer_inbox::ViewFrame;
 use crate::work::viewer_status::Device;
-use screen::WebScreen;
+pub use screen::WebScreen;
 use std::cell::RefCell;
 use std::rc::Rc;
 
@@ -108,11 +105,6 @@ impl Viewer {
         }
     }
 
-    /// Shows a shell grown whole on a worker (a gallery picture), at rest.
-    pub fn show_whole(&mut self, preset: &'static Preset, spec: &ShellSpec, whole: WholeShell) {
-        self.driver.show_whole(preset, spec, whole);
-    }
-
     /// Takes in what the pool's workers sent back and resumes the shell of a worker replaced
     /// ([`ViewerDriver::take_all`]). Fails with the words to show when the shell cannot be
     /// built or grown (it is dropped).
@@ -137,17 +129,9 @@ impl Viewer {
         self.driver.give_canvas(canvas);
     }
 
-    /// Test-only (see `debug.rs`): takes the graphics device away as a driver reset (WebGPU) or
-    /// the browser (WebGL2) would.
+    /// Test-only (see `debug.rs`): takes the graphics device away ([`WebScreen::take_device`]).
     pub fn take_device(&self, loss: Loss) -> Result<(), String> {
-        let d = (self.driver.screen().drawing.as_ref()).ok_or("this viewer draws nothing")?;
-        match loss {
-            Loss::Destroy => {
-                d.renderer.destroy_device();
-                Ok(())
-            }
-            Loss::Context { restore_after_ms } => lose_context(&d.canvas, restore_after_ms),
-        }
+        self.driver.screen().take_device(loss)
     }
 
     /// One animation frame, once the device is ready ([`Self::survive`]) and the shell's

@@ -2,46 +2,18 @@
 //! offered) and the files written where its copy of the shell is.
 
 use super::Viewer;
-use crate::web::canvases::{object_url, png};
+use crate::web::canvases::object_url;
 use crate::web::clock::now;
 use crate::work::file_writer::{FileStage, Needs};
-use crate::work::screen::Screen;
-use crate::work::viewer_driver::NO_DRAWING;
 use crate::work::viewer_driver::PoolWorkers;
 use crate::work::viewer_state::Growing;
 use std::rc::Rc;
 
 impl Viewer {
-    /// [`Self::picture`], drawn on a canvas of `pixels` × `pixels`, `multisampled` or with one
-    /// sample a pixel (a viewer of pictures only, whose canvas is not laid out on the page).
-    pub fn picture_at(
-        &mut self,
-        pixels: u32,
-        multisampled: bool,
-    ) -> Result<js_sys::Promise, String> {
-        let screen = self.driver.screen_mut();
-        if screen.size() != (pixels, pixels) {
-            screen.resize((pixels, pixels));
-        }
-        if let Some(d) = &mut screen.drawing {
-            d.renderer.multisample(multisampled);
-        }
-        self.picture()
-    }
-
-    /// Draws now and reads the canvas back: the promise of a PNG `Blob` (asked for before the
-    /// browser clears the drawing).
+    /// Draws now and reads the canvas back: the promise of a PNG `Blob`
+    /// ([`crate::work::viewer_driver::ViewerDriver::picture`]).
     pub fn picture(&mut self) -> Result<js_sys::Promise, String> {
-        let (state, screen) = self.driver.parts();
-        let d = screen.drawing.as_mut().ok_or(NO_DRAWING)?;
-        if let Some(loss) = d.renderer.lost() {
-            return Err(format!("the graphics device was lost ({})", loss.reason));
-        }
-        let Some(g) = state.shell() else {
-            return Err("nothing is drawn yet".into());
-        };
-        d.draw(g, state.layout())?;
-        png(&d.canvas)
+        self.driver.picture()
     }
 
     /// Starts writing the file `what` of the shell shown (GLB and 3MF at `size`), over the

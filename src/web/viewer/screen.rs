@@ -9,7 +9,9 @@ use crate::render::{Canvas, Renderer, ShellLook};
 use crate::share::presentation::Layout;
 use crate::view::draw_pacing::GpuWatch;
 use crate::view::recording::FrameAsk;
+use crate::web::canvases::{lose_context, png};
 use crate::web::clock::now;
+use crate::web::debug::Loss as DebugLoss;
 use crate::web::webcodecs::{self, VideoFrame};
 use crate::web::{activity, debug};
 use crate::work::device_survival::Loss;
@@ -60,6 +62,26 @@ pub struct WebScreen {
 }
 
 impl WebScreen {
+    /// A screen on `canvas` with a renderer opened on it, or none that draws where no renderer
+    /// opens.
+    pub async fn on(canvas: Canvas, background: [u8; 3]) -> Self {
+        let renderer = Renderer::new(&canvas).await.ok();
+        Self::new(renderer.map(|r| (r, canvas)), background)
+    }
+
+    /// Test-only (see `debug.rs`): takes the graphics device away as a driver reset (WebGPU) or
+    /// the browser (WebGL2) would.
+    pub fn take_device(&self, loss: DebugLoss) -> Result<(), String> {
+        let d = self.drawing.as_ref().ok_or("this viewer draws nothing")?;
+        match loss {
+            DebugLoss::Destroy => {
+                d.renderer.destroy_device();
+                Ok(())
+            }
+            DebugLoss::Context { restore_after_ms } => lose_context(&d.canvas, restore_after_ms),
+        }
+    }
+
     pub fn new(renderer: Option<(Renderer, Canvas)>, background: [u8; 3]) -> Self {
         let mut screen = Self {
             drawing: None,
@@ -82,7 +104,7 @@ impl WebScreen {
     }
 
     /// Starts opening a renderer on `canvas`.
-    fn open(&mut self, canvas: Canvas) {
+    fn open_renderer(&mut self, canvas: Canvas) {
         let slot: Opening = Rc::default();
         let filled = Rc::clone(&slot);
         wasm_bindgen_futures::spawn_local(async move {
@@ -99,6 +121,8 @@ impl WebScreen {
 
 impl Screen for WebScreen {
     type Video = VideoFrame;
+    /// The promise of a PNG `Blob` (asked for before the browser clears the drawing).
+    type Picture = js_sys::Promise;
     type Canvas = Canvas;
 
     fn backend(&self) -> Option<&'static str> {
@@ -176,12 +200,12 @@ impl Screen for WebScreen {
 
     fn open_again(&mut self) {
         if let Some(canvas) = self.drawing.as_ref().map(|d| d.canvas.clone()) {
-            self.open(canvas);
+            self.open_renderer(canvas);
         }
     }
 
     fn open_on(&mut self, canvas: Canvas) {
-        self.open(canvas);
+        self.open_renderer(canvas);
     }
 
     fn opened(&mut self) -> Option<Result<(), String>> {
@@ -230,5 +254,15 @@ impl Screen for WebScreen {
 
     fn release(&mut self, video: VideoFrame) {
         video.close();
+    }
+
+    fn multisample(&mut self, on: bool) {
+        if let Some(d) = &mut self.drawing {
+            d.renderer.multisample(on);
+        }
+    }
+
+    fn picture(&mut self) -> Result<js_sys::Promise, String> {
+        png(&self.drawing.as_ref().ok_or("nothing was drawn")?.canvas)
     }
 }
