@@ -2,11 +2,14 @@
 //! every link of the gallery and of the papers' figures leads where it says, and every field
 //! of the panel has one labelled control of its kind, read here without a browser.
 
-use seashells_core::markup::{Element, field_id, field_options, figures, gallery, panel};
+use seashells_core::markup::{
+    Element, Shows, field_id, field_options, figures, gallery, map_tile, panel, tile,
+};
 use seashells_core::papers::papers;
 use seashells_core::presets::presets;
 use seashells_core::share::link;
 use seashells_core::stories::{stories, story};
+use seashells_core::variation::map_plan::Label;
 use seashells_core::variation::parameter_map::parameters;
 use seashells_core::work::panel_controls::{Control, control, panel_fields};
 use std::collections::HashSet;
@@ -110,8 +113,11 @@ fn every_figure_of_every_paper_is_listed_once_with_what_shows_it_or_why_not() {
             for (a, preset) in shells.iter().zip(&shown.presets) {
                 leads_to_preset(a, preset.id);
             }
-            let steps = ours.children.iter().filter(|e| e.class == "ours-step");
-            for (a, (story, index)) in steps.zip(&shown.steps) {
+            let steps: Vec<_> = (ours.children.iter())
+                .filter(|e| e.class == "ours-step")
+                .collect();
+            assert_eq!(steps.len(), shown.steps.len(), "fig. {number}");
+            for (a, (story, index)) in steps.iter().zip(&shown.steps) {
                 let step = format!("#story={}&step={}", story.id, index + 1);
                 assert_eq!(href(a), step);
             }
@@ -162,6 +168,8 @@ fn every_field_of_every_preset_has_one_labelled_control_of_its_kind() {
                 } => {
                     let range = &row.children[1];
                     assert_eq!(range.get("type"), Some("range"));
+                    // The page finds the slider as the number field's previous sibling.
+                    assert_eq!(&row.children[2], held);
                     assert_eq!(range.get("max"), Some(positions.to_string().as_str()));
                     assert_eq!(held.get("type"), Some("number"));
                     let bound = |k| held.get(k).and_then(|v| v.parse::<f64>().ok());
@@ -221,4 +229,58 @@ fn the_map_offers_every_parameter_once_under_its_section() {
             );
         }
     }
+}
+
+#[test]
+fn a_map_tile_links_to_its_shell_and_marks_the_presets_near_it() {
+    let label = Label {
+        text: "W 2.0, T 1.5".into(),
+        apart: true,
+        current: true,
+        landmarks: "Turbinate shell".into(),
+        marks: vec![(25.0, 75.04, "turbinate")],
+    };
+    let a = map_tile(7, "v=1&preset=turbinate", &label, Shows::Shell);
+    assert_eq!(a.class, "tile apart current");
+    assert_eq!(href(&a), "#v=1&preset=turbinate");
+    assert_eq!(a.get("data-job"), Some("7"));
+    assert_eq!(a.get("aria-label"), Some("W 2.0, T 1.5"));
+    assert_eq!(a.get("aria-current"), Some("true"));
+    assert_eq!(a.children[0].tag, "img");
+    assert_eq!(a.children[1].text.as_deref(), Some("Turbinate shell"));
+    let marker = &a.children[2];
+    assert_eq!(marker.get("data-name"), Some("turbinate"));
+    assert_eq!(
+        marker.get("style"),
+        None,
+        "the page's policy refuses inline styles"
+    );
+    let at = |(name, value): &(&str, String)| (name.to_string(), value.clone());
+    let style: Vec<_> = marker.style.iter().map(at).collect();
+    assert_eq!(
+        style,
+        [
+            ("left".into(), "25.0%".into()),
+            ("top".into(), "75.0%".into())
+        ]
+    );
+    let plain = Label {
+        apart: false,
+        current: false,
+        landmarks: String::new(),
+        marks: Vec::new(),
+        ..label
+    };
+    let a = map_tile(8, "x", &plain, Shows::Pattern);
+    assert_eq!(a.class, "tile");
+    assert_eq!(a.get("aria-current"), None);
+    assert_eq!(a.children.len(), 1, "a pattern's canvas alone");
+    assert_eq!(a.children[0].tag, "canvas");
+    let offspring = tile(9, None, "the parent", "tile parent", true, Shows::Shell);
+    assert_eq!(
+        offspring.get("href"),
+        None,
+        "a tile that cannot be chosen links nowhere"
+    );
+    assert_eq!(offspring.get("aria-current"), Some("true"));
 }

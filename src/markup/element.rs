@@ -1,13 +1,15 @@
 //! An element of the page as data.
 
-/// An element: its tag, its class (may be empty), its text, its attributes and its children,
-/// in order (the text comes before the children).
+/// An element: its tag, its class (may be empty), its text, its attributes, its style
+/// properties (set one by one, as the page's content security policy allows, never as a
+/// `style` attribute) and its children, in order (the text comes before the children).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Element {
     pub tag: &'static str,
     pub class: &'static str,
     pub text: Option<String>,
     pub attributes: Vec<(&'static str, String)>,
+    pub style: Vec<(&'static str, String)>,
     pub children: Vec<Element>,
 }
 
@@ -19,6 +21,7 @@ impl Element {
             class,
             text: None,
             attributes: Vec::new(),
+            style: Vec::new(),
             children: Vec::new(),
         }
     }
@@ -32,6 +35,12 @@ impl Element {
     /// With the attribute `name` set to `value`.
     pub fn attr(mut self, name: &'static str, value: impl Into<String>) -> Self {
         self.attributes.push((name, value.into()));
+        self
+    }
+
+    /// With its style's property `name` set to `value`.
+    pub fn style(mut self, name: &'static str, value: impl Into<String>) -> Self {
+        self.style.push((name, value.into()));
         self
     }
 

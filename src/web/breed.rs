@@ -5,11 +5,11 @@
 //! the mutation rate and leaving with the parent are links too.
 
 use super::debug;
-use super::dom::attr;
 use super::gallery::Pictures;
 use super::page::{element, element_as, set_text, signal};
-use super::tile_grid::{Shows, TileGrid, signal_filled};
+use super::tile_grid::{TileGrid, signal_filled};
 use super::workers::Workers;
+use crate::markup::{self, Shows};
 use crate::variation::breeding::{Breeding, PARENT};
 use web_sys::HtmlInputElement;
 
@@ -84,18 +84,16 @@ impl BreedView {
         let mut drawn = Vec::new();
         for (index, tile) in breeding.tiles().iter().enumerate() {
             let (label, href) = breeding.label(index);
-            let classes = if index == PARENT {
-                vec!["parent"]
+            let class = if index == PARENT {
+                "tile parent"
             } else {
-                Vec::new()
+                "tile"
             };
             let href = href.map(|h| format!("#{h}"));
-            let a = self
-                .grid
-                .add(href.as_deref(), &label, &classes, Shows::Shell);
-            if index == PARENT {
-                attr(&a, "aria-current", "true");
-            }
+            let current = index == PARENT;
+            (self.grid).add(|job| {
+                markup::tile(job, href.as_deref(), &label, class, current, Shows::Shell)
+            });
             if tile.failure.is_some() || tile.note.is_some() {
                 self.grid.show(index, tile);
             }

@@ -21,13 +21,6 @@ pub fn create(tag: &str, class: &str, text: Option<&str>) -> HtmlElement {
     e
 }
 
-/// A new element of a specific type.
-pub fn typed<T: JsCast>(tag: &str, class: &str) -> T {
-    create(tag, class, None)
-        .dyn_into()
-        .expect("the tag makes this element type")
-}
-
 /// Sets an attribute; attributes with valid names cannot fail to be set.
 pub fn attr(e: &Element, name: &str, value: &str) {
     let _ = e.set_attribute(name, value);
@@ -46,14 +39,23 @@ pub fn clear(e: &Element) {
     e.set_text_content(None);
 }
 
+/// The element `markup` describes, with its children.
+pub fn make(markup: &markup::Element) -> HtmlElement {
+    let e = create(markup.tag, markup.class, markup.text.as_deref());
+    for (name, value) in &markup.attributes {
+        attr(&e, name, value);
+    }
+    for (name, value) in &markup.style {
+        // A known property with a valid value cannot fail to be set.
+        let _ = e.style().set_property(name, value);
+    }
+    build(&e, &markup.children);
+    e
+}
+
 /// Appends the elements `markup` describes to `parent`.
 pub fn build(parent: &Element, markup: &[markup::Element]) {
     for m in markup {
-        let e = create(m.tag, m.class, m.text.as_deref());
-        for (name, value) in &m.attributes {
-            attr(&e, name, value);
-        }
-        build(&e, &m.children);
-        append(parent, &[&e]);
+        append(parent, &[&make(m)]);
     }
 }

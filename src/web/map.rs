@@ -5,12 +5,12 @@
 //! form it is the whole shell, grown and drawn as a gallery card's picture is.
 
 use super::debug;
-use super::dom::{append, attr, build, clear, create};
+use super::dom::{attr, build, clear};
 use super::gallery::Pictures;
 use super::page::{element, element_as, set_text, signal};
-use super::tile_grid::{Shows, TileGrid, signal_filled};
+use super::tile_grid::{TileGrid, signal_filled};
 use super::workers::Workers;
-use crate::markup;
+use crate::markup::{self, Shows};
 use crate::presets::Preset;
 use crate::spec::ShellSpec;
 use crate::spec::fields::{Field, display};
@@ -220,35 +220,7 @@ impl MapView {
             Shows::Pattern
         };
         for (tile, label) in map.tiles().iter().zip(&labels) {
-            let mut classes = Vec::new();
-            if label.apart {
-                classes.push("apart");
-            }
-            if label.current {
-                classes.push("current");
-            }
-            let a = self.grid.add(
-                Some(&format!("#{}", tile.link)),
-                &label.text,
-                &classes,
-                shows,
-            );
-            if label.current {
-                attr(&a, "aria-current", "true");
-            }
-            if !label.landmarks.is_empty() {
-                append(&a, &[&create("span", "landmark", Some(&label.landmarks))]);
-            }
-            // Each gallery shell marked where its own values fall; the names are in the label.
-            for &(left, top, name) in &label.marks {
-                let mark = create("span", "marker", None);
-                attr(&mark, "data-name", name);
-                attr(&mark, "aria-hidden", "true");
-                let style = mark.style();
-                style.set_property("left", &format!("{left:.1}%")).ok();
-                style.set_property("top", &format!("{top:.1}%")).ok();
-                append(&a, &[&mark]);
-            }
+            (self.grid).add(|job| markup::map_tile(job, &tile.link, label, shows));
         }
         set_text("map-status", &status);
         for index in map.to_compute() {

@@ -98,7 +98,14 @@ impl Panel {
         let (fields, leaves) = panel_fields(spec);
         build(container, &markup::panel(&fields));
         let controls = (fields.into_iter())
-            .filter_map(|field| Some((field, Self::wire(field, on_change)?)))
+            .filter_map(|field| match Self::wire(field, on_change) {
+                Some(control) => Some((field, control)),
+                None => {
+                    let missing = format!("the panel's control of {} is missing", field.key);
+                    web_sys::console::error_1(&missing.into());
+                    None
+                }
+            })
             .collect();
         let panel = Self { controls };
         panel.refresh_with(&leaves);

@@ -2,25 +2,18 @@
 //! link with its picture, drawn as the pool's answers come. Its numbering, focus and marks are
 //! the core's [`TileSet`] and [`crate::variation::tile_grid::TileMarks`].
 
-use super::dom::{append, attr, clear, create, typed};
+use super::dom::{self, append, attr, clear};
 use super::page::{element, signal};
+use crate::markup;
 use crate::variation::tile::{Picture, Tile};
 use crate::variation::tile_grid::{self, TileSet};
 use std::cell::Cell;
 use wasm_bindgen::{Clamped, JsCast};
-use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlImageElement, ImageData};
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, ImageData};
 
 thread_local! {
     /// The number of the next set of tiles, over all grids of the page.
     static NEXT_SET: Cell<u32> = const { Cell::new(0) };
-}
-
-/// What a tile shows: the shell, as a picture drawn by the page; or a pattern, painted into a
-/// canvas from its pixels.
-#[derive(Clone, Copy, PartialEq)]
-pub enum Shows {
-    Shell,
-    Pattern,
 }
 
 /// The tiles of one grid element of the page, and the set they belong to.
@@ -49,39 +42,13 @@ impl TileGrid {
         self.set = TileSet::new(NEXT_SET.with(|next| next.replace(TileSet::after(next.get()))));
     }
 
-    /// Adds a tile that links to `href` (none: it cannot be chosen), named by `label`, with the
-    /// classes given; returns it, for what else it shows.
-    pub fn add(
-        &mut self,
-        href: Option<&str>,
-        label: &str,
-        classes: &[&str],
-        shows: Shows,
-    ) -> Element {
-        let a = create("a", "tile", None);
-        if let Some(href) = href {
-            attr(&a, "href", href);
-        }
-        attr(&a, "data-job", &self.set.add().to_string());
-        for class in classes {
-            let _ = a.class_list().add_1(class);
-        }
-        attr(&a, "title", label);
-        attr(&a, "aria-label", label);
-        let picture: Element = match shows {
-            Shows::Shell => {
-                let img: HtmlImageElement = typed("img", "");
-                img.set_alt("");
-                img.into()
-            }
-            Shows::Pattern => create("canvas", "", None).into(),
-        };
-        append(&a, &[&picture]);
+    /// Adds the tile `make` makes of its job number (the core's [`crate::markup::tile`]).
+    pub fn add(&mut self, make: impl FnOnce(u32) -> markup::Element) {
+        let tile = dom::make(&make(self.set.add()));
         if let Some(grid) = element(self.id) {
-            append(&grid, &[&a]);
+            append(&grid, &[&tile]);
         }
-        self.tiles.push(a.clone().into());
-        a.into()
+        self.tiles.push(tile.into());
     }
 
     /// The job number of tile `index` of this set.

@@ -63,8 +63,8 @@ impl<S: Screen> PictureDrawer<S> {
     }
 
     /// One frame at `now`: keeps the device (on a fresh canvas `fresh` makes, when asked for
-    /// one: none, and the pictures are drawn no more) and draws the next shell waiting, if the
-    /// device is ready.
+    /// one; while it makes none, the device stays lost and one is asked for again the next
+    /// frame) and draws the next shell waiting, if the device is ready.
     pub fn work(
         &mut self,
         now: f64,

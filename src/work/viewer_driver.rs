@@ -86,11 +86,6 @@ impl<S: Screen> ViewerDriver<S> {
         &mut self.screen
     }
 
-    /// The state and the screen at once (to draw the state's shell outside a frame).
-    pub fn parts(&mut self) -> (&ViewerState, &mut S) {
-        (&self.state, &mut self.screen)
-    }
-
     /// Does what the page asks (see [`ViewCommand`]). Returns what is left for the runner: a
     /// file to write ([`ViewCommand::WriteFile`]).
     pub fn command(&mut self, command: ViewCommand, pool: &mut Pool) -> Option<ViewCommand> {

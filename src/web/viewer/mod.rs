@@ -1,15 +1,13 @@
-//! A viewer: one canvas (a canvas element of the page, or an `OffscreenCanvas` one handed its
-//! drawing to) and its renderer, a shell growing on it, what its planar pattern shows, and the
-//! camera the pointer turns. It touches nothing of the page, so that it runs in the worker that
-//! draws the main view (`drawing_worker.rs`) as well as on the page's thread (`viewer_handle.rs`).
-//! Loading another spec restarts growth without reloading the page. The page's main view is one
-//! viewer, whose camera follows the growing shell; the gallery's pictures are drawn by another,
-//! framed on the whole shell. While a pattern slider is dragged, the planar view previews the
-//! whole pattern of its values instead. When the browser takes the graphics device away, the
-//! viewer opens another (`screen.rs`) and uploads the shell grown so far to it: growth goes
-//! on from where it was. Where the browser draws no 3D, a viewer without a renderer grows the
-//! shell all the same, for its pattern and its files; and one whose frames the GPU stops
-//! finishing says so, for the page to move it where it can draw.
+//! The page's main viewer: the core's [`ViewerDriver`] on one canvas (a canvas element of the
+//! page, or an `OffscreenCanvas` one handed its drawing to) and its renderer (`screen.rs`),
+//! with its pool of workers and the files it writes. It touches nothing of the page, so that it
+//! runs in the worker that draws the main view (`drawing_worker.rs`) as well as on the page's
+//! thread (`viewer_handle.rs`). The driver decides what the viewer grows and draws, how it
+//! keeps its graphics device when the browser takes it away (the screen opens another, and the
+//! driver uploads the shell grown so far to it: growth goes on from where it was), and says
+//! when the GPU stops finishing its frames, for the page to move the view where it can draw.
+//! Where the browser draws no 3D, a viewer without a renderer grows the shell all the same,
+//! for its pattern and its files.
 
 mod output;
 mod screen;
@@ -139,11 +137,12 @@ impl Viewer {
     /// ([`ViewerDriver::run_frame`]), and says what the page is to show. Fails with the words
     /// to show when the renderer failed.
     pub fn run_frame(&mut self) -> Result<ViewFrame<VideoFrame>, String> {
-        let file = self.work_file();
-        let mut workers = self.workers.borrow_mut();
-        let floor = workers.min_growth_ms();
-        let mut frame = (self.driver).run_frame(now(), GROWTH_BUDGET_MS, floor, workers.pool())?;
-        frame.report.file = file;
+        let mut frame = {
+            let mut workers = self.workers.borrow_mut();
+            let floor = workers.min_growth_ms();
+            (self.driver).run_frame(now(), GROWTH_BUDGET_MS, floor, workers.pool())?
+        };
+        frame.report.file = self.work_file();
         Ok(frame)
     }
 

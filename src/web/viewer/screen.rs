@@ -33,17 +33,17 @@ fn look(growing: &Growing) -> Option<ShellLook> {
 }
 
 /// A renderer and the canvas it draws on.
-pub(super) struct Drawing {
-    pub(super) renderer: Renderer,
+struct Drawing {
+    renderer: Renderer,
     /// An element of the page, or an offscreen canvas one handed its drawing to.
-    pub(super) canvas: Canvas,
+    canvas: Canvas,
     /// Whether the frames handed to the GPU reach the screen.
     watch: GpuWatch,
 }
 
 impl Drawing {
     /// Draws the panes of `layout` of `growing`'s shell.
-    pub(super) fn draw(&mut self, growing: &Growing, layout: Layout) -> Result<(), String> {
+    fn draw(&mut self, growing: &Growing, layout: Layout) -> Result<(), String> {
         let panes = growing.panes(layout, self.renderer.aspect());
         self.renderer.draw(&panes)
     }
@@ -55,7 +55,7 @@ type Opening = Rc<RefCell<Option<Result<Drawing, String>>>>;
 /// What a viewer in the browser draws on.
 pub struct WebScreen {
     /// None where the browser draws no 3D.
-    pub(super) drawing: Option<Drawing>,
+    drawing: Option<Drawing>,
     /// The clear colour, as sRGB bytes (for a renderer opened again).
     background: [u8; 3],
     opening: Option<Opening>,
