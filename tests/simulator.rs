@@ -15,8 +15,10 @@
 //! worker's messages do), some twice; workers throw, hang, send bytes nobody can read, or
 //! never start; the tab sleeps for seconds between frames; the browser takes the graphics
 //! device away (a WebGL context it may give back, once or twice, or a WebGPU device), and an
-//! opening of a renderer again fails; the drawing worker fails, or spins until the page finds
-//! it out by its silence, and the view moves to the page's thread, clicks going on meanwhile. Lost messages are not simulated: a
+//! opening of a renderer again fails; the GPU falls behind (drawing waits) or its frames stop
+//! reaching the screen (the drawing worker says so); the drawing worker fails, or spins until
+//! the page finds it out by its silence, and the view moves to the page's thread, clicks going
+//! on meanwhile. Lost messages are not simulated: a
 //! worker's channel to the page loses nothing while the worker lives, and one that dies is
 //! simulated.
 //!
@@ -161,6 +163,13 @@ enum Step {
     },
     /// The drawing worker spins for ever: the page must find it out by its silence.
     HangDrawing,
+    /// The GPU falls `frames` frames behind: drawing waits for it, uploads go on.
+    GpuBehind {
+        frames: u8,
+    },
+    /// The frames handed to the GPU stop reaching the screen: the drawing worker says so and
+    /// stops, and the view moves to the page's thread.
+    GpuStops,
 }
 
 /// A recording's video frame, posted beside the frame's news that says it was drawn.
@@ -197,6 +206,8 @@ struct Page {
     shown_state: String,
     /// The frame a viewer on the page's thread opens in, after the drawing worker failed.
     moving: Option<u64>,
+    /// Frames the viewers replaced so far held back for the GPU.
+    deferred: usize,
     /// What the page has heard of the drawing worker, and whether the worker hangs.
     link: DrawingLink,
     drawing_hung: bool,
@@ -224,6 +235,12 @@ struct SimScreen {
     size: (u32, u32),
     /// The first thing handed to it that breaks the rules above.
     fault: Option<Failure>,
+    /// The frame until which the GPU is behind (drawing waits).
+    behind_until: u64,
+    /// Its frames stopped reaching the screen.
+    stopped: bool,
+    /// Frames the driver held back for the GPU to catch up.
+    deferred: usize,
 }
 
 impl SimScreen {
@@ -300,7 +317,8 @@ impl Screen for SimScreen {
     fn set_background(&mut self, _: [u8; 3]) {}
 
     fn failure(&mut self) -> Option<String> {
-        None
+        self.stopped
+            .then(|| "Nothing drawn reaches the screen: the GPU stopped.".to_string())
     }
 
     fn lost(&self) -> Option<Loss> {
@@ -328,10 +346,12 @@ impl Screen for SimScreen {
     }
 
     fn ready(&self) -> bool {
-        true
+        self.frame >= self.behind_until
     }
 
-    fn flush(&mut self) {}
+    fn flush(&mut self) {
+        self.deferred += 1;
+    }
 
     fn size(&self) -> (u32, u32) {
         self.size
@@ -421,6 +441,7 @@ impl Page {
             viewers: 0,
             shown_state: String::new(),
             moving: None,
+            deferred: 0,
             link: DrawingLink::default(),
             drawing_hung: false,
         }
@@ -528,8 +549,17 @@ impl Page {
             // The drawing worker says where its device stands and does nothing else; its
             // workers go on with what they hold.
             None => (None, false),
-            Some(frame) => {
-                let frame = frame?;
+            Some(Err(failure)) => {
+                // The drawing worker says why it can draw no more, and draws no more.
+                let at =
+                    (self.frame + u64::from(lag)).max(self.to_page.back().map_or(0, |(a, ..)| *a));
+                self.to_page
+                    .push_back((at, encode_news(&ViewerNews::Failed(failure)), None));
+                self.drawing_hung = true;
+                self.workers.work(self.frame, FRAME_MS, lag, rng);
+                return Ok(());
+            }
+            Some(Ok(frame)) => {
                 let recorded = match frame.recorded {
                     Some(Err(e)) => return Err(format!("a recording's frame was refused: {e}")),
                     Some(Ok(VideoFrame)) => true,
@@ -564,6 +594,7 @@ impl Page {
         self.drawing_hung = false;
         self.link = DrawingLink::default();
         self.viewers += 1;
+        self.deferred += self.viewer.screen().deferred;
         self.viewer = viewer(self.now, self.viewer.screen().reopened);
         self.workers = Workers::new(self.workers.count().max(1));
         self.to_viewer.clear();
@@ -598,7 +629,14 @@ impl Page {
             return Ok(());
         }
         self.apply(0);
-        let taken = viewer_inbox::take(news)?;
+        let taken = match viewer_inbox::take(news) {
+            Ok(taken) => taken,
+            Err(_) => {
+                // The drawing worker's renderer failed: the view moves to the page's thread.
+                self.moving.get_or_insert(self.frame + 1);
+                return Ok(());
+            }
+        };
         let mut heard = Heard {
             refused: taken.refused,
             ..Heard::default()
@@ -723,6 +761,10 @@ impl Page {
             }
             Step::FailOpen => self.viewer.screen_mut().fail_next = true,
             Step::HangDrawing => self.drawing_hung = true,
+            Step::GpuBehind { frames } => {
+                self.viewer.screen_mut().behind_until = self.frame + u64::from(*frames);
+            }
+            Step::GpuStops => self.viewer.screen_mut().stopped = true,
             Step::Fallback { frames } => {
                 if self.moving.is_none() {
                     self.moving = Some(self.frame + 1 + u64::from(*frames));
@@ -874,7 +916,7 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
     }];
     for _ in 0..count {
         let byte = pick(256) as u8;
-        let step = match pick(46) {
+        let step = match pick(48) {
             0..=14 => Step::Frames {
                 count: 1 + pick(12) as u8,
                 lag: pick(4) as u8,
@@ -921,6 +963,10 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
             },
             42 => Step::HangDrawing,
             43 => Step::Story { step: byte },
+            44 => Step::GpuBehind {
+                frames: pick(60) as u8,
+            },
+            45 => Step::GpuStops,
             _ => Step::Twice { slot: byte },
         };
         steps.push(step);
@@ -935,6 +981,8 @@ struct Went {
     reopened: usize,
     replaced: usize,
     moved: u32,
+    /// Frames whose drawing waited for the GPU to catch up.
+    deferred: usize,
 }
 
 /// Runs `steps` on a page of `workers` workers, and lets it settle.
@@ -947,6 +995,7 @@ fn run(workers: usize, steps: &[Step]) -> Result<Went, Failure> {
     page.settle().map_err(|e| format!("settling: {e}"))?;
     Ok(Went {
         reopened: page.viewer.screen().reopened,
+        deferred: page.deferred + page.viewer.screen().deferred,
         replaced: page.workers.pool.deaths(),
         moved: page.viewers,
     })
@@ -1021,6 +1070,7 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
                 went.reopened += run.reopened;
                 went.replaced += run.replaced;
                 went.moved += run.moved;
+                went.deferred += run.deferred;
             }
             Err(failed) => {
                 // Quiet while the runs that shrink it panic in their turn.
@@ -1040,11 +1090,13 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
         // The faults happen: runs that never lose a device, a worker or the drawing worker
         // would prove nothing.
         assert!(
-            went.reopened > 0 && went.replaced > 0 && went.moved > 0,
-            "{} renderers opened again, {} workers replaced, {} views moved in {} runs",
+            went.reopened > 0 && went.replaced > 0 && went.moved > 0 && went.deferred > 0,
+            "{} renderers opened again, {} workers replaced, {} views moved, {} frames \
+             waited for the GPU in {} runs",
             went.reopened,
             went.replaced,
             went.moved,
+            went.deferred,
             seeds.len()
         );
     }
