@@ -6,9 +6,11 @@
 //! gallery, the map, breeding and the recorder, deciding nothing itself. The simulator
 //! (`tests/simulator.rs`) drives this same session with the viewer's core state behind it.
 
+use super::pool::Replaced;
 use super::shell_change::{ShellChange, Shown};
 use super::status_readout::{Readout, Say};
 use super::viewer_command::{PresetSpec, ViewCommand};
+use super::viewer_message::PoolNews;
 use super::viewer_status::{Device, ViewStatus};
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
@@ -18,6 +20,9 @@ use crate::spec::fields::{SHELL, Section};
 use crate::spec::problem::Problem;
 use crate::stories::{self, Growth, MapAxes, Opened, StoryAt};
 use crate::variation::breeding::Breeding;
+
+/// The element whose words say where the shells grow, and what became of the workers.
+const WORKERS_STATUS: &str = "workers-status";
 
 /// Quiet time after an edit before the address bar is updated, milliseconds.
 pub const URL_DELAY_MS: f64 = 300.0;
@@ -128,10 +133,44 @@ pub struct Session {
     /// Whether the shell of the story's step was changed since it opened (a value edited, the
     /// speed): the address is then the shell's own link, no longer the step's.
     story_edited: bool,
+    /// Workers replaced so far in the page's pool and in the drawing worker's.
+    deaths: (usize, u32),
     effects: Vec<Effect>,
 }
 
 impl Session {
+    /// The page's own pool replaced a worker: the count is signalled (`data-worker-deaths`)
+    /// and, from the second, the status line says so ([`Replaced::words`]).
+    pub fn page_worker_replaced(&mut self, replaced: &Replaced) {
+        self.deaths.0 = replaced.deaths;
+        self.signal_deaths();
+        if let Some(words) = replaced.words() {
+            self.effects.push(Effect::Text(WORKERS_STATUS, words));
+        }
+    }
+
+    /// What the drawing worker's pool says of itself: its status line while none of its
+    /// workers was replaced, else the count and, from the second, the words.
+    pub fn drawing_pool_said(&mut self, pool: PoolNews) {
+        if pool.deaths == 0 {
+            self.effects.push(Effect::Text(WORKERS_STATUS, pool.status));
+            return;
+        }
+        self.deaths.1 = pool.deaths;
+        self.signal_deaths();
+        if let Some(words) = pool.words {
+            self.effects.push(Effect::Text(WORKERS_STATUS, words));
+        }
+    }
+
+    /// Signals the workers replaced so far, the page's pool's and the drawing worker's.
+    fn signal_deaths(&mut self) {
+        let (page, drawing) = self.deaths;
+        let total = page + drawing as usize;
+        self.effects
+            .push(Effect::Signal("workerDeaths", total.to_string()));
+    }
+
     /// What the page is to do, in order, since the last call.
     pub fn take_effects(&mut self) -> Vec<Effect> {
         std::mem::take(&mut self.effects)
@@ -715,6 +754,53 @@ mod tests {
         session.route(link, false, 0.0);
         session.take_effects();
         session
+    }
+
+    #[test]
+    fn the_workers_replaced_in_both_pools_are_counted_and_said_from_the_second() {
+        let mut session = Session::default();
+        let texts = |effects: &[Effect]| -> Vec<String> {
+            (effects.iter())
+                .filter_map(|e| match e {
+                    Effect::Text(WORKERS_STATUS, words) => Some(words.clone()),
+                    _ => None,
+                })
+                .collect()
+        };
+        let news = |deaths: u32, words: Option<&str>| PoolNews {
+            count: 3,
+            status: "Growing on 3 workers.".into(),
+            deaths,
+            words: words.map(str::to_string),
+        };
+        session.drawing_pool_said(news(0, None));
+        let effects = session.take_effects();
+        assert_eq!(texts(&effects), ["Growing on 3 workers."]);
+        assert!(
+            signals(&effects).is_empty(),
+            "nothing replaced, nothing counted"
+        );
+        let first = Replaced {
+            deaths: 1,
+            why: "it threw".into(),
+            given_up: None,
+        };
+        session.page_worker_replaced(&first);
+        let effects = session.take_effects();
+        assert_eq!(signals(&effects), [("workerDeaths", "1".to_string())]);
+        assert!(
+            texts(&effects).is_empty(),
+            "the first death is redone silently"
+        );
+        session.drawing_pool_said(news(2, Some("A worker stopped twice.")));
+        let effects = session.take_effects();
+        assert_eq!(signals(&effects), [("workerDeaths", "3".to_string())]);
+        assert_eq!(texts(&effects), ["A worker stopped twice."]);
+        let second = Replaced { deaths: 2, ..first };
+        session.page_worker_replaced(&second);
+        let effects = session.take_effects();
+        assert_eq!(signals(&effects), [("workerDeaths", "4".to_string())]);
+        assert_eq!(texts(&effects).len(), 1, "from the second, said");
     }
 
     #[test]

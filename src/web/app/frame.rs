@@ -5,12 +5,11 @@
 use super::App;
 use crate::web::activity;
 use crate::web::clock::now;
-use crate::web::page::{set_text, show_message, signal};
+use crate::web::page::{show_message, signal};
 use crate::work::message::{Reply, Request};
 use crate::work::session::{FrameTask, Heard};
 use crate::work::viewer_driver::PoolWorkers;
 use crate::work::viewer_inbox::Taken;
-use crate::work::viewer_message::PoolNews;
 
 impl App {
     /// One animation frame.
@@ -54,7 +53,8 @@ impl App {
             }
         };
         if let Some(pool) = pool {
-            self.pool_said(pool);
+            self.session.drawing_pool_said(pool);
+            self.apply();
         }
         let mut heard = Heard {
             refused,
@@ -103,11 +103,8 @@ impl App {
     fn take_replies(&mut self) {
         let polled = self.workers.borrow_mut().poll();
         if let Some(replaced) = &polled.replaced {
-            self.deaths.0 = replaced.deaths;
-            self.signal_deaths();
-            if let Some(words) = replaced.words() {
-                set_text("workers-status", &words);
-            }
+            self.session.page_worker_replaced(replaced);
+            self.apply();
         }
         let mut shell = Vec::new();
         for (request, reply) in polled.replies {
@@ -126,25 +123,5 @@ impl App {
             self.session.refused(why);
             self.apply();
         }
-    }
-
-    /// What the drawing worker's pool says of itself: how many workers (its status line) and
-    /// how many were replaced.
-    fn pool_said(&mut self, pool: PoolNews) {
-        if pool.deaths == 0 {
-            set_text("workers-status", &pool.status);
-            return;
-        }
-        self.deaths.1 = pool.deaths;
-        self.signal_deaths();
-        if let Some(words) = pool.words {
-            set_text("workers-status", &words);
-        }
-    }
-
-    /// Signals the workers replaced so far, the page's pool's and the drawing worker's.
-    fn signal_deaths(&self) {
-        let (page, drawing) = self.deaths;
-        signal("workerDeaths", &(page + drawing as usize).to_string());
     }
 }

@@ -61,8 +61,6 @@ pub struct App {
     /// What the page shows and every decision about it (see [`Session`]): this only applies
     /// its effects.
     session: Session,
-    /// Workers replaced so far in the page's pool and in the drawing worker's.
-    deaths: (usize, u32),
     /// The size the main viewer's canvas is shown at, and what the viewer was last told of it
     /// (CSS pixels and the device pixel ratio).
     shown: Option<ShownSize>,
@@ -106,7 +104,6 @@ impl App {
         Self {
             viewer,
             session: Session::default(),
-            deaths: (0, 0),
             shown,
             told_shown: (0, 0, 0.0),
             replaced_canvas: None,
