@@ -11,6 +11,7 @@ use crate::view::gestures;
 use crate::web::app::{App, Shared};
 use crate::web::dom;
 use crate::work::recording::Support;
+use crate::work::session::Session;
 use crate::work::shortcuts::{self, Press, Shortcut, Target};
 use crate::work::viewer_command::{PointerChange, ViewCommand};
 use std::rc::Rc;
@@ -108,12 +109,12 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
         })?;
     }
     listen_canvas(app, &canvas("shell")?.into())?;
-    on_click("play", app, App::toggle_playing)?;
-    on_click("restart", app, App::restart)?;
-    on_click("step", app, App::step)?;
-    on_click("finish", app, App::finish)?;
+    on_click("play", app, |a| a.act(Session::toggle_playing))?;
+    on_click("restart", app, |a| a.act(Session::restart))?;
+    on_click("step", app, |a| a.act(Session::step))?;
+    on_click("finish", app, |a| a.act(Session::finish))?;
     on_click("reset-camera", app, App::reset_camera)?;
-    on_click("views", app, App::toggle_views)?;
+    on_click("views", app, |a| a.act(Session::toggle_views))?;
     on_click("fullscreen", app, |a| a.toggle_fullscreen())?;
     on_click("copy-link", app, App::copy_link)?;
     on_click("copy-embed", app, App::copy_embed)?;
@@ -244,12 +245,12 @@ pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
         match shortcut {
             Shortcut::Tiles(dx, dy) => a.step_tiles(dx, dy),
             Shortcut::Leave => a.escape(),
-            Shortcut::PlayPause => a.toggle_playing(),
-            Shortcut::Restart => a.restart(),
-            Shortcut::Step => a.step(),
-            Shortcut::Finish => a.finish(),
+            Shortcut::PlayPause => a.act(Session::toggle_playing),
+            Shortcut::Restart => a.act(Session::restart),
+            Shortcut::Step => a.act(Session::step),
+            Shortcut::Finish => a.act(Session::finish),
             Shortcut::ResetCamera => a.reset_camera(),
-            Shortcut::ToggleViews => a.toggle_views(),
+            Shortcut::ToggleViews => a.act(Session::toggle_views),
             Shortcut::Fullscreen => a.toggle_fullscreen(),
             Shortcut::Speed(change) => a.set_speed(&change.of(a.speed()).to_string()),
             Shortcut::StoryStep(forward) => a.story_step(forward),

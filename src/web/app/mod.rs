@@ -266,9 +266,10 @@ impl App {
         self.apply();
     }
 
-    /// Between one view and Kawaguchi's four (the link follows).
-    pub fn toggle_views(&mut self) {
-        self.session.toggle_views();
+    /// Does what a button or a key asks of the session (play or pause, restart, step, finish,
+    /// one view or four), and applies what it decided.
+    pub fn act(&mut self, ask: impl FnOnce(&mut Session)) {
+        ask(&mut self.session);
         self.apply();
     }
 
@@ -283,28 +284,6 @@ impl App {
             let _ =
                 history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&fragment));
         }
-    }
-
-    pub fn toggle_playing(&mut self) {
-        self.session.toggle_playing();
-        self.apply();
-    }
-
-    pub fn restart(&mut self) {
-        self.session.restart();
-        self.apply();
-    }
-
-    /// Grows one row, paused.
-    pub fn step(&mut self) {
-        self.session.step();
-        self.apply();
-    }
-
-    /// Grows the shell to its end at once.
-    pub fn finish(&mut self) {
-        self.session.finish();
-        self.apply();
     }
 
     /// Sets the growth speed in rows per frame from the text `speed` (part of the link; growth
