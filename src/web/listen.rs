@@ -101,9 +101,7 @@ pub(super) fn listen_canvas(app: &Shared, canvas: &EventTarget) -> Result<(), Js
 pub(super) fn listen(app: &Shared) -> Result<(), JsValue> {
     let window: EventTarget = web_sys::window().ok_or("no window")?.into();
     on(&window, "hashchange", app, |a, _: Event| a.route())?;
-    if let Some(query) =
-        web_sys::window().and_then(|w| w.match_media("(prefers-color-scheme: dark)").ok().flatten())
-    {
+    if let Some(query) = page::media(page::DARK) {
         on(&query.into(), "change", app, |a, _: Event| {
             a.theme_changed()
         })?;

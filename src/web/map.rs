@@ -113,10 +113,11 @@ impl Default for MapView {
 /// Tiles along each side of the map: fewer on a phone, in the style sheet's narrow layout
 /// (the same width as its `@media (max-width: 56rem)`).
 fn side() -> usize {
-    let narrow = web_sys::window()
-        .and_then(|w| w.match_media("(max-width: 56rem)").ok().flatten())
-        .is_some_and(|m| m.matches());
-    if narrow { PHONE_SIDE } else { SIDE }
+    if super::page::matches("(max-width: 56rem)") {
+        PHONE_SIDE
+    } else {
+        SIDE
+    }
 }
 
 impl MapView {

@@ -145,12 +145,23 @@ pub fn show_crash(text: &str) {
     signal("crashed", "true");
 }
 
+/// The media query of a dark colour scheme.
+pub const DARK: &str = "(prefers-color-scheme: dark)";
+
+/// The page's media query `query` (`None` where the browser has none).
+pub fn media(query: &str) -> Option<web_sys::MediaQueryList> {
+    web_sys::window()?.match_media(query).ok().flatten()
+}
+
+/// Whether the page's media query `query` holds.
+pub fn matches(query: &str) -> bool {
+    media(query).is_some_and(|m| m.matches())
+}
+
 /// The page's background colour as sRGB bytes, following the light or dark theme (the same
 /// values as --bg in style.css).
 pub fn background() -> [u8; 3] {
-    let dark = web_sys::window()
-        .and_then(|w| w.match_media("(prefers-color-scheme: dark)").ok().flatten())
-        .is_some_and(|m| m.matches());
+    let dark = matches(DARK);
     if dark {
         [0x16, 0x17, 0x19]
     } else {

@@ -100,13 +100,7 @@ pub fn apply_ui(ui: Ui) {
 
 /// Whether the reader asked for reduced motion.
 pub fn reduced_motion() -> bool {
-    web_sys::window()
-        .and_then(|w| {
-            w.match_media("(prefers-reduced-motion: reduce)")
-                .ok()
-                .flatten()
-        })
-        .is_some_and(|m| m.matches())
+    super::page::matches("(prefers-reduced-motion: reduce)")
 }
 
 /// The embed code of the link `fragment` (without '#') titled `name`, presented as
