@@ -208,6 +208,9 @@ struct Page {
     moving: Option<u64>,
     /// Frames the viewers replaced so far held back for the GPU.
     deferred: usize,
+    /// Views moved to the page's thread because the drawing worker said its frames stopped
+    /// reaching the screen.
+    failed_over: u32,
     /// What the page has heard of the drawing worker, and whether the worker hangs.
     link: DrawingLink,
     drawing_hung: bool,
@@ -350,7 +353,9 @@ impl Screen for SimScreen {
     }
 
     fn flush(&mut self) {
-        self.deferred += 1;
+        if self.frame < self.behind_until {
+            self.deferred += 1;
+        }
     }
 
     fn size(&self) -> (u32, u32) {
@@ -442,6 +447,7 @@ impl Page {
             shown_state: String::new(),
             moving: None,
             deferred: 0,
+            failed_over: 0,
             link: DrawingLink::default(),
             drawing_hung: false,
         }
@@ -549,6 +555,9 @@ impl Page {
             // The drawing worker says where its device stands and does nothing else; its
             // workers go on with what they hold.
             None => (None, false),
+            Some(Err(failure)) if !self.viewer.screen().stopped => {
+                return Err(format!("the viewer's frame failed: {failure}"));
+            }
             Some(Err(failure)) => {
                 // The drawing worker says why it can draw no more, and draws no more.
                 let at =
@@ -631,9 +640,16 @@ impl Page {
         self.apply(0);
         let taken = match viewer_inbox::take(news) {
             Ok(taken) => taken,
-            Err(_) => {
-                // The drawing worker's renderer failed: the view moves to the page's thread.
-                self.moving.get_or_insert(self.frame + 1);
+            Err(why) => {
+                // The drawing worker's renderer failed: the view moves to the page's thread at
+                // once (not after the worker's silence).
+                if !why.contains("Nothing drawn reaches the screen") {
+                    return Err(format!("the page heard an unexpected failure: {why}"));
+                }
+                if self.moving.is_none() {
+                    self.failed_over += 1;
+                    self.moving = Some(self.frame + 1);
+                }
                 return Ok(());
             }
         };
@@ -964,7 +980,7 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
             42 => Step::HangDrawing,
             43 => Step::Story { step: byte },
             44 => Step::GpuBehind {
-                frames: pick(60) as u8,
+                frames: 1 + pick(60) as u8,
             },
             45 => Step::GpuStops,
             _ => Step::Twice { slot: byte },
@@ -983,6 +999,8 @@ struct Went {
     moved: u32,
     /// Frames whose drawing waited for the GPU to catch up.
     deferred: usize,
+    /// Views moved because the drawing worker said its frames stopped reaching the screen.
+    failed_over: u32,
 }
 
 /// Runs `steps` on a page of `workers` workers, and lets it settle.
@@ -996,6 +1014,7 @@ fn run(workers: usize, steps: &[Step]) -> Result<Went, Failure> {
     Ok(Went {
         reopened: page.viewer.screen().reopened,
         deferred: page.deferred + page.viewer.screen().deferred,
+        failed_over: page.failed_over,
         replaced: page.workers.pool.deaths(),
         moved: page.viewers,
     })
@@ -1071,6 +1090,7 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
                 went.replaced += run.replaced;
                 went.moved += run.moved;
                 went.deferred += run.deferred;
+                went.failed_over += run.failed_over;
             }
             Err(failed) => {
                 // Quiet while the runs that shrink it panic in their turn.
@@ -1090,12 +1110,17 @@ fn any_interleaving_of_replies_faults_and_input_grows_the_shell_asked_for() {
         // The faults happen: runs that never lose a device, a worker or the drawing worker
         // would prove nothing.
         assert!(
-            went.reopened > 0 && went.replaced > 0 && went.moved > 0 && went.deferred > 0,
-            "{} renderers opened again, {} workers replaced, {} views moved, {} frames \
-             waited for the GPU in {} runs",
+            went.reopened > 0
+                && went.replaced > 0
+                && went.moved > 0
+                && went.deferred > 0
+                && went.failed_over > 0,
+            "{} renderers opened again, {} workers replaced, {} views moved ({} when the GPU's \
+             frames stopped), {} frames waited for the GPU in {} runs",
             went.reopened,
             went.replaced,
             went.moved,
+            went.failed_over,
             went.deferred,
             seeds.len()
         );
