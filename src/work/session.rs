@@ -140,7 +140,8 @@ pub struct Session {
 
 impl Session {
     /// The page's own pool replaced a worker: the count is signalled (`data-worker-deaths`)
-    /// and, from the second, the status line says so ([`Replaced::words`]).
+    /// and, from the second or when the workers are given up, the status line says so
+    /// ([`Replaced::words`]).
     pub fn page_worker_replaced(&mut self, replaced: &Replaced) {
         self.deaths.0 = replaced.deaths;
         self.signal_deaths();
