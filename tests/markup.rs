@@ -22,6 +22,16 @@ fn of_class<'a>(sections: &'a [Element], class: &str) -> Vec<&'a Element> {
         .collect()
 }
 
+/// Asserts that no heading of `place`'s groups heads two of them.
+fn each_once<T: PartialEq + std::fmt::Debug>(headings: &[T], place: &str) {
+    for (i, heading) in headings.iter().enumerate() {
+        assert!(
+            !headings[..i].contains(heading),
+            "{heading:?} twice in {place}"
+        );
+    }
+}
+
 /// The fragment a link element leads to.
 fn href(e: &Element) -> &str {
     e.get("href").expect("a link has an address")
@@ -72,9 +82,7 @@ fn every_preset_has_one_card_leading_to_it_under_its_group() {
         );
     }
     let titles: Vec<_> = sections.iter().map(|s| &s.children[0].text).collect();
-    for (i, title) in titles.iter().enumerate() {
-        assert!(!titles[..i].contains(title), "{title:?} heads two sections");
-    }
+    each_once(&titles, "the gallery");
 }
 
 #[test]
@@ -190,13 +198,7 @@ fn every_field_of_every_preset_has_one_labelled_control_of_its_kind() {
             }
         }
         let sections: Vec<_> = groups.iter().map(|g| g.children[0].text.clone()).collect();
-        for (i, section) in sections.iter().enumerate() {
-            assert!(
-                !sections[..i].contains(section),
-                "{section:?} twice in {}",
-                preset.id
-            );
-        }
+        each_once(&sections, preset.id);
     }
 }
 
@@ -221,13 +223,7 @@ fn the_map_offers_every_parameter_once_under_its_section() {
             .collect();
         assert_eq!(offered, expected, "{}", preset.id);
         let sections: Vec<_> = groups.iter().map(|g| g.get("label")).collect();
-        for (i, section) in sections.iter().enumerate() {
-            assert!(
-                !sections[..i].contains(section),
-                "{section:?} twice for {}",
-                preset.id
-            );
-        }
+        each_once(&sections, preset.id);
     }
 }
 

@@ -21,7 +21,7 @@ use crate::view::draw_pacing::{DrawPacing, FrameDraw};
 use crate::view::recording::FrameAsk;
 
 /// Why a viewer that draws nothing gives no picture.
-pub const NO_DRAWING: &str = "this browser draws no 3D here";
+const NO_DRAWING: &str = "this browser draws no 3D here";
 
 /// The workers a viewer's shells grow on, as its frame uses them: the web's pool of Web
 /// Workers (`web/workers.rs`), or the simulator's.
