@@ -186,7 +186,12 @@ impl Node {
         Self::new(Op::Controlled(children, pairs))
     }
 
+    /// The child seen through `bend`; a bend of no angle is the child itself, so that a
+    /// straight cone's placing can be pushed down to it and nothing evaluates the identity.
     pub fn warp(bend: Bend, child: Node) -> Self {
+        if bend.is_straight() {
+            return child;
+        }
         Self::new(Op::Warp(bend, Box::new(child)))
     }
 
