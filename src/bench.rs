@@ -51,7 +51,7 @@ const REPEATS: usize = 5;
 /// The median time of one call of `work`, in milliseconds, and the spread of the timings:
 /// each timing runs `work` as many times as fill [`LEAST_MS`], a count found by timing ever
 /// longer runs (a single call may be shorter than the clock's resolution). `now` must advance.
-fn timed(now: &dyn Fn() -> f64, mut work: impl FnMut()) -> (f64, f64) {
+pub fn timed(now: &dyn Fn() -> f64, mut work: impl FnMut()) -> (f64, f64) {
     let mut run = |calls: usize| {
         let start = now();
         for _ in 0..calls {

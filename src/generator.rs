@@ -411,6 +411,15 @@ impl Generator {
         self.shape.finish_apart(&mut self.mesh, &mut self.edge)
     }
 
+    /// Joins the meshes of the pieces [`Self::finish_apart`] left out, made elsewhere by a
+    /// [`crate::forms::PieceMaker`] of the same spec, one mesh for each of the pieces' groups in
+    /// the groups' order: the shell is then whole, the same bit for bit as [`Self::finish`]
+    /// grows it.
+    pub fn join_apart(&mut self, made: Vec<Mesh>) {
+        self.hash.take();
+        Pieces::join(&mut self.mesh, made);
+    }
+
     /// Steps of the shape grown so far.
     pub fn steps_done(&self) -> usize {
         self.shape.steps_done()

@@ -145,6 +145,48 @@ fn mesh_takes_a_link_in_place_of_a_preset() {
 }
 
 #[test]
+fn a_murex_meshed_on_one_two_or_five_threads_is_the_same_file_and_bad_counts_are_refused() {
+    let file = |threads: &str| {
+        let path = temp(&format!("threads-{threads}.ply"));
+        let out = run(&[
+            "mesh",
+            "--preset",
+            "murex-cabritii",
+            "--resolution",
+            "64",
+            "--threads",
+            threads,
+            "--out",
+            &path,
+        ]);
+        assert!(out.status.success(), "{threads} threads: {out:?}");
+        (std::fs::read(&path).unwrap(), out.stdout)
+    };
+    let (one, said) = file("1");
+    assert!(one.len() > 1_000_000, "{} bytes", one.len());
+    for threads in ["2", "5"] {
+        let (made, report) = file(threads);
+        assert!(made == one, "{threads} threads wrote another file");
+        assert_eq!(
+            String::from_utf8_lossy(&report).replace(&format!("threads-{threads}"), "threads-1"),
+            String::from_utf8_lossy(&said),
+            "{threads} threads"
+        );
+    }
+    for bad in ["0", "many", "65"] {
+        let out = run(&["info", "--preset", "murex-cabritii", "--threads", bad]);
+        assert_eq!(out.status.code(), Some(2), "--threads {bad}");
+        let said = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            said.contains(&format!(
+                "--threads takes a whole number from 1 to 64, not '{bad}'"
+            )),
+            "{said}"
+        );
+    }
+}
+
+#[test]
 fn bad_input_gets_one_line_and_a_non_zero_exit() {
     let out = temp("bad.stl");
     let cases: &[&[&str]] = &[

@@ -3,19 +3,19 @@
 use crate::Failure;
 
 /// One line per command, printed after a wrong command or option.
-pub const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl} [--resolution N] [--size MM] [--size-axis x|y|z] | \
+pub const USAGE: &str = "usage: seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl} [--resolution N] [--size MM] [--size-axis x|y|z] [--threads N] | \
 seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv} [--cells N] [--rows N] [--iterations N] | \
-seashells info (LINK | --preset ID | --link FRAGMENT) | seashells presets | seashells bench | seashells help [COMMAND]";
+seashells info (LINK | --preset ID | --link FRAGMENT) [--threads N] | seashells presets | seashells bench | seashells help [COMMAND]";
 
 /// The help on every command.
 const HELP: &str = "seashells: the shells of the page's gallery and links, written as files by the same core
 
 usage:
   seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl}
-                 [--resolution N] [--size MM] [--size-axis x|y|z]
+                 [--resolution N] [--size MM] [--size-axis x|y|z] [--threads N]
   seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv}
                     [--cells N] [--rows N] [--iterations N]
-  seashells info (LINK | --preset ID | --link FRAGMENT)
+  seashells info (LINK | --preset ID | --link FRAGMENT) [--threads N]
                           the shell's size and counts, and the files it would write
   seashells presets       lists every preset's ID and name
   seashells bench         times growth, patterns and meshing natively
@@ -30,7 +30,7 @@ option, preset, link or value, or a shell no file may hold), with one line on st
 why and what to change; 1 when the file could not be written (a full disk, a missing folder).";
 
 /// The help on `mesh`.
-const HELP_MESH: &str = "seashells mesh (--preset ID | --link FRAGMENT) --out FILE [--resolution N] [--size MM] [--size-axis x|y|z]
+const HELP_MESH: &str = "seashells mesh (--preset ID | --link FRAGMENT) --out FILE [--resolution N] [--size MM] [--size-axis x|y|z] [--threads N]
 
 Grows the shell to its end and writes its mesh in the format of FILE's extension: .glb (glTF
 binary, with its pattern as a texture), .ply and .3mf (colour per vertex), .obj, .stl. Prints the
@@ -43,6 +43,8 @@ mesh's vertex and triangle counts and hash (as the page shows them) and the file
                      (80 unless given): its height, or its length where it lies longer
   --size-axis x|y|z  make --size the box's side along x (across), y (front to back) or z (up,
                      the apex), as a printer's plate has them, instead of the largest
+  --threads N        threads an implicit shell's last pieces are meshed on, 1 to 64 (as many
+                     as the machine runs at once unless given): the file is the same bit for bit
 A shell whose growth stopped, one whose values take it out of the range of numbers, one whose
 whorls pass through one another, or a wall-less surface as .3mf is refused, and no file is written.";
 
@@ -56,11 +58,12 @@ activator's concentration, a line per row and a value per cell).
   --cells N, --rows N, --iterations N   override the spec's cells, rows and iterations per row";
 
 /// The help on `info`.
-const HELP_INFO: &str = "seashells info (LINK | --preset ID | --link FRAGMENT)
+const HELP_INFO: &str = "seashells info (LINK | --preset ID | --link FRAGMENT) [--threads N]
 
 Grows the shell and prints what it is: its preset and form, the mesh's vertex and triangle counts
 and hash, the pattern's cells and rows, the box it fills at the default size of 80 mm, and each
-file `mesh` would write of it with its exact size in bytes, or why it would be refused.";
+file `mesh` would write of it with its exact size in bytes, or why it would be refused.
+  --threads N   as for `mesh`: the threads an implicit shell's last pieces are meshed on";
 
 /// The help on `topic` (a command, or everything).
 pub fn help(topic: Option<&str>) -> Result<String, Failure> {

@@ -1,7 +1,7 @@
 //! `seashells info`: what a link's shell is, and what files it makes.
 
 use crate::Failure;
-use crate::mesh::grown;
+use crate::finish::{grown, threads};
 use crate::options::Options;
 use seashells_core::export::MeshFormat;
 use seashells_core::export::job::Export;
@@ -10,9 +10,9 @@ use seashells_core::export::shell::Shell;
 use seashells_core::share::link;
 
 pub fn info(args: &[String]) -> Result<(), Failure> {
-    let options = Options::parse(args, &["preset", "link"], true)?;
+    let options = Options::parse(args, &["preset", "link", "threads"], true)?;
     let (preset, spec) = options.preset_and_spec()?;
-    let generator = grown(&spec)?;
+    let generator = grown(&spec, threads(&options)?)?;
     let mesh = generator.snapshot();
     let mut lines = vec![
         format!(

@@ -12,6 +12,7 @@
 //! Exit status 0 when done, 2 when refused (one line on stderr saying why), 1 when the file
 //! could not be written.
 
+mod finish;
 mod help;
 mod info;
 mod mesh;
@@ -50,14 +51,14 @@ impl From<&str> for Failure {
     }
 }
 
-/// Prints the benchmark's figures, timed with the native clock.
+/// Prints the benchmark's figures, timed with the native clock: the core's, then the command
+/// line's own.
 fn bench() -> String {
     let origin = std::time::Instant::now();
     let now = || origin.elapsed().as_secs_f64() * 1000.0;
-    format!(
-        "native\n{}",
-        seashells_core::bench::report(&seashells_core::bench::run(&now))
-    )
+    let mut figures = seashells_core::bench::run(&now);
+    figures.extend(finish::bench(&now));
+    format!("native\n{}", seashells_core::bench::report(&figures))
 }
 
 fn list() -> String {

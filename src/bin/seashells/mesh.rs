@@ -1,22 +1,14 @@
 //! `seashells mesh`: the grown shell's mesh as a file.
 
 use crate::Failure;
+use crate::finish::{grown, threads};
 use crate::options::{Options, WRITES};
 use crate::out::Out;
 use seashells_core::export::MeshFormat;
 use seashells_core::export::job::Export;
 use seashells_core::export::print_size::{Along, PrintSize};
 use seashells_core::export::shell::Shell;
-use seashells_core::generator::Generator;
-use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
-
-/// The shell grown to its end.
-pub fn grown(spec: &ShellSpec) -> Result<Generator, Failure> {
-    let mut generator = Generator::new(spec).map_err(|e| e.to_string())?;
-    generator.finish();
-    Ok(generator)
-}
 
 /// The format `--format` names, else the one of the file's extension.
 pub fn format(options: &Options, out: &Out) -> Result<MeshFormat, Failure> {
@@ -55,7 +47,7 @@ fn size(options: &Options, format: MeshFormat) -> Result<PrintSize, Failure> {
 pub fn mesh(args: &[String]) -> Result<(), Failure> {
     let options = Options::parse(
         args,
-        &[WRITES, &["resolution", "size", "size-axis"]].concat(),
+        &[WRITES, &["resolution", "size", "size-axis", "threads"]].concat(),
         false,
     )?;
     let out = Out::new(options.required("out")?);
@@ -77,7 +69,7 @@ pub fn mesh(args: &[String]) -> Result<(), Failure> {
         }
     }
     let size = size(&options, format)?;
-    let generator = grown(&spec)?;
+    let generator = grown(&spec, threads(&options)?)?;
     let shell = Shell::new(&generator, &spec, preset, size).map_err(|e| e.to_string())?;
     let (vertices, triangles, hash) = (
         shell.mesh.vertices.len(),
