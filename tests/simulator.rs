@@ -41,16 +41,15 @@ use seashells_core::share::presentation::Layout;
 use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::device_survival::Loss;
-use seashells_core::work::drawing_link::DrawingLink;
 use seashells_core::work::pool::{Polled, Pool, PoolPlan};
 use seashells_core::work::screen::Screen;
 use seashells_core::work::session::{Edit, Effect, Heard, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_driver::{PoolWorkers, ViewerDriver};
-use seashells_core::work::viewer_inbox;
+use seashells_core::work::viewer_inbox::Inbox;
 use seashells_core::work::viewer_message::{
-    ViewerNews, decode_command, decode_news, encode_command, encode_news,
+    ViewerNews, decode_command, encode_command, encode_news,
 };
 use seashells_core::work::viewer_state::Growing;
 use seashells_core::work::viewer_status::{Device, FrameReport};
@@ -212,7 +211,7 @@ struct Page {
     /// reaching the screen.
     failed_over: u32,
     /// What the page has heard of the drawing worker, and whether the worker hangs.
-    link: DrawingLink,
+    inbox: Inbox<VideoFrame>,
     drawing_hung: bool,
 }
 
@@ -448,7 +447,7 @@ impl Page {
             moving: None,
             deferred: 0,
             failed_over: 0,
-            link: DrawingLink::default(),
+            inbox: Inbox::default(),
             drawing_hung: false,
         }
     }
@@ -512,7 +511,7 @@ impl Page {
         self.session.hold(self.covered, self.recording);
         self.apply(lag);
         self.page_takes_frames()?;
-        self.link.ticked(self.now);
+        self.inbox.ticked(self.now);
         if self.drawing_hung || self.moving.is_some() {
             // The drawing worker spins, or is being replaced: its workers go on.
             self.workers.work(self.frame, FRAME_MS, lag, rng);
@@ -601,7 +600,7 @@ impl Page {
     fn install(&mut self) {
         self.moving = None;
         self.drawing_hung = false;
-        self.link = DrawingLink::default();
+        self.inbox = Inbox::default();
         self.viewers += 1;
         self.deferred += self.viewer.screen().deferred;
         self.viewer = viewer(self.now, self.viewer.screen().reopened);
@@ -613,33 +612,27 @@ impl Page {
         self.apply(0);
     }
 
-    /// The page takes in the drawing worker's frames that reached it: the status of a frame
-    /// made before the last load reached the viewer is not of the shell shown.
+    /// The page takes in the drawing worker's frames that reached it, as the page's frame
+    /// does: the device first, then the frames (the status of a frame made before the last
+    /// load reached the viewer is not of the shell shown).
     fn page_takes_frames(&mut self) -> Result<(), Failure> {
-        let mut news = Vec::new();
         while let Some((_, bytes, video)) = self.to_page.pop_front_if(|(at, ..)| *at <= self.frame)
         {
-            let said = decode_news(&bytes).map_err(|e| e.to_string())?;
-            let device = match &said {
-                ViewerNews::Frame { device, .. } => Some(device),
-                _ => None,
-            };
-            self.link.heard(self.now, device);
-            news.push((said, video));
+            self.inbox.heard(&bytes, video, self.now)?;
         }
-        if self.link.took(!news.is_empty(), self.now).is_err() {
-            // The drawing worker is taken for hung: the view moves to the page's thread.
-            self.moving.get_or_insert(self.frame + 1);
-            return Ok(());
-        }
-        if self.session.device(self.link.device()).is_err() {
+        if self.session.device(self.inbox.device()).is_err() {
             // No device can be opened again: the page says so, and draws no more.
             self.gone = true;
             return Ok(());
         }
         self.apply(0);
-        let taken = match viewer_inbox::take(news) {
+        let taken = match self.inbox.take(self.now) {
             Ok(taken) => taken,
+            Err(why) if why.starts_with("the drawing worker has not answered") => {
+                // The drawing worker is taken for hung: the view moves to the page's thread.
+                self.moving.get_or_insert(self.frame + 1);
+                return Ok(());
+            }
             Err(why) => {
                 // The drawing worker's renderer failed: the view moves to the page's thread at
                 // once (not after the worker's silence).

@@ -13,11 +13,10 @@ use super::viewer::Viewer;
 use super::webcodecs::VideoFrame;
 use crate::render::Canvas;
 use crate::view::drawn_in::DrawnIn;
-use crate::work::drawing_link::DrawingLink;
 use crate::work::message::{Reply, Request};
 use crate::work::viewer_command::ViewCommand;
-use crate::work::viewer_inbox::{self, Taken};
-use crate::work::viewer_message::{ViewerNews, decode_news, encode_command};
+use crate::work::viewer_inbox::{Inbox, Taken};
+use crate::work::viewer_message::encode_command;
 use crate::work::viewer_status::Device;
 use js_sys::{Array, Promise, Reflect, Uint8Array};
 use std::cell::RefCell;
@@ -33,21 +32,10 @@ use web_sys::{
 /// module first) before the page draws on its own thread.
 const START_MS: i32 = 20_000;
 
-/// The news a drawing worker sent since the page last looked.
-#[derive(Default)]
-struct Inbox {
-    news: Vec<(ViewerNews, Option<VideoFrame>)>,
-    /// What the page has heard of the worker: its device's changes, its silences (the core
-    /// decides what they mean).
-    link: DrawingLink,
-    /// The worker failed to load or threw outside the viewer (why).
-    error: Option<String>,
-}
-
 /// The main viewer in a worker, as the page sees it.
 pub struct DrawingWorker {
     worker: Worker,
-    inbox: Rc<RefCell<Inbox>>,
+    inbox: Rc<RefCell<Inbox<VideoFrame>>>,
     backend: String,
     /// It panicked (and the page shows so).
     crashed: bool,
@@ -84,7 +72,7 @@ impl DrawingWorker {
         let url = format!("./drawing-worker.js{}", scope::search());
         let worker = Worker::new_with_options(&url, &options)
             .map_err(|_| "the drawing worker could not start".to_string())?;
-        let inbox: Rc<RefCell<Inbox>> = Rc::default();
+        let inbox: Rc<RefCell<Inbox<VideoFrame>>> = Rc::default();
         let opened: Rc<RefCell<Option<js_sys::Function>>> = Rc::default();
         let wait = Promise::new(&mut |resolve, _| *opened.borrow_mut() = Some(resolve));
         let (to, wake) = (Rc::clone(&inbox), Rc::clone(&opened));
@@ -95,26 +83,12 @@ impl DrawingWorker {
                 .ok()
                 .filter(|f| !f.is_undefined())
                 .map(JsCast::unchecked_into::<VideoFrame>);
-            let mut inbox = to.borrow_mut();
-            match decode_news(&Uint8Array::new(&bytes).to_vec()) {
-                Ok(news) => {
-                    let device = match &news {
-                        ViewerNews::Frame { device, .. } => Some(device),
-                        _ => None,
-                    };
-                    inbox.link.heard(now(), device);
-                    let opened = matches!(news, ViewerNews::Opened(_));
-                    inbox.news.push((news, frame));
-                    if opened && let Some(resolve) = wake.borrow_mut().take() {
-                        let _ = resolve.call0(&JsValue::NULL);
-                    }
-                }
-                Err(e) => {
-                    inbox.link.heard(now(), None);
-                    inbox
-                        .error
-                        .get_or_insert(format!("the drawing worker's news was misread: {e}"));
-                }
+            let heard = (to.borrow_mut()).heard(&Uint8Array::new(&bytes).to_vec(), frame, now());
+            // A misread message is the worker's failure, which the next frame goes through.
+            if heard == Ok(true)
+                && let Some(resolve) = wake.borrow_mut().take()
+            {
+                let _ = resolve.call0(&JsValue::NULL);
             }
         });
         let wake = Rc::clone(&opened);
@@ -126,9 +100,7 @@ impl DrawingWorker {
         let (to, wake) = (Rc::clone(&inbox), Rc::clone(&opened));
         let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(move |e: ErrorEvent| {
             e.prevent_default();
-            to.borrow_mut()
-                .error
-                .get_or_insert(format!("the drawing worker failed: {}", e.message()));
+            (to.borrow_mut()).failed(format!("the drawing worker failed: {}", e.message()));
             if let Some(resolve) = wake.borrow_mut().take() {
                 let _ = resolve.call0(&JsValue::NULL);
             }
@@ -157,10 +129,7 @@ impl DrawingWorker {
             _on_message: on_message,
             _on_error: on_error,
         };
-        if let Some(e) = this.inbox.borrow_mut().error.take() {
-            return Err(e);
-        }
-        let opened = viewer_inbox::opened(&mut this.inbox.borrow_mut().news, START_MS / 1000);
+        let opened = this.inbox.borrow_mut().opened(START_MS / 1000);
         this.backend = opened?;
         Ok(this)
     }
@@ -227,11 +196,7 @@ impl ViewerHandle {
         match self {
             ViewerHandle::Here(viewer) => viewer.survive(),
             ViewerHandle::Worker(w) => {
-                let mut inbox = w.inbox.borrow_mut();
-                if let Some(e) = inbox.error.take() {
-                    inbox.link.failed(e);
-                }
-                let device = inbox.link.device();
+                let device = w.inbox.borrow_mut().device();
                 if let Device::Reopened(backend) = &device {
                     w.backend.clone_from(backend);
                 }
@@ -249,11 +214,9 @@ impl ViewerHandle {
         if w.crashed {
             return true;
         }
-        let inbox = w.inbox.borrow();
-        let Some(message) = viewer_inbox::crash(&inbox.news).map(str::to_string) else {
+        let Some(message) = w.inbox.borrow().crash().map(str::to_string) else {
             return false;
         };
-        drop(inbox);
         w.crashed = true;
         web_sys::console::error_1(&message.clone().into());
         super::page::show_crash(&message);
@@ -264,7 +227,7 @@ impl ViewerHandle {
     /// page's frame sent.
     pub fn tick(&mut self) {
         if let ViewerHandle::Worker(w) = self {
-            w.inbox.borrow_mut().link.ticked(now());
+            w.inbox.borrow_mut().ticked(now());
             let message = js_sys::Object::new();
             let _ = Reflect::set(&message, &"tick".into(), &JsValue::TRUE);
             w.post(&message, &Array::new());
@@ -295,12 +258,7 @@ impl ViewerHandle {
                 frames: vec![viewer.run_frame()?],
                 ..Taken::default()
             }),
-            ViewerHandle::Worker(w) => {
-                let mut inbox = w.inbox.borrow_mut();
-                let any = !inbox.news.is_empty();
-                inbox.link.took(any, now())?;
-                viewer_inbox::take(inbox.news.drain(..))
-            }
+            ViewerHandle::Worker(w) => w.inbox.borrow_mut().take(now()),
         }
     }
 

@@ -2,11 +2,101 @@
 //! sent since the page's last ([`ViewerNews`], each with the video frame posted beside it, of
 //! the platform's type `F`): the viewer's frames with their recorded video frames matched,
 //! the shells it refused, what its pool said last, whether it opened and whether it panicked.
-//! A viewer on the page's own thread gives one frame of the same kind. `web/viewer_handle.rs`
-//! feeds it the worker's messages; the simulator feeds it what its drawing worker posts.
+//! A viewer on the page's own thread gives one frame of the same kind. [`Inbox`] is what the
+//! page holds of a drawing worker between its frames: `web/viewer_handle.rs` hands it the
+//! worker's messages as they come, and so does the simulator.
 
-use super::viewer_message::{PoolNews, ViewerNews};
-use super::viewer_status::FrameReport;
+use super::drawing_link::DrawingLink;
+use super::viewer_message::{PoolNews, ViewerNews, decode_news};
+use super::viewer_status::{Device, FrameReport};
+
+/// What the page has heard of its drawing worker since it last looked: the worker's news, in
+/// order, what they say of its device and its silences ([`DrawingLink`]), and a failure of the
+/// worker itself (it could not load, it threw outside the viewer, its news could not be read).
+#[derive(Debug)]
+pub struct Inbox<F> {
+    news: Vec<(ViewerNews, Option<F>)>,
+    link: DrawingLink,
+    error: Option<String>,
+}
+
+impl<F> Default for Inbox<F> {
+    fn default() -> Self {
+        Self {
+            news: Vec::new(),
+            link: DrawingLink::default(),
+            error: None,
+        }
+    }
+}
+
+impl<F> Inbox<F> {
+    /// A message of the worker at `now`: its news as the bytes it posted, and the video frame
+    /// posted beside them. Says whether it is the worker's answer to opening its renderer;
+    /// fails, and keeps the failure for [`Inbox::device`], when the news cannot be read.
+    pub fn heard(&mut self, bytes: &[u8], video: Option<F>, now: f64) -> Result<bool, String> {
+        match decode_news(bytes) {
+            Ok(news) => {
+                let device = match &news {
+                    ViewerNews::Frame { device, .. } => Some(device),
+                    _ => None,
+                };
+                self.link.heard(now, device);
+                let opened = matches!(news, ViewerNews::Opened(_));
+                self.news.push((news, video));
+                Ok(opened)
+            }
+            Err(e) => {
+                self.link.heard(now, None);
+                let why = format!("the drawing worker's news was misread: {e}");
+                self.error.get_or_insert(why.clone());
+                Err(why)
+            }
+        }
+    }
+
+    /// The worker failed outside its viewer (`why`: it could not load, or threw); the first
+    /// failure is kept.
+    pub fn failed(&mut self, why: String) {
+        self.error.get_or_insert(why);
+    }
+
+    /// Whether the worker opened its renderer: the backend, or why not (its own failure
+    /// first), or that it said nothing in `waited_s` seconds.
+    pub fn opened(&mut self, waited_s: i32) -> Result<String, String> {
+        match self.error.take() {
+            Some(why) => Err(why),
+            None => opened(&mut self.news, waited_s),
+        }
+    }
+
+    /// The state of the worker's device as the page goes through it this frame (see
+    /// [`DrawingLink::device`]); a failure of the worker itself is its device gone.
+    pub fn device(&mut self) -> Device {
+        if let Some(why) = self.error.take() {
+            self.link.failed(why);
+        }
+        self.link.device()
+    }
+
+    /// The first panic among the news not yet taken: the message the page shows as its own.
+    pub fn crash(&self) -> Option<&str> {
+        crash(&self.news)
+    }
+
+    /// The page sent the worker a frame at `now`.
+    pub fn ticked(&mut self, now: f64) {
+        self.link.ticked(now);
+    }
+
+    /// What the page takes at `now` of the news since its last frame (see [`take`]); fails
+    /// with the words to show when the renderer failed, or when the worker has said nothing
+    /// for [`super::drawing_link::SILENT_MS`] of frames sent to it.
+    pub fn take(&mut self, now: f64) -> Result<Taken<F>, String> {
+        self.link.took(!self.news.is_empty(), now)?;
+        take(self.news.drain(..))
+    }
+}
 
 /// One frame of the viewer: what a worker posts of it, and a recording's video frame asked
 /// for, drawn (or why it could not be).
@@ -42,9 +132,7 @@ impl<F> Default for Taken<F> {
 /// Sorts `news` into what the page takes: a frame's video frame is the one posted beside it
 /// when the frame says it drew one (else why not, or that it never arrived). Fails with the
 /// words to show when the viewer's renderer failed.
-pub fn take<F>(
-    news: impl IntoIterator<Item = (ViewerNews, Option<F>)>,
-) -> Result<Taken<F>, String> {
+fn take<F>(news: impl IntoIterator<Item = (ViewerNews, Option<F>)>) -> Result<Taken<F>, String> {
     let mut taken = Taken::default();
     for (news, video) in news {
         match news {
@@ -73,7 +161,7 @@ pub fn take<F>(
 }
 
 /// The first panic among `news`: the message the page shows as its own.
-pub fn crash<F>(news: &[(ViewerNews, F)]) -> Option<&str> {
+fn crash<F>(news: &[(ViewerNews, F)]) -> Option<&str> {
     news.iter().find_map(|(n, _)| match n {
         ViewerNews::Crashed(message) => Some(message.as_str()),
         _ => None,
@@ -82,7 +170,7 @@ pub fn crash<F>(news: &[(ViewerNews, F)]) -> Option<&str> {
 
 /// Whether the drawing worker opened its renderer, taking its answer out of `news`: the
 /// backend, or why it could not, or (no answer after `waited_s` seconds) that it said nothing.
-pub fn opened<F>(news: &mut Vec<(ViewerNews, F)>, waited_s: i32) -> Result<String, String> {
+fn opened<F>(news: &mut Vec<(ViewerNews, F)>, waited_s: i32) -> Result<String, String> {
     let at = news
         .iter()
         .position(|(n, _)| matches!(n, ViewerNews::Opened(_)));
@@ -95,7 +183,6 @@ pub fn opened<F>(news: &mut Vec<(ViewerNews, F)>, waited_s: i32) -> Result<Strin
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::work::viewer_status::Device;
 
     fn frame(loads: u32, recorded: Option<Result<(), String>>) -> ViewerNews {
         ViewerNews::Frame {
@@ -183,5 +270,53 @@ mod tests {
         news.push((ViewerNews::Crashed("panicked at growth".into()), ()));
         news.push((ViewerNews::Crashed("a second panic".into()), ()));
         assert_eq!(crash(&news), Some("panicked at growth"));
+    }
+
+    #[test]
+    fn the_inbox_hears_the_worker_and_its_failures_and_its_silence() {
+        use crate::work::drawing_link::SILENT_MS;
+        use crate::work::viewer_message::encode_news;
+        let mut inbox: Inbox<()> = Inbox::default();
+        let opening = encode_news(&ViewerNews::Opened(Ok("WebGPU".into())));
+        assert_eq!(
+            inbox.heard(&encode_news(&frame(1, None)), None, 0.0),
+            Ok(false)
+        );
+        assert_eq!(
+            inbox.heard(&opening, None, 0.0),
+            Ok(true),
+            "the answer to opening"
+        );
+        assert_eq!(inbox.opened(20), Ok("WebGPU".to_string()));
+        assert_eq!(inbox.take(0.0).map(|t| t.frames.len()), Ok(1));
+        // Frames sent and nothing heard: taken for hung only after SILENT_MS.
+        inbox.ticked(1.0);
+        assert!(inbox.take(SILENT_MS).is_ok());
+        let silent = inbox.take(SILENT_MS + 2.0).err().unwrap_or_default();
+        assert!(
+            silent.starts_with("the drawing worker has not answered"),
+            "{silent}"
+        );
+        // News that cannot be read is the worker's failure: its device is gone.
+        let misread = inbox.heard(&[0xff, 0xff, 0xff], None, 3.0);
+        assert!(misread.is_err_and(|e| e.contains("misread")));
+        assert_eq!(
+            inbox.device(),
+            Device::Ready,
+            "first the change heard before it"
+        );
+        assert!(matches!(inbox.device(), Device::Gone(why) if why.contains("misread")));
+        // A worker that failed to load answers opening with its failure, kept once.
+        let mut failed: Inbox<()> = Inbox::default();
+        failed.failed("the drawing worker failed: no module".into());
+        failed.failed("a second failure".into());
+        assert_eq!(
+            failed.opened(20),
+            Err("the drawing worker failed: no module".into())
+        );
+        assert_eq!(
+            failed.opened(20),
+            Err("the drawing worker said nothing in 20 s".into())
+        );
     }
 }
