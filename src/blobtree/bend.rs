@@ -218,35 +218,6 @@ mod tests {
     }
 
     #[test]
-    fn a_straight_bend_is_its_child_and_a_placed_straight_cone_one_primitive() {
-        use crate::blobtree::blob_tree::{Node, Op};
-        use crate::blobtree::primitive::Primitive;
-        use crate::blobtree::texture_blend::Texture;
-        use glam::{DAffine3, DQuat};
-        let cone = Node::leaf(
-            Primitive::Cone {
-                from: DVec3::ZERO,
-                to: DVec3::X * 2.0,
-                radii: [0.4, 0.2],
-            },
-            Texture::around(0.0),
-        );
-        assert_eq!(Node::warp(Bend::new(0.0, 2.0), cone.clone()), cone);
-        let rigid = DAffine3::from_rotation_translation(
-            DQuat::from_rotation_z(0.7),
-            DVec3::new(1.0, -2.0, 0.5),
-        );
-        let placed = Node::transform(rigid, Node::warp(Bend::new(0.0, 2.0), cone.clone()));
-        assert!(matches!(placed.op, Op::Leaf(..)), "{:?}", placed.op);
-        let bent = Node::transform(rigid, Node::warp(Bend::new(0.3, 2.0), cone.clone()));
-        assert!(matches!(bent.op, Op::Transform(..)), "{:?}", bent.op);
-        for q in UNBENT {
-            let (p, through) = (rigid.transform_point3(q), cone.field(q));
-            assert!((placed.field(p) - through).abs() < 1e-12, "at {q}");
-        }
-    }
-
-    #[test]
     fn the_tip_turns_by_the_angle() {
         let bend = Bend::new(30f64.to_radians(), 1.0);
         let a = bend.forward(DVec3::new(1.0, 0.0, 0.0));

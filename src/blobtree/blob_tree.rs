@@ -711,3 +711,38 @@ pub struct Probe {
     pub gradient: DVec3,
     pub paint: Paint,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DQuat;
+
+    #[test]
+    fn a_straight_bend_is_its_child_and_a_placed_straight_cone_one_primitive() {
+        let cone = Node::leaf(
+            Primitive::Cone {
+                from: DVec3::ZERO,
+                to: DVec3::X * 2.0,
+                radii: [0.4, 0.2],
+            },
+            Texture::around(0.0),
+        );
+        assert_eq!(Node::warp(Bend::new(0.0, 2.0), cone.clone()), cone);
+        let rigid = DAffine3::from_rotation_translation(
+            DQuat::from_rotation_z(0.7),
+            DVec3::new(1.0, -2.0, 0.5),
+        );
+        let placed = Node::transform(rigid, Node::warp(Bend::new(0.0, 2.0), cone.clone()));
+        assert!(matches!(placed.op, Op::Leaf(..)), "{:?}", placed.op);
+        let bent = Node::transform(rigid, Node::warp(Bend::new(0.3, 2.0), cone.clone()));
+        assert!(matches!(bent.op, Op::Transform(..)), "{:?}", bent.op);
+        for q in [
+            DVec3::new(-0.5, 0.1, 0.2),
+            DVec3::new(0.7, -0.2, 0.0),
+            DVec3::new(1.9, 0.3, -0.1),
+        ] {
+            let (p, through) = (rigid.transform_point3(q), cone.field(q));
+            assert!((placed.field(p) - through).abs() < 1e-12, "at {q}");
+        }
+    }
+}
