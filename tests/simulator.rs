@@ -43,7 +43,7 @@ use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::device_survival::Loss;
 use seashells_core::work::pool::{Polled, Pool, PoolPlan};
 use seashells_core::work::screen::Screen;
-use seashells_core::work::session::{Edit, Effect, Heard, Session};
+use seashells_core::work::session::{Edit, Effect, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_driver::{PoolWorkers, ViewerDriver};
@@ -646,22 +646,14 @@ impl Page {
                 return Ok(());
             }
         };
-        let mut heard = Heard {
-            refused: taken.refused,
-            ..Heard::default()
-        };
-        for frame in taken.frames {
-            if let Some(recorded) = frame.recorded {
-                recorded?;
-                if self.recording {
-                    self.drawn_frames += 1;
-                }
-            }
-            let report = frame.report;
-            (heard.statuses).push((report.loads, report.status, report.drawn));
-        }
         let now = self.now;
-        (self.session).heard(heard, self.covered, self.recording, now);
+        let hearing = (self.session).hear(taken, self.covered, self.recording, now);
+        if let Some(recorded) = hearing.recorded {
+            recorded?;
+            if self.recording {
+                self.drawn_frames += 1;
+            }
+        }
         self.apply(0);
         // What the page shows is of the shell it shows.
         if let (Some(shell), Some((preset, _))) =

@@ -10,8 +10,9 @@ use super::pool::Replaced;
 use super::shell_change::{ShellChange, Shown};
 use super::status_readout::{Readout, Say};
 use super::viewer_command::{PresetSpec, ViewCommand};
+use super::viewer_inbox::Taken;
 use super::viewer_message::PoolNews;
-use super::viewer_status::{Device, ViewStatus};
+use super::viewer_status::{Device, FrameReport, ViewStatus};
 use crate::presets::Preset;
 use crate::share::link::{self, Decoded};
 use crate::share::presentation::Presentation;
@@ -86,13 +87,24 @@ pub enum Effect {
 
 /// What the viewer said since the page's last frame.
 #[derive(Debug, Default)]
-pub struct Heard {
+struct Heard {
     /// Each of its frames: the loads it had taken, what it said of itself, and whether it drew
     /// the shell.
-    pub statuses: Vec<(u32, ViewStatus, bool)>,
+    statuses: Vec<(u32, ViewStatus, bool)>,
     /// Shells it could not build or grow: the loads it had taken when it said so (none: said
     /// whatever was loaded), and why.
-    pub refused: Vec<(Option<u32>, String)>,
+    refused: Vec<(Option<u32>, String)>,
+}
+
+/// The viewer's frames as the page's frame hears them ([`Session::hear`]): the task for the
+/// rest of the frame, each frame's report for what the page shows of it beside the session (a
+/// file's progress, a notice, the planar view's updates), and a recording's video frame, the
+/// last one drawn.
+#[derive(Debug)]
+pub struct Hearing<F> {
+    pub task: FrameTask,
+    pub reports: Vec<FrameReport>,
+    pub recorded: Option<Result<F, String>>,
 }
 
 /// What the rest of the page's frame does, once it has heard its viewer ([`Session::heard`]).
@@ -152,7 +164,7 @@ impl Session {
 
     /// What the drawing worker's pool says of itself: its status line while none of its
     /// workers was replaced, else the count and, from the second, the words.
-    pub fn drawing_pool_said(&mut self, pool: PoolNews) {
+    fn drawing_pool_said(&mut self, pool: PoolNews) {
         if pool.deaths == 0 {
             self.effects.push(Effect::Text(WORKERS_STATUS, pool.status));
             return;
@@ -590,13 +602,47 @@ impl Session {
         self.signal("state", "error");
     }
 
+    /// What the page's frame takes from its viewer (`taken`, with the map or breeding
+    /// `covered` the shell and a recording under way or not): what the drawing worker's pool
+    /// said of itself, then the viewer's frames and refusals ([`Session::heard`]).
+    pub fn hear<F>(
+        &mut self,
+        taken: Taken<F>,
+        covered: bool,
+        recording: bool,
+        now: f64,
+    ) -> Hearing<F> {
+        if let Some(pool) = taken.pool {
+            self.drawing_pool_said(pool);
+        }
+        let mut heard = Heard {
+            refused: taken.refused,
+            ..Heard::default()
+        };
+        let (mut reports, mut recorded) = (Vec::new(), None);
+        for frame in taken.frames {
+            let report = frame.report;
+            (heard.statuses).push((report.loads, report.status.clone(), report.drawn));
+            reports.push(report);
+            if frame.recorded.is_some() {
+                recorded = frame.recorded;
+            }
+        }
+        let task = self.heard(heard, covered, recording, now);
+        Hearing {
+            task,
+            reports,
+            recorded,
+        }
+    }
+
     /// The page's frame after its viewer's frames came in (`heard`, with the shells the viewer
     /// refused since): a refusal of the shell shown is said (one of a shell left since is not);
     /// then the frame hands a video frame to a recording under way, or draws the gallery's
     /// pictures, or (the address written when due) the tiles of a map or breeding covering the
     /// shell; else the last of the viewer's frames of the shell shown is shown, drawn when any
     /// of them drew it.
-    pub fn heard(&mut self, frames: Heard, covered: bool, recording: bool, now: f64) -> FrameTask {
+    fn heard(&mut self, frames: Heard, covered: bool, recording: bool, now: f64) -> FrameTask {
         for (loads, why) in frames.refused {
             if loads.is_none_or(|l| self.is_current(l)) {
                 self.refused(why);
@@ -758,6 +804,33 @@ mod tests {
     }
 
     #[test]
+    fn the_page_hears_every_frames_report_and_keeps_the_last_video_frame_drawn() {
+        use crate::work::viewer_inbox::ViewFrame;
+        let mut session = Session::default();
+        let frame = |loads: u32, recorded: Option<Result<&'static str, String>>| ViewFrame {
+            report: FrameReport {
+                loads,
+                notice: Some(format!("frame of load {loads}")),
+                ..FrameReport::default()
+            },
+            recorded,
+        };
+        let taken = Taken {
+            frames: vec![
+                frame(0, Some(Ok("first"))),
+                frame(0, Some(Ok("second"))),
+                frame(0, None),
+            ],
+            ..Taken::default()
+        };
+        let hearing = session.hear(taken, false, true, 0.0);
+        assert_eq!(hearing.task, FrameTask::Record);
+        let notices: Vec<_> = (hearing.reports.iter()).map(|r| r.notice.clone()).collect();
+        assert_eq!(notices, vec![Some("frame of load 0".to_string()); 3]);
+        assert_eq!(hearing.recorded, Some(Ok("second")), "the last drawn");
+    }
+
+    #[test]
     fn the_workers_replaced_in_both_pools_are_counted_and_said_from_the_second() {
         let mut session = Session::default();
         let texts = |effects: &[Effect]| -> Vec<String> {
@@ -774,7 +847,15 @@ mod tests {
             deaths,
             words: words.map(str::to_string),
         };
-        session.drawing_pool_said(news(0, None));
+        // The drawing worker's pool speaks through the frame's news, as the page hears it.
+        let said = |session: &mut Session, pool| {
+            let taken: Taken<()> = Taken {
+                pool: Some(pool),
+                ..Taken::default()
+            };
+            session.hear(taken, false, false, 0.0);
+        };
+        said(&mut session, news(0, None));
         let effects = session.take_effects();
         assert_eq!(texts(&effects), ["Growing on 3 workers."]);
         assert!(
@@ -793,7 +874,7 @@ mod tests {
             texts(&effects).is_empty(),
             "the first death is redone silently"
         );
-        session.drawing_pool_said(news(2, Some("A worker stopped twice.")));
+        said(&mut session, news(2, Some("A worker stopped twice.")));
         let effects = session.take_effects();
         assert_eq!(signals(&effects), [("workerDeaths", "3".to_string())]);
         assert_eq!(texts(&effects), ["A worker stopped twice."]);

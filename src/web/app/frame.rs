@@ -7,9 +7,8 @@ use crate::web::activity;
 use crate::web::clock::now;
 use crate::web::page::{show_message, signal};
 use crate::work::message::{Reply, Request};
-use crate::work::session::{FrameTask, Heard};
+use crate::work::session::{FrameTask, Hearing};
 use crate::work::viewer_driver::PoolWorkers;
-use crate::work::viewer_inbox::Taken;
 
 impl App {
     /// One animation frame.
@@ -41,28 +40,20 @@ impl App {
         let covered = self.covered();
         self.session.hold(covered, self.recording.is_some());
         self.apply();
-        let Taken {
-            frames,
-            refused,
-            pool,
-        } = match self.viewer.frames() {
+        let taken = match self.viewer.frames() {
             Ok(taken) => taken,
             Err(why) => {
                 self.fall_back(why);
                 return Ok(());
             }
         };
-        if let Some(pool) = pool {
-            self.session.drawing_pool_said(pool);
-            self.apply();
-        }
-        let mut heard = Heard {
-            refused,
-            ..Heard::default()
-        };
-        let mut recorded = None;
-        for frame in frames {
-            let report = frame.report;
+        let recording = self.recording.is_some();
+        let Hearing {
+            task,
+            reports,
+            recorded,
+        } = (self.session).hear(taken, covered, recording, now());
+        for report in reports {
             self.downloads.show(report.file);
             if let Some(notice) = report.notice {
                 show_message(&notice);
@@ -72,12 +63,7 @@ impl App {
                     planar.apply(update);
                 }
             }
-            (heard.statuses).push((report.loads, report.status, report.drawn));
-            if let Some(frame) = frame.recorded {
-                recorded = Some(frame);
-            }
         }
-        let task = (self.session).heard(heard, covered, self.recording.is_some(), now());
         self.apply();
         match task {
             FrameTask::Record => self.record_frame(recorded),
