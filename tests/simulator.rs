@@ -47,7 +47,7 @@ use seashells_core::work::session::{Edit, Effect, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_driver::{PoolWorkers, ViewerDriver};
-use seashells_core::work::viewer_inbox::Inbox;
+use seashells_core::work::viewer_inbox::{Inbox, Unheard};
 use seashells_core::work::viewer_message::{
     ViewerNews, decode_command, encode_command, encode_news,
 };
@@ -628,12 +628,12 @@ impl Page {
         self.apply(0);
         let taken = match self.inbox.take(self.now) {
             Ok(taken) => taken,
-            Err(why) if why.starts_with("the drawing worker has not answered") => {
+            Err(Unheard::Silent(_)) => {
                 // The drawing worker is taken for hung: the view moves to the page's thread.
                 self.moving.get_or_insert(self.frame + 1);
                 return Ok(());
             }
-            Err(why) => {
+            Err(Unheard::Failed(why)) => {
                 // The drawing worker's renderer failed: the view moves to the page's thread at
                 // once (not after the worker's silence).
                 if !why.contains("Nothing drawn reaches the screen") {

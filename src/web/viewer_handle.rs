@@ -84,8 +84,9 @@ impl DrawingWorker {
                 .filter(|f| !f.is_undefined())
                 .map(JsCast::unchecked_into::<VideoFrame>);
             let heard = (to.borrow_mut()).heard(&Uint8Array::new(&bytes).to_vec(), frame, now());
-            // A misread message is the worker's failure, which the next frame goes through.
-            if heard == Ok(true)
+            // The answer to opening, or a message misread (the worker's failure, which the
+            // start or the next frame goes through), ends the wait.
+            if heard != Ok(false)
                 && let Some(resolve) = wake.borrow_mut().take()
             {
                 let _ = resolve.call0(&JsValue::NULL);
@@ -258,7 +259,9 @@ impl ViewerHandle {
                 frames: vec![viewer.run_frame()?],
                 ..Taken::default()
             }),
-            ViewerHandle::Worker(w) => w.inbox.borrow_mut().take(now()),
+            ViewerHandle::Worker(w) => {
+                (w.inbox.borrow_mut().take(now())).map_err(|e| e.to_string())
+            }
         }
     }
 

@@ -3,8 +3,8 @@
 //! device was lost, then that it is back); a fresh canvas asked for once, not on every frame
 //! the worker asks again until the canvas reaches it; and silence: a worker the page sends
 //! frames to that says nothing for [`SILENT_MS`] is taken for hung, and the view moves to the
-//! page's thread. `web/viewer_handle.rs` feeds it the worker's messages; the simulator hears a
-//! lagging worker through it.
+//! page's thread. The page's [`super::viewer_inbox::Inbox`] holds it and feeds it the worker's
+//! messages, on the page as in the simulator.
 
 use super::viewer_status::Device;
 use std::collections::VecDeque;

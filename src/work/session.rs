@@ -98,8 +98,8 @@ struct Heard {
 
 /// The viewer's frames as the page's frame hears them ([`Session::hear`]): the task for the
 /// rest of the frame, each frame's report for what the page shows of it beside the session (a
-/// file's progress, a notice, the planar view's updates), and a recording's video frame, the
-/// last one drawn.
+/// file's progress, a notice, the planar view's updates), and a recording's video frame: the
+/// last one the frames carry, or the first failure among them (the recording then fails).
 #[derive(Debug)]
 pub struct Hearing<F> {
     pub task: FrameTask,
@@ -107,7 +107,7 @@ pub struct Hearing<F> {
     pub recorded: Option<Result<F, String>>,
 }
 
-/// What the rest of the page's frame does, once it has heard its viewer ([`Session::heard`]).
+/// What the rest of the page's frame does, once it has heard its viewer ([`Session::hear`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FrameTask {
     /// A recording is under way: the frame hands it the viewer's video frame.
@@ -604,7 +604,8 @@ impl Session {
 
     /// What the page's frame takes from its viewer (`taken`, with the map or breeding
     /// `covered` the shell and a recording under way or not): what the drawing worker's pool
-    /// said of itself, then the viewer's frames and refusals ([`Session::heard`]).
+    /// said of itself, then the viewer's frames and refusals: a refusal of the shell shown is
+    /// said, then the frame's task is chosen and the status shown (see `Session::heard`).
     pub fn hear<F>(
         &mut self,
         taken: Taken<F>,
@@ -624,7 +625,7 @@ impl Session {
             let report = frame.report;
             (heard.statuses).push((report.loads, report.status.clone(), report.drawn));
             reports.push(report);
-            if frame.recorded.is_some() {
+            if !matches!(recorded, Some(Err(_))) && frame.recorded.is_some() {
                 recorded = frame.recorded;
             }
         }
@@ -804,7 +805,7 @@ mod tests {
     }
 
     #[test]
-    fn the_page_hears_every_frames_report_and_keeps_the_last_video_frame_drawn() {
+    fn the_page_hears_every_frames_report_and_keeps_the_last_video_frame_or_a_failure() {
         use crate::work::viewer_inbox::ViewFrame;
         let mut session = Session::default();
         let frame = |loads: u32, recorded: Option<Result<&'static str, String>>| ViewFrame {
@@ -828,6 +829,20 @@ mod tests {
         let notices: Vec<_> = (hearing.reports.iter()).map(|r| r.notice.clone()).collect();
         assert_eq!(notices, vec![Some("frame of load 0".to_string()); 3]);
         assert_eq!(hearing.recorded, Some(Ok("second")), "the last drawn");
+        let failing = Taken {
+            frames: vec![
+                frame(0, Some(Ok("first"))),
+                frame(0, Some(Err("too big".into()))),
+                frame(0, Some(Ok("third"))),
+            ],
+            ..Taken::default()
+        };
+        let hearing = session.hear(failing, false, true, 0.0);
+        assert_eq!(
+            hearing.recorded,
+            Some(Err("too big".into())),
+            "a failure wins"
+        );
     }
 
     #[test]

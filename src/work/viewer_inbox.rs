@@ -10,6 +10,24 @@ use super::drawing_link::DrawingLink;
 use super::viewer_message::{PoolNews, ViewerNews, decode_news};
 use super::viewer_status::{Device, FrameReport};
 
+/// Why the page takes nothing more from its drawing worker: the view then moves to the page's
+/// thread.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Unheard {
+    /// It said nothing for [`super::drawing_link::SILENT_MS`] of frames sent to it (in words).
+    Silent(String),
+    /// Its renderer failed (why).
+    Failed(String),
+}
+
+impl std::fmt::Display for Unheard {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Unheard::Silent(words) | Unheard::Failed(words) => f.write_str(words),
+        }
+    }
+}
+
 /// What the page has heard of its drawing worker since it last looked: the worker's news, in
 /// order, what they say of its device and its silences ([`DrawingLink`]), and a failure of the
 /// worker itself (it could not load, it threw outside the viewer, its news could not be read).
@@ -90,11 +108,12 @@ impl<F> Inbox<F> {
     }
 
     /// What the page takes at `now` of the news since its last frame (see [`take`]); fails
-    /// with the words to show when the renderer failed, or when the worker has said nothing
-    /// for [`super::drawing_link::SILENT_MS`] of frames sent to it.
-    pub fn take(&mut self, now: f64) -> Result<Taken<F>, String> {
-        self.link.took(!self.news.is_empty(), now)?;
-        take(self.news.drain(..))
+    /// when the worker has gone silent or its renderer failed.
+    pub fn take(&mut self, now: f64) -> Result<Taken<F>, Unheard> {
+        (self.link)
+            .took(!self.news.is_empty(), now)
+            .map_err(Unheard::Silent)?;
+        take(self.news.drain(..)).map_err(Unheard::Failed)
     }
 }
 
@@ -292,10 +311,10 @@ mod tests {
         // Frames sent and nothing heard: taken for hung only after SILENT_MS.
         inbox.ticked(1.0);
         assert!(inbox.take(SILENT_MS).is_ok());
-        let silent = inbox.take(SILENT_MS + 2.0).err().unwrap_or_default();
+        let silent = inbox.take(SILENT_MS + 2.0).err();
         assert!(
-            silent.starts_with("the drawing worker has not answered"),
-            "{silent}"
+            matches!(&silent, Some(Unheard::Silent(words)) if words.starts_with("the drawing worker has not answered")),
+            "{silent:?}"
         );
         // News that cannot be read is the worker's failure: its device is gone.
         let misread = inbox.heard(&[0xff, 0xff, 0xff], None, 3.0);

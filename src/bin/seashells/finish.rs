@@ -12,16 +12,23 @@ use seashells_core::mesh::Mesh;
 use seashells_core::presets::presets;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
-use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, PoisonError};
 
 /// Most threads `--threads` may ask for.
 const MOST_THREADS: usize = 64;
 
-/// The threads `--threads` asks for, else as many as the machine runs at once.
+/// Most threads used unless `--threads` asks for more: each holds its own copy of the model,
+/// and the page's pool stops at as many workers.
+const MOST_BY_DEFAULT: usize = 8;
+
+/// The threads `--threads` asks for, else as many as the machine runs at once, at most
+/// [`MOST_BY_DEFAULT`].
 pub fn threads(options: &Options) -> Result<usize, Failure> {
     match options.get("threads") {
-        None => Ok(std::thread::available_parallelism().map_or(1, |n| n.get())),
+        None => Ok(std::thread::available_parallelism()
+            .map_or(1, |n| n.get())
+            .min(MOST_BY_DEFAULT)),
         Some(text) => match text.parse::<usize>() {
             Ok(n @ 1..=MOST_THREADS) => Ok(n),
             _ => Err(format!(
@@ -59,25 +66,30 @@ pub fn grown(spec: &ShellSpec, threads: usize) -> Result<Generator, Failure> {
             };
             let mut work = maker.start(pieces.step, ids);
             maker.work(&mut work, &mut || true);
-            *made[index].lock().map_err(|e| e.to_string())? = maker.finished(work);
+            *made[index].lock().unwrap_or_else(PoisonError::into_inner) = maker.finished(work);
         }
     };
-    std::thread::scope(|scope| {
+    // A thread that panicked is a bug: its panic goes on as it would on one thread.
+    let results: Vec<Result<(), String>> = std::thread::scope(|scope| {
         let handles: Vec<_> = (0..threads.min(groups.len()))
             .map(|_| scope.spawn(work))
             .collect();
-        handles.into_iter().try_for_each(|handle| {
-            handle
-                .join()
-                .map_err(|_| Failure::Failed("a thread meshing the shell failed".into()))?
-                .map_err(Failure::from)
-        })
-    })?;
-    let made = made
-        .into_iter()
-        .map(Mutex::into_inner)
-        .collect::<Result<_, _>>()
-        .map_err(|e| e.to_string())?;
+        (handles.into_iter())
+            .map(|handle| {
+                handle
+                    .join()
+                    .unwrap_or_else(|e| std::panic::resume_unwind(e))
+            })
+            .collect()
+    });
+    if let Some(why) = results.into_iter().find_map(Result::err) {
+        return Err(Failure::Failed(format!(
+            "the shell could not be meshed on {threads} threads: {why}"
+        )));
+    }
+    let made = (made.into_iter())
+        .map(|m| m.into_inner().unwrap_or_else(PoisonError::into_inner))
+        .collect();
     generator.join_apart(made);
     Ok(generator)
 }

@@ -43,8 +43,9 @@ mesh's vertex and triangle counts and hash (as the page shows them) and the file
                      (80 unless given): its height, or its length where it lies longer
   --size-axis x|y|z  make --size the box's side along x (across), y (front to back) or z (up,
                      the apex), as a printer's plate has them, instead of the largest
-  --threads N        threads an implicit shell's last pieces are meshed on, 1 to 64 (as many
-                     as the machine runs at once unless given): the file is the same bit for bit
+  --threads N        threads an implicit shell's last pieces are meshed on, 1 to 64 (unless
+                     given, as many as the machine runs at once, at most 8); the file is the
+                     same bit for bit on any number
 A shell whose growth stopped, one whose values take it out of the range of numbers, one whose
 whorls pass through one another, or a wall-less surface as .3mf is refused, and no file is written.";
 

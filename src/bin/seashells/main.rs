@@ -1,10 +1,10 @@
 //! `seashells`: the native exporter on the same core as the page.
 //!
 //!     seashells mesh (--preset ID | --link FRAGMENT) --out FILE.{glb,ply,3mf,obj,stl}
-//!                    [--resolution N] [--size MM] [--size-axis x|y|z]
+//!                    [--resolution N] [--size MM] [--size-axis x|y|z] [--threads N]
 //!     seashells pattern (--preset ID | --link FRAGMENT) --out FILE.{png,csv}
 //!                       [--cells N] [--rows N] [--iterations N]
-//!     seashells info (LINK | --preset ID | --link FRAGMENT)
+//!     seashells info (LINK | --preset ID | --link FRAGMENT) [--threads N]
 //!     seashells presets
 //!     seashells bench
 //!     seashells help [COMMAND]
