@@ -49,8 +49,9 @@ const LEAST_MS: f64 = 250.0;
 const REPEATS: usize = 5;
 
 /// The median time of one call of `work`, in milliseconds, and the spread of the timings:
-/// each timing runs `work` as many times as fill `LEAST_MS` (250 ms), a count found by timing ever
-/// longer runs (a single call may be shorter than the clock's resolution). `now` must advance.
+/// each timing runs `work` as many times as fill `LEAST_MS` (250 ms), a count found by timing
+/// ever longer runs (a single call may be shorter than the clock's resolution). `now` must
+/// advance.
 pub fn timed(now: &dyn Fn() -> f64, mut work: impl FnMut()) -> (f64, f64) {
     let mut run = |calls: usize| {
         let start = now();

@@ -312,8 +312,9 @@ mod tests {
         inbox.ticked(1.0);
         assert!(inbox.take(SILENT_MS).is_ok());
         let silent = inbox.take(SILENT_MS + 2.0).err();
+        let answered = "the drawing worker has not answered";
         assert!(
-            matches!(&silent, Some(Unheard::Silent(words)) if words.starts_with("the drawing worker has not answered")),
+            matches!(&silent, Some(Unheard::Silent(words)) if words.starts_with(answered)),
             "{silent:?}"
         );
         // News that cannot be read is the worker's failure: its device is gone.
