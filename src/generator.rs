@@ -155,7 +155,7 @@ pub fn pattern_alone(
     let lengths: &[Option<f64>] = match spec.pattern.edge_growth {
         EdgeGrowth::Off => &[],
         EdgeGrowth::Uniform => rims
-            .of(spec, spec.growth.rows.max(2) as usize)
+            .of(spec, spec.growth.rows_grown())
             .map_err(BuildError::Shape)?,
     };
     PatternRun::new(spec, |row| lengths.get(row).copied().flatten()).map_err(BuildError::Pattern)
@@ -163,14 +163,14 @@ pub fn pattern_alone(
 
 impl Generator {
     pub fn new(spec: &ShellSpec) -> Result<Self, BuildError> {
-        let rows = spec.growth.rows.max(2) as usize;
+        let rows = spec.growth.rows_grown();
         Self::with_shape(spec, rows, shape_for(spec, rows))
     }
 
     /// The growth of a picture of `spec` `pixels` wide: the same pattern, on a mesh no finer
     /// than the picture shows ([`picture_shape_for`]).
     pub fn picture(spec: &ShellSpec, pixels: u32) -> Result<Self, BuildError> {
-        let rows = spec.growth.rows.max(2) as usize;
+        let rows = spec.growth.rows_grown();
         Self::with_shape(spec, rows, picture_shape_for(spec, rows, pixels))
     }
 

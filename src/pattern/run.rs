@@ -49,7 +49,7 @@ impl PatternRun {
             EdgeGrowth::Off => (spec.pattern.clone(), None),
             _ if spec.pattern.model == Model::None => (spec.pattern.clone(), None),
             EdgeGrowth::Uniform => {
-                let rows = spec.growth.rows.max(2) as usize;
+                let rows = spec.growth.rows_grown();
                 let rims = (0..rows).map(&rim).collect::<Option<Vec<f64>>>().ok_or_else(|| {
                     PatternError(
                         "pattern.edge_growth: this form has no one growing edge whose cells could divide (swept shells and chambers have); set it to off".into(),

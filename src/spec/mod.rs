@@ -66,3 +66,11 @@ pub struct GrowthSpec {
     /// Rows grown per animation frame.
     pub speed: f64,
 }
+
+impl GrowthSpec {
+    /// The rows the shell grows in: [`GrowthSpec::rows`], but at least two, an apex and an
+    /// opening, however few a spec asks for.
+    pub fn rows_grown(&self) -> usize {
+        self.rows.max(2) as usize
+    }
+}

@@ -346,7 +346,7 @@ impl Host {
             } => {
                 if self.maker.as_ref().is_none_or(|(l, _)| *l != link) {
                     let spec = spec_of(&link);
-                    let rows = spec.growth.rows.max(2) as usize;
+                    let rows = spec.growth.rows_grown();
                     match piece_maker(&spec, rows) {
                         Ok(Some(maker)) => self.maker = Some((link, maker)),
                         Ok(None) | Err(_) => {

@@ -36,7 +36,7 @@ pub fn species_image(species: ImageOf) -> &'static ImageMap {
             .ok()
             .flatten()
             .unwrap_or_else(|| panic!("{id} has a pattern"));
-        let rows = spec.growth.rows.max(2) as usize;
+        let rows = spec.growth.rows_grown();
         while run.rows() < rows {
             run.advance()
                 .unwrap_or_else(|e| panic!("{id}'s pattern runs to its end: {e}"));

@@ -41,7 +41,7 @@ impl App {
         };
         self.apply();
         let plan = RecordingPlan::new(
-            spec.growth.rows.max(2) as usize,
+            spec.growth.rows_grown(),
             spec.growth.speed,
             record::options(),
         );
