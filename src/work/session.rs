@@ -98,7 +98,8 @@ struct Heard {
 
 /// The viewer's frames as the page's frame hears them ([`Session::hear`]): the task for the
 /// rest of the frame, each frame's report for what the page shows of it beside the session (a
-/// file's progress, a notice, the planar view's updates), and a recording's video frame: the
+/// file's progress, a notice, the planar view's updates; its status, taken by the session, left
+/// empty), and a recording's video frame: the
 /// last one the frames carry, or the first failure among them (the recording then fails).
 #[derive(Debug)]
 pub struct Hearing<F> {
@@ -622,8 +623,10 @@ impl Session {
         };
         let (mut reports, mut recorded) = (Vec::new(), None);
         for frame in taken.frames {
-            let report = frame.report;
-            (heard.statuses).push((report.loads, report.status.clone(), report.drawn));
+            // The status goes to the session; the page shows the rest of the report.
+            let mut report = frame.report;
+            let status = std::mem::take(&mut report.status);
+            (heard.statuses).push((report.loads, status, report.drawn));
             reports.push(report);
             if !matches!(recorded, Some(Err(_))) && frame.recorded.is_some() {
                 recorded = frame.recorded;

@@ -9,7 +9,7 @@ use seashells_core::bench::{Figure, timed};
 use seashells_core::forms::piece_maker;
 use seashells_core::generator::Generator;
 use seashells_core::mesh::Mesh;
-use seashells_core::presets::presets;
+use seashells_core::presets::preset;
 use seashells_core::spec::ShellSpec;
 use seashells_core::spec::form::Form;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -101,7 +101,7 @@ const BENCHED: (&str, u32) = ("murex-cabritii", 256);
 /// meshing the rest) on one thread and on two, and how many times quicker two are.
 pub fn bench(now: &dyn Fn() -> f64) -> Vec<Figure> {
     let (id, resolution) = BENCHED;
-    let Some(preset) = presets().iter().find(|p| p.id == id) else {
+    let Some(preset) = preset(id) else {
         return Vec::new();
     };
     let mut spec = preset.spec.clone();
