@@ -152,7 +152,8 @@ impl Workers {
         Ok(())
     }
 
-    /// Lets each worker work `ms` of its own clock after the owner's frame `frame`; its
+    /// Lets each worker work `ms` of its own clock after the owner's frame `frame` (infinite:
+    /// whatever it holds, to its end, as a Web Worker does, `web/worker_host.rs`); its
     /// replies reach the owner from the next frame, up to `lag` frames later.
     pub fn work(&mut self, frame: u64, ms: f64, lag: u8, rng: &mut Pcg64) {
         for (slot, worker) in self.workers.iter_mut().enumerate() {
@@ -160,8 +161,12 @@ impl Workers {
                 continue;
             }
             let now = ticking(&worker.clock);
-            let until = worker.clock.get() + ms;
-            for (ticket, reply) in worker.host.work(&now, Budget::Until(until)) {
+            let budget = if ms.is_finite() {
+                Budget::Until(worker.clock.get() + ms)
+            } else {
+                Budget::Unbounded
+            };
+            for (ticket, reply) in worker.host.work(&now, budget) {
                 let bytes = if std::mem::take(&mut worker.garble_next) {
                     Vec::new()
                 } else {

@@ -18,16 +18,21 @@
 //! opening of a renderer again fails; the GPU falls behind (drawing waits) or its frames stop
 //! reaching the screen (the drawing worker says so); the drawing worker fails, or spins until
 //! the page finds it out by its silence, and the view moves to the page's thread, clicks going
-//! on meanwhile. Lost messages are not simulated: a
+//! on meanwhile. The gallery's pictures are drawn on the page's thread by the real
+//! [`PictureDrawer`] from shells the page's own pool grows, its workers faulty too and its
+//! device lost and given back. Lost messages are not simulated: a
 //! worker's channel to the page loses nothing while the worker lives, and one that dies is
 //! simulated.
 //!
 //! After every step: no panic; every reply of a shell the page has left changes nothing (the
 //! page's copy never falls out of step with its worker, the renderer only ever takes the
 //! shell shown, its rows in order, and the page never shows the status of a shell it left);
-//! the shell shown is the last asked for; the work held is bounded. At the end of a run, with the faults over: the shell grows whole within a bounded
+//! the shell shown is the last asked for; the work held is bounded; the gallery's shells are
+//! asked only while it is shown, none twice at a time, and each picture shows the shell it is
+//! for. At the end of a run, with the faults over: the shell grows whole within a bounded
 //! simulated time, its mesh and pattern hashes those of the native core growing it alone, and
-//! a frame a recording asked for is drawn. A failure prints its seed and the shortest run
+//! a frame a recording asked for is drawn; or, in the gallery, every card shows a picture of
+//! its whole shell and the page says so. A failure prints its seed and the shortest run
 //! that still fails; `SEASHELLS_SIM_SEED=N` replays one seed, `SEASHELLS_SIM_RUNS=N` runs more
 //! (`make fuzz`).
 
@@ -35,15 +40,18 @@ use crate::simulated_workers::{Workers, within_copy};
 use rand_core::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use seashells_core::generator::{Advance, GROWTH_BUDGET_MS, Generator};
-use seashells_core::presets::Preset;
+use seashells_core::presets::{Preset, presets};
 use seashells_core::share::link;
 use seashells_core::share::presentation::Layout;
 use seashells_core::spec::ShellSpec;
 use seashells_core::view::recording::FrameAsk;
 use seashells_core::work::device_survival::Loss;
-use seashells_core::work::pool::{Polled, Pool, PoolPlan};
+use seashells_core::work::message::{Reply, Request};
+use seashells_core::work::picture_drawer::PictureDrawer;
+use seashells_core::work::picture_queue::Place;
+use seashells_core::work::pool::{JOBS_PER_WORKER, Polled, Pool, PoolPlan};
 use seashells_core::work::screen::Screen;
-use seashells_core::work::session::{Edit, Effect, Session};
+use seashells_core::work::session::{Edit, Effect, FrameTask, Session};
 use seashells_core::work::status_readout::Say;
 use seashells_core::work::viewer_command::ViewCommand;
 use seashells_core::work::viewer_driver::{PoolWorkers, ViewerDriver};
@@ -53,7 +61,7 @@ use seashells_core::work::viewer_message::{
 };
 use seashells_core::work::viewer_state::Growing;
 use seashells_core::work::viewer_status::{Device, FrameReport};
-use std::collections::{HashMap, VecDeque};
+use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::{Mutex, OnceLock};
 
 /// The shells a run opens: one of each kind of growth (a swept shell with its pattern, one
@@ -169,6 +177,19 @@ enum Step {
     /// The frames handed to the GPU stop reaching the screen: the drawing worker says so and
     /// stops, and the view moves to the page's thread.
     GpuStops,
+    /// The browser takes the gallery's pictures' graphics device away (a WebGL context, which
+    /// it may give back after `restore` frames, or a WebGPU device).
+    LosePictures {
+        webgl: bool,
+        restore: u8,
+    },
+    /// A worker of the page's own pool, which grows the gallery's shells, throws (`fault` 0),
+    /// hangs (1), sends bytes nobody can read (2) or has its next reply reach the page twice
+    /// (3).
+    PictureWorker {
+        slot: u8,
+        fault: u8,
+    },
 }
 
 /// A recording's video frame, posted beside the frame's news that says it was drawn.
@@ -213,6 +234,13 @@ struct Page {
     /// What the page has heard of the drawing worker, and whether the worker hangs.
     inbox: Inbox<VideoFrame>,
     drawing_hung: bool,
+    /// The gallery's pictures, drawn on the page's thread ([`PictureDrawer`]) from the shells
+    /// the page's own pool grows (which, unlike the page's, grows nothing else here).
+    pictures: PictureDrawer<SimScreen>,
+    picture_workers: Workers,
+    /// The presets whose card shows a picture of its whole shell (one drawn just before the
+    /// pictures' device was lost may be blank, and is drawn again).
+    cards: HashSet<&'static str>,
 }
 
 /// The drawing worker's screen, simulated: its graphics device, which the browser takes away
@@ -243,6 +271,8 @@ struct SimScreen {
     stopped: bool,
     /// Frames the driver held back for the GPU to catch up.
     deferred: usize,
+    /// The preset of the shell built last.
+    shown: Option<&'static str>,
 }
 
 impl SimScreen {
@@ -281,8 +311,9 @@ impl Screen for SimScreen {
         Some("simulated")
     }
 
-    fn load(&mut self, _: &Growing) {
+    fn load(&mut self, growing: &Growing) {
         self.uploaded = Some(0);
+        self.shown = Some(growing.preset().id);
     }
 
     fn look(&mut self, _: &Growing) {
@@ -387,10 +418,17 @@ impl Screen for SimScreen {
 fn viewer(now: f64, reopened: usize) -> ViewerDriver<SimScreen> {
     let screen = SimScreen {
         reopened,
-        size: (1, 1),
-        ..SimScreen::default()
+        ..screen()
     };
     ViewerDriver::new(screen, true, true, now)
+}
+
+/// A fresh simulated screen, its device ready.
+fn screen() -> SimScreen {
+    SimScreen {
+        size: (1, 1),
+        ..SimScreen::default()
+    }
 }
 
 /// The drawing worker's pool as its frame `frame` at `now` uses it: what was asked is sent
@@ -449,6 +487,9 @@ impl Page {
             failed_over: 0,
             inbox: Inbox::default(),
             drawing_hung: false,
+            pictures: PictureDrawer::new(screen(), 0.0),
+            picture_workers: Workers::new(size),
+            cards: HashSet::new(),
         }
     }
 
@@ -464,6 +505,14 @@ impl Page {
                 Effect::OpenMap(_) => self.covered = true,
                 Effect::CloseMap => self.covered = false,
                 Effect::Signal("state", state) => self.shown_state = state,
+                Effect::Gallery(shown) => {
+                    let (queue, pool) = (self.pictures.queue_mut(), &mut self.picture_workers.pool);
+                    if shown {
+                        queue.ask_cards(pool);
+                    } else {
+                        queue.pause(pool);
+                    }
+                }
                 Effect::Say(Say::Show(words)) => {
                     if let Some(shell) = &self.session.status().shell {
                         self.said.push((self.viewers, shell.session, words));
@@ -500,6 +549,66 @@ impl Page {
     fn run_frame(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
         self.frame += 1;
         self.now += FRAME_MS;
+        self.take_pictures(rng)?;
+        let outcome = self.page_frame(lag, rng);
+        // What the frame asked of the page's pool goes out; each worker grows a whole shell
+        // to its end, as a Web Worker does (its reply late by up to `lag` frames).
+        self.picture_workers.dispatch(self.now)?;
+        (self.picture_workers).work(self.frame, f64::INFINITY, lag, rng);
+        outcome
+    }
+
+    /// The page's pool's replies that reached it: each gallery shell waits to be drawn.
+    fn take_pictures(&mut self, rng: &mut Pcg64) -> Result<(), Failure> {
+        let polled = self.picture_workers.poll(self.frame, self.now, rng);
+        for (request, reply) in polled.replies {
+            match (request, reply) {
+                (Request::Whole { job, .. }, Reply::Grown { result, .. }) => {
+                    if let Err(why) = &result {
+                        return Err(format!("a card's shell could not be grown: {why}"));
+                    }
+                    self.pictures.queue_mut().take(job, result);
+                }
+                (request, reply) => {
+                    return Err(format!(
+                        "the page's pool answered {request:?} with {reply:?}"
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The gallery's next picture, drawn as the page's frame draws it; it must show the whole
+    /// shell of the card it is for.
+    fn draw_picture(&mut self) -> Result<(), Failure> {
+        self.pictures.screen_mut().tick(self.frame);
+        let pool = &mut self.picture_workers.pool;
+        let drew = self.pictures.work(self.now, pool, || Some(()));
+        if let Some(fault) = self.pictures.screen_mut().fault.take() {
+            return Err(format!("the pictures' screen: {fault}"));
+        }
+        for wanted in drew.forgotten {
+            self.cards.remove(wanted.preset.id);
+        }
+        let Some((wanted, ())) = drew.drawn else {
+            return Ok(());
+        };
+        let shown = self.pictures.screen().shown;
+        if shown != Some(wanted.preset.id) {
+            return Err(format!(
+                "the picture of the {} drew {shown:?}",
+                wanted.preset.id
+            ));
+        }
+        if wanted.place == Place::Card {
+            self.cards.insert(wanted.preset.id);
+        }
+        Ok(())
+    }
+
+    /// The page's frame, but its own pool's traffic.
+    fn page_frame(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
         if let Some(opens) = self.moving {
             if self.frame < opens {
                 // The page waits for the viewer it is opening; the old pool's workers go on.
@@ -655,6 +764,9 @@ impl Page {
             }
         }
         self.apply(0);
+        if matches!(hearing.task, FrameTask::Pictures | FrameTask::Tiles) {
+            self.draw_picture()?;
+        }
         // What the page shows is of the shell it shows.
         if let (Some(shell), Some((preset, _))) =
             (&self.session.status().shell, self.session.current())
@@ -766,6 +878,25 @@ impl Page {
                 self.viewer.screen_mut().behind_until = self.frame + u64::from(*frames);
             }
             Step::GpuStops => self.viewer.screen_mut().stopped = true,
+            Step::LosePictures { webgl, restore } => {
+                let screen = self.pictures.screen_mut();
+                screen.lost = Some(Loss {
+                    reason: "taken by the browser".into(),
+                    restored: false,
+                    webgl: *webgl,
+                });
+                screen.restore_at =
+                    (*webgl && *restore > 0).then(|| self.frame + u64::from(*restore));
+            }
+            Step::PictureWorker { slot, fault } => {
+                let (workers, slot) = (&mut self.picture_workers, usize::from(*slot));
+                match fault % 4 {
+                    0 => workers.throw(slot, self.frame + 1),
+                    1 => workers.hang(slot),
+                    2 => workers.garble(slot),
+                    _ => workers.twice(slot),
+                }
+            }
             Step::Fallback { frames } => {
                 if self.moving.is_none() {
                     self.moving = Some(self.frame + 1 + u64::from(*frames));
@@ -795,6 +926,23 @@ impl Page {
         if held > 64 {
             return Err(format!("the page holds {held} requests and replies"));
         }
+        // The gallery's shells are asked only while it is shown (a worker that dies holding
+        // some has them wait again), each at most once at a time.
+        let pictures = &self.picture_workers.pool;
+        let held_by_workers = self.picture_workers.count() * JOBS_PER_WORKER;
+        if !self.session.in_gallery() && pictures.waiting() > held_by_workers {
+            return Err(format!(
+                "{} cards' shells wait for the page's pool while the gallery is not shown",
+                pictures.waiting()
+            ));
+        }
+        let held = pictures.in_flight() + pictures.waiting();
+        if held > presets().len() {
+            return Err(format!(
+                "the page's pool holds {held} requests for {} cards",
+                presets().len()
+            ));
+        }
         Ok(())
     }
 
@@ -802,7 +950,10 @@ impl Page {
     /// bounded simulated time, as the native core grows it alone, the page must say so
     /// (`grown`), and a recording's frame asked for must be drawn.
     fn settle(&mut self) -> Result<(), Failure> {
-        if self.session.in_gallery() || self.session.current().is_none() {
+        if self.session.in_gallery() {
+            return self.settle_gallery();
+        }
+        if self.session.current().is_none() {
             return Ok(());
         }
         if self.recording {
@@ -887,6 +1038,39 @@ impl Page {
     }
 }
 
+impl Page {
+    /// With the faults over, the gallery shown: every card must show a picture of its whole
+    /// shell within a bounded simulated time, and the page must say so (`done`).
+    fn settle_gallery(&mut self) -> Result<(), Failure> {
+        let mut rng = Pcg64::seed_from_u64(0);
+        let deadline = self.now + 20.0 * 60_000.0;
+        loop {
+            if self.gone {
+                // The page said why it draws no more.
+                return Ok(());
+            }
+            let done = self.pictures.queue().signal(self.pictures.draws()) == "done";
+            if done && self.cards.len() == presets().len() {
+                return Ok(());
+            }
+            if self.now > deadline {
+                let missing: Vec<&str> = presets()
+                    .iter()
+                    .map(|p| p.id)
+                    .filter(|id| !self.cards.contains(id))
+                    .collect();
+                return Err(format!(
+                    "the gallery's pictures were not all drawn within twenty simulated minutes \
+                     (the page says {}): no picture of {missing:?}",
+                    if done { "done" } else { "drawing" }
+                ));
+            }
+            self.run_frame(1, &mut rng)?;
+            self.check()?;
+        }
+    }
+}
+
 /// A shell's mesh hash and pattern hash.
 type Hashes = (u64, Option<u64>);
 
@@ -917,7 +1101,7 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
     }];
     for _ in 0..count {
         let byte = pick(256) as u8;
-        let step = match pick(48) {
+        let step = match pick(50) {
             0..=14 => Step::Frames {
                 count: 1 + pick(12) as u8,
                 lag: pick(4) as u8,
@@ -968,6 +1152,14 @@ fn steps(seed: u64) -> (usize, Vec<Step>) {
                 frames: 1 + pick(60) as u8,
             },
             45 => Step::GpuStops,
+            46 => Step::LosePictures {
+                webgl: pick(2) == 0,
+                restore: pick(150) as u8,
+            },
+            47 => Step::PictureWorker {
+                slot: byte,
+                fault: pick(4) as u8,
+            },
             _ => Step::Twice { slot: byte },
         };
         steps.push(step);

@@ -12,7 +12,7 @@ use crate::presets::{Preset, presets};
 use crate::share::link;
 use crate::spec::ShellSpec;
 use crate::view::picture::{CARD_PIXELS, TILE_PIXELS, picture_spec};
-use std::collections::VecDeque;
+use std::collections::{HashSet, VecDeque};
 
 /// Milliseconds within which the browser is taken to report a lost device.
 pub const LOSS_NOTICE_MS: f64 = 2000.0;
@@ -66,6 +66,9 @@ pub struct PictureQueue {
     left: Vec<Wanted>,
     /// Whether the pool has been asked for the cards' since the gallery was last shown.
     asked: bool,
+    /// The jobs sent to the pool (or waiting in it) and not answered yet: a card still there
+    /// when the gallery is shown again is not asked twice.
+    out: HashSet<u32>,
     /// Shells grown and not drawn yet.
     waiting: Vec<(Wanted, WholeShell)>,
     /// Pictures drawn within [`LOSS_NOTICE_MS`], and when.
@@ -122,7 +125,14 @@ impl PictureQueue {
         self.left.last().expect("just pushed")
     }
 
-    fn submit(pool: &mut Pool, wanted: &Wanted) {
+    /// Asks the pool for the last picture wanted.
+    fn submit_last(&mut self, pool: &mut Pool) {
+        let wanted = self.left.last().expect("a picture is wanted");
+        Self::submit(&mut self.out, pool, wanted);
+    }
+
+    fn submit(out: &mut HashSet<u32>, pool: &mut Pool, wanted: &Wanted) {
+        out.insert(wanted.job);
         pool.submit(Request::Whole {
             job: wanted.job,
             link: wanted.link.clone(),
@@ -130,13 +140,16 @@ impl PictureQueue {
         });
     }
 
-    /// Asks the pool for the cards' pictures not drawn yet (once while the gallery is shown).
+    /// Asks the pool for the cards' pictures not drawn yet and not still asked of it (once
+    /// while the gallery is shown).
     pub fn ask_cards(&mut self, pool: &mut Pool) {
         if std::mem::replace(&mut self.asked, true) {
             return;
         }
         for wanted in self.left.iter().filter(|w| w.place == Place::Card) {
-            Self::submit(pool, wanted);
+            if !self.out.contains(&wanted.job) {
+                Self::submit(&mut self.out, pool, wanted);
+            }
         }
     }
 
@@ -163,14 +176,14 @@ impl PictureQueue {
         let (since, asked, _) = self.tiles_since.unwrap_or((now, 0, small));
         self.tiles_since = Some((since, asked + 1, small));
         let (spec, link) = picture;
-        let wanted = self.push(Place::Tile { job, small }, preset, spec, link);
-        Self::submit(pool, wanted);
+        self.push(Place::Tile { job, small }, preset, spec, link);
+        self.submit_last(pool);
     }
 
     /// Asks the pool again for a picture that may have been drawn blank by a lost device.
     pub fn ask_again(&mut self, wanted: &Wanted, pool: &mut Pool) {
-        let again = self.want(wanted.place, wanted.preset, &wanted.spec);
-        Self::submit(pool, again);
+        self.want(wanted.place, wanted.preset, &wanted.spec);
+        self.submit_last(pool);
     }
 
     /// Whether the pool's job `job` is a picture for `place`.
@@ -181,9 +194,17 @@ impl PictureQueue {
     /// The gallery was left: the cards' pictures not yet sent to a worker wait until it is
     /// shown again.
     pub fn pause(&mut self, pool: &mut Pool) {
-        pool.cancel(
-            |r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, |p| p == Place::Card)),
-        );
+        let mut cancelled = Vec::new();
+        pool.cancel(|r| match r {
+            Request::Whole { job, .. } if self.job_for(*job, |p| p == Place::Card) => {
+                cancelled.push(*job);
+                true
+            }
+            _ => false,
+        });
+        for job in cancelled {
+            self.out.remove(&job);
+        }
         self.asked = false;
     }
 
@@ -191,6 +212,9 @@ impl PictureQueue {
     pub fn drop_tiles(&mut self, pool: &mut Pool) {
         let tile = |p: Place| matches!(p, Place::Tile { .. });
         pool.cancel(|r| matches!(r, Request::Whole { job, .. } if self.job_for(*job, tile)));
+        for wanted in self.left.iter().filter(|w| tile(w.place)) {
+            self.out.remove(&wanted.job);
+        }
         self.left.retain(|w| !tile(w.place));
         self.waiting.retain(|(w, _)| !tile(w.place));
         self.lately.retain(|(w, _)| !tile(w.place));
@@ -213,6 +237,7 @@ impl PictureQueue {
     /// A worker grew the shell of picture `job`: it waits to be drawn. A tile whose shell could
     /// not be grown is returned with the reason; a job no longer wanted changes nothing.
     pub fn take(&mut self, job: u32, result: Result<WholeShell, String>) -> Option<(u32, String)> {
+        self.out.remove(&job);
         let at = self.left.iter().position(|w| w.job == job)?;
         let wanted = self.left.remove(at);
         match (result, wanted.place) {
@@ -320,6 +345,26 @@ mod tests {
         assert_eq!(queue.signal(true), "drawing");
         assert_eq!(queue.signal(false), "none", "nothing is drawn without 3D");
         assert_eq!(PictureQueue::default().signal(true), "done");
+    }
+
+    #[test]
+    fn a_card_a_worker_still_holds_when_the_gallery_is_shown_again_is_not_asked_twice() {
+        let mut queue = PictureQueue::of_cards();
+        let mut pool = Pool::new(1);
+        queue.ask_cards(&mut pool);
+        let sent = pool.dispatch(0.0);
+        assert!(!sent.is_empty());
+        queue.pause(&mut pool);
+        queue.ask_cards(&mut pool);
+        assert_eq!(pool.in_flight() + pool.waiting(), presets().len());
+        // Its answer, come while the gallery was left, is drawn.
+        let mut host = Host::default();
+        host.push(sent[0].ticket, sent[0].request.clone());
+        let Reply::Grown { job, result } = host.work(&|| 0.0, Budget::Unbounded).remove(0).1 else {
+            panic!("a card's shell is grown");
+        };
+        assert_eq!(queue.take(job, result), None);
+        assert!(queue.next(0.0).is_some());
     }
 
     #[test]
