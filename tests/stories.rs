@@ -4,7 +4,9 @@
 
 use seashells_core::generator::Generator;
 use seashells_core::share::link;
-use seashells_core::stories::{Story, open, stories, story};
+use seashells_core::stories::{Growth, Story, open, stories, story};
+use seashells_core::work::session::{Effect, Session};
+use seashells_core::work::status_readout::Say;
 
 #[test]
 fn every_story_checks_clean_and_each_step_grows_finite() {
@@ -30,6 +32,65 @@ fn every_story_checks_clean_and_each_step_grows_finite() {
                 s.id,
                 i + 1
             );
+        }
+    }
+}
+
+/// What the page does on a story's Next link, for every step of every story, as the page's
+/// session decides it (`web/app/show.rs` only writes it out): the step shown is the one its
+/// link names, counted and worded as the story has it, the shell shown is the step's link,
+/// nothing had to be repaired, a step grown whole stands still, and a step that names a
+/// parameter map opens it over those numbers.
+#[test]
+fn the_session_walks_every_story_by_its_next_links_as_the_page_shows_them() {
+    for s in stories() {
+        let n = s.steps.len();
+        let mut session = Session::default();
+        let mut fragment = format!("#story={}", s.id);
+        for (i, step) in s.steps.iter().enumerate() {
+            let at_step = format!("{} step {}", s.id, i + 1);
+            session.route(&fragment, false, 0.0);
+            let effects = session.take_effects();
+            let at = effects
+                .iter()
+                .find_map(|e| match e {
+                    Effect::Story(Some(at)) => Some(at.clone()),
+                    _ => None,
+                })
+                .unwrap_or_else(|| panic!("{at_step}: no step shown"));
+            assert_eq!(at.index, i, "{at_step}");
+            assert_eq!(at.count(), format!("Step {} of {n}", i + 1));
+            assert_eq!(
+                (&at.step().title, &at.step().text, at.step().cites()),
+                (&step.title, &step.text, step.cites()),
+                "{at_step}"
+            );
+            let said: Vec<&String> = (effects.iter())
+                .filter_map(|e| match e {
+                    Effect::Say(Say::Show(words)) => Some(words),
+                    _ => None,
+                })
+                .collect();
+            assert!(said.is_empty(), "{at_step} needs a repair: {said:?}");
+            let (preset, spec) = session.current().expect("a shell shown");
+            let asked = link::decode(&step.link);
+            assert_eq!(
+                link::encode(preset, spec),
+                link::encode(asked.preset, &asked.spec),
+                "{at_step}: the shell shown is the step's link"
+            );
+            if step.growth == Growth::Whole {
+                assert!(!session.playing(), "{at_step} is shown whole and still");
+            }
+            let map = effects.iter().find_map(|e| match e {
+                Effect::OpenMap(axes) => Some(axes),
+                _ => None,
+            });
+            assert_eq!(map, step.map.as_ref(), "{at_step}: its map");
+            match at.next() {
+                Some(next) => fragment = format!("#{next}"),
+                None => assert_eq!(i + 1, n, "{at_step}: the last has no next"),
+            }
         }
     }
 }
