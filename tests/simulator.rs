@@ -549,7 +549,6 @@ impl Page {
     fn run_frame(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
         self.frame += 1;
         self.now += FRAME_MS;
-        self.take_pictures(rng)?;
         let outcome = self.page_frame(lag, rng);
         // What the frame asked of the page's pool goes out; each worker grows a whole shell
         // to its end, as a Web Worker does (its reply late by up to `lag` frames).
@@ -617,9 +616,7 @@ impl Page {
             }
             self.install();
         }
-        self.session.hold(self.covered, self.recording);
-        self.apply(lag);
-        self.page_takes_frames()?;
+        self.page_takes_frames(lag, rng)?;
         self.inbox.ticked(self.now);
         if self.drawing_hung || self.moving.is_some() {
             // The drawing worker spins, or is being replaced: its workers go on.
@@ -721,39 +718,36 @@ impl Page {
         self.apply(0);
     }
 
-    /// The page takes in the drawing worker's frames that reached it, as the page's frame
-    /// does: the device first, then the frames (the status of a frame made before the last
-    /// load reached the viewer is not of the shell shown).
-    fn page_takes_frames(&mut self) -> Result<(), Failure> {
+    /// The page takes in the drawing worker's frames that reached it, in the order of the
+    /// page's frame (`web/app/frame.rs`): the device first (a frame whose device is not ready
+    /// takes nothing in), then its own pool's replies, the hold on growth, and the frames (the
+    /// status of a frame made before the last load reached the viewer is not of the shell
+    /// shown).
+    fn page_takes_frames(&mut self, lag: u8, rng: &mut Pcg64) -> Result<(), Failure> {
         while let Some((_, bytes, video)) = self.to_page.pop_front_if(|(at, ..)| *at <= self.frame)
         {
             self.inbox.heard(&bytes, video, self.now)?;
         }
-        if self.session.device(self.inbox.device()).is_err() {
+        let Ok(draws) = self.session.device(self.inbox.device()) else {
             // No device can be opened again: the page says so, and draws no more.
             self.gone = true;
             return Ok(());
-        }
+        };
         self.apply(0);
+        if !draws {
+            // The page's frame waits for the device and takes nothing in, but finds out a
+            // drawing worker that failed or fell silent meanwhile.
+            return match self.inbox.answering(self.now) {
+                Ok(()) => Ok(()),
+                Err(unheard) => self.unheard(unheard),
+            };
+        }
+        self.take_pictures(rng)?;
+        self.session.hold(self.covered, self.recording);
+        self.apply(lag);
         let taken = match self.inbox.take(self.now) {
             Ok(taken) => taken,
-            Err(Unheard::Silent(_)) => {
-                // The drawing worker is taken for hung: the view moves to the page's thread.
-                self.moving.get_or_insert(self.frame + 1);
-                return Ok(());
-            }
-            Err(Unheard::Failed(why)) => {
-                // The drawing worker's renderer failed: the view moves to the page's thread at
-                // once (not after the worker's silence).
-                if !why.contains("Nothing drawn reaches the screen") {
-                    return Err(format!("the page heard an unexpected failure: {why}"));
-                }
-                if self.moving.is_none() {
-                    self.failed_over += 1;
-                    self.moving = Some(self.frame + 1);
-                }
-                return Ok(());
-            }
+            Err(unheard) => return self.unheard(unheard),
         };
         let now = self.now;
         let hearing = (self.session).hear(taken, self.covered, self.recording, now);
@@ -777,6 +771,28 @@ impl Page {
                 self.sessions.get(&shell.session),
                 preset.id
             ));
+        }
+        Ok(())
+    }
+
+    /// The page hears no more of its drawing worker: the view moves to the page's thread.
+    fn unheard(&mut self, unheard: Unheard) -> Result<(), Failure> {
+        match unheard {
+            Unheard::Silent(_) => {
+                // The drawing worker is taken for hung.
+                self.moving.get_or_insert(self.frame + 1);
+            }
+            Unheard::Failed(why) => {
+                // The drawing worker's renderer failed: the view moves at once (not after the
+                // worker's silence).
+                if !why.contains("Nothing drawn reaches the screen") {
+                    return Err(format!("the page heard an unexpected failure: {why}"));
+                }
+                if self.moving.is_none() {
+                    self.failed_over += 1;
+                    self.moving = Some(self.frame + 1);
+                }
+            }
         }
         Ok(())
     }
@@ -986,7 +1002,7 @@ impl Page {
             }
             if self.now > deadline {
                 return Err(format!(
-                    "the shell did not grow whole within twenty simulated minutes: the page                      shows {status:?}, {} of {} recorded frames drawn",
+                    "the shell did not grow whole within twenty simulated minutes: the page shows {status:?}, {} of {} recorded frames drawn",
                     self.drawn_frames, self.asked_frames
                 ));
             }
@@ -1376,6 +1392,51 @@ fn the_runs_that_found_bugs_grow_their_shell() {
                 frames(5, 0, 1_165_351_009),
                 frames(8, 0, 1_236_702_955),
                 Step::Hang { slot: 47 },
+            ],
+        ),
+    ]);
+    let runs = runs.into_iter().chain([
+        // The drawing worker's device was lost, and its frames then stopped reaching the
+        // screen: it said so and drew no more, so it never said its device was back, and the
+        // page, which takes nothing in while the device is not ready, never heard the
+        // failure and waited for ever.
+        (
+            2,
+            vec![
+                Step::Open {
+                    shell: 4,
+                    finish: false,
+                },
+                Step::LoseDevice {
+                    webgl: true,
+                    restore: 100,
+                },
+                Step::GpuStops,
+            ],
+        ),
+        // The pictures' device was lost just after cards were drawn, with a shell shown under
+        // the map: the cards that might be blank were asked of the pool again at once, though
+        // the gallery was not shown.
+        (
+            3,
+            vec![
+                Step::Open {
+                    shell: 0,
+                    finish: false,
+                },
+                Step::Gallery,
+                frames(12, 2, 1_854_103_342),
+                frames(7, 2, 420_226_940),
+                Step::LosePictures {
+                    webgl: false,
+                    restore: 15,
+                },
+                Step::Open {
+                    shell: 5,
+                    finish: true,
+                },
+                Step::Cover(true),
+                frames(6, 1, 1_707_448_879),
             ],
         ),
     ]);

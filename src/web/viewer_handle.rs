@@ -250,6 +250,17 @@ impl ViewerHandle {
         Ok(())
     }
 
+    /// Fails, in words, when the drawing worker's renderer failed or the worker fell silent
+    /// ([`crate::work::viewer_inbox::Inbox::answering`]), its news left for [`Self::frames`].
+    pub fn answering(&self) -> Result<(), String> {
+        match self {
+            ViewerHandle::Here(_) => Ok(()),
+            ViewerHandle::Worker(w) => {
+                (w.inbox.borrow().answering(now())).map_err(|e| e.to_string())
+            }
+        }
+    }
+
     /// The viewer's frames since the page's last: on the page's thread, runs one (after the
     /// page took in the pool's replies); in a worker, what it sent. Fails with the words to
     /// show when its renderer failed.

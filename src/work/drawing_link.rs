@@ -90,7 +90,16 @@ impl DrawingLink {
     pub fn took(&mut self, any: bool, now: f64) -> Result<(), String> {
         if any {
             self.ticked = false;
-        } else if self.ticked && now - self.heard > SILENT_MS {
+        } else {
+            self.silent(now)?;
+        }
+        Ok(())
+    }
+
+    /// Fails, in words, when the worker has said nothing for [`SILENT_MS`] at `now` while the
+    /// page sent it frames.
+    pub fn silent(&self, now: f64) -> Result<(), String> {
+        if self.ticked && now - self.heard > SILENT_MS {
             return Err(format!(
                 "the drawing worker has not answered for {} s",
                 SILENT_MS / 1000.0

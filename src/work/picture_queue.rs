@@ -180,10 +180,13 @@ impl PictureQueue {
         self.submit_last(pool);
     }
 
-    /// Asks the pool again for a picture that may have been drawn blank by a lost device.
+    /// Asks the pool again for a picture that may have been drawn blank by a lost device (a
+    /// card's waits for the gallery to be shown, as the others not drawn yet).
     pub fn ask_again(&mut self, wanted: &Wanted, pool: &mut Pool) {
         self.want(wanted.place, wanted.preset, &wanted.spec);
-        self.submit_last(pool);
+        if wanted.place != Place::Card || self.asked {
+            self.submit_last(pool);
+        }
     }
 
     /// Whether the pool's job `job` is a picture for `place`.
@@ -357,6 +360,18 @@ mod tests {
         queue.pause(&mut pool);
         queue.ask_cards(&mut pool);
         assert_eq!(pool.in_flight() + pool.waiting(), presets().len());
+        // A card drawn blank by a device lost while the gallery is left waits for it.
+        let card = queue.left[0].clone();
+        queue.pause(&mut pool);
+        let waiting = pool.waiting();
+        queue.ask_again(&card, &mut pool);
+        assert_eq!(
+            pool.waiting(),
+            waiting,
+            "not asked while the gallery is left"
+        );
+        queue.ask_cards(&mut pool);
+        assert_eq!(pool.in_flight() + pool.waiting(), presets().len() + 1);
         // Its answer, come while the gallery was left, is drawn.
         let mut host = Host::default();
         host.push(sent[0].ticket, sent[0].request.clone());

@@ -115,6 +115,21 @@ impl<F> Inbox<F> {
             .map_err(Unheard::Silent)?;
         take(self.news.drain(..)).map_err(Unheard::Failed)
     }
+
+    /// Fails when the worker's renderer failed or the worker fell silent, at `now`, its news
+    /// left for [`Inbox::take`]: a page whose device is not ready takes nothing in, and a
+    /// worker that fails or hangs while its device is lost says nothing more of the device
+    /// (the page would wait for it for ever).
+    pub fn answering(&self, now: f64) -> Result<(), Unheard> {
+        let failed = self.news.iter().find_map(|(n, _)| match n {
+            ViewerNews::Failed(why) => Some(why.clone()),
+            _ => None,
+        });
+        if let Some(why) = failed {
+            return Err(Unheard::Failed(why));
+        }
+        self.link.silent(now).map_err(Unheard::Silent)
+    }
 }
 
 /// One frame of the viewer: what a worker posts of it, and a recording's video frame asked
@@ -338,5 +353,39 @@ mod tests {
             failed.opened(20),
             Err("the drawing worker said nothing in 20 s".into())
         );
+    }
+
+    #[test]
+    fn a_worker_that_fails_or_falls_silent_while_its_device_is_lost_is_found_out() {
+        use crate::work::drawing_link::SILENT_MS;
+        use crate::work::viewer_message::encode_news;
+        let lost = ViewerNews::Frame {
+            device: Device::Reopening("the context was lost".into()),
+            report: None,
+            recorded: None,
+        };
+        let mut inbox: Inbox<()> = Inbox::default();
+        inbox.heard(&encode_news(&lost), None, 0.0).unwrap();
+        assert!(matches!(inbox.device(), Device::Reopening(_)));
+        assert_eq!(inbox.answering(0.0), Ok(()));
+        // It fails while the page takes nothing in: found, and its news still there to take.
+        let failed = ViewerNews::Failed("Nothing drawn reaches the screen".into());
+        inbox.heard(&encode_news(&failed), None, 1.0).unwrap();
+        assert!(
+            matches!(inbox.device(), Device::Reopening(_)),
+            "nothing more of the device"
+        );
+        let why = Unheard::Failed("Nothing drawn reaches the screen".into());
+        assert_eq!(inbox.answering(1.0), Err(why.clone()));
+        assert_eq!(inbox.take(1.0).err(), Some(why));
+        // It hangs while the page sends it frames: found after SILENT_MS.
+        let mut hung: Inbox<()> = Inbox::default();
+        hung.heard(&encode_news(&lost), None, 0.0).unwrap();
+        hung.ticked(1.0);
+        assert_eq!(hung.answering(SILENT_MS), Ok(()));
+        assert!(matches!(
+            hung.answering(SILENT_MS + 2.0),
+            Err(Unheard::Silent(_))
+        ));
     }
 }

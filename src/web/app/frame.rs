@@ -34,6 +34,11 @@ impl App {
     /// What a frame does: takes in the workers' replies, grows, draws.
     fn work_and_draw(&mut self) -> Result<(), String> {
         if !self.survive()? {
+            // Nothing is taken in while the device is not ready, but a drawing worker that
+            // failed or fell silent meanwhile is given up.
+            if let Err(why) = self.viewer.answering() {
+                self.fall_back(why);
+            }
             return Ok(());
         }
         self.take_replies();
