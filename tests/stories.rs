@@ -37,8 +37,8 @@ fn every_story_checks_clean_and_each_step_grows_finite() {
 }
 
 /// What the page does on a story's Next link, for every step of every story, as the page's
-/// session decides it (`web/app/show.rs` only writes it out): the step shown is the one its
-/// link names, counted and worded as the story has it, the shell shown is the step's link,
+/// session decides it (`web/app/show.rs` only writes the step's words out): the step shown is
+/// the one its link names, counted as the story has it, the shell shown is the step's link,
 /// nothing had to be repaired, a step grown whole stands still, and a step that names a
 /// parameter map opens it over those numbers.
 #[test]
@@ -58,13 +58,8 @@ fn the_session_walks_every_story_by_its_next_links_as_the_page_shows_them() {
                     _ => None,
                 })
                 .unwrap_or_else(|| panic!("{at_step}: no step shown"));
-            assert_eq!(at.index, i, "{at_step}");
+            assert_eq!((at.story.id, at.index), (s.id, i), "{at_step}");
             assert_eq!(at.count(), format!("Step {} of {n}", i + 1));
-            assert_eq!(
-                (&at.step().title, &at.step().text, at.step().cites()),
-                (&step.title, &step.text, step.cites()),
-                "{at_step}"
-            );
             let said: Vec<&String> = (effects.iter())
                 .filter_map(|e| match e {
                     Effect::Say(Say::Show(words)) => Some(words),

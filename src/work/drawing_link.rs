@@ -35,6 +35,7 @@ impl DrawingLink {
     /// changed.
     pub fn heard(&mut self, now: f64, device: Option<&Device>) {
         self.heard = now;
+        self.ticked = false;
         if let Some(device) = device
             && self.last_sent.as_ref() != Some(device)
         {

@@ -99,20 +99,14 @@ impl PictureQueue {
     }
 
     /// Adds the picture of `spec` (a variant of `preset`) to those to draw, its mesh as fine as
-    /// a picture shows; returns it to be asked of the pool.
-    fn want(&mut self, place: Place, preset: &'static Preset, spec: &ShellSpec) -> &Wanted {
+    /// a picture shows.
+    fn want(&mut self, place: Place, preset: &'static Preset, spec: &ShellSpec) {
         let spec = picture_spec(spec, place.pixels());
         let link = link::encode(preset, &spec);
         self.push(place, preset, spec, link)
     }
 
-    fn push(
-        &mut self,
-        place: Place,
-        preset: &'static Preset,
-        spec: ShellSpec,
-        link: String,
-    ) -> &Wanted {
+    fn push(&mut self, place: Place, preset: &'static Preset, spec: ShellSpec, link: String) {
         let wanted = Wanted {
             job: self.next_job,
             place,
@@ -122,7 +116,6 @@ impl PictureQueue {
         };
         self.next_job = self.next_job.wrapping_add(1);
         self.left.push(wanted);
-        self.left.last().expect("just pushed")
     }
 
     /// Asks the pool for the last picture wanted.
@@ -360,7 +353,8 @@ mod tests {
         queue.pause(&mut pool);
         queue.ask_cards(&mut pool);
         assert_eq!(pool.in_flight() + pool.waiting(), presets().len());
-        // A card drawn blank by a device lost while the gallery is left waits for it.
+        // A card drawn blank by a device lost while the gallery is left waits for it (here one
+        // still asked, so it is asked twice: once as it was, once again as a new picture).
         let card = queue.left[0].clone();
         queue.pause(&mut pool);
         let waiting = pool.waiting();

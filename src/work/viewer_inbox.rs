@@ -378,6 +378,12 @@ mod tests {
         let why = Unheard::Failed("Nothing drawn reaches the screen".into());
         assert_eq!(inbox.answering(1.0), Err(why.clone()));
         assert_eq!(inbox.take(1.0).err(), Some(why));
+        // One that answered the page's last frame is not silent after a pause in the page's
+        // frames (a hidden tab).
+        let mut paused: Inbox<()> = Inbox::default();
+        paused.ticked(0.0);
+        paused.heard(&encode_news(&lost), None, 1.0).unwrap();
+        assert_eq!(paused.answering(SILENT_MS + 5_000.0), Ok(()));
         // It hangs while the page sends it frames: found after SILENT_MS.
         let mut hung: Inbox<()> = Inbox::default();
         hung.heard(&encode_news(&lost), None, 0.0).unwrap();

@@ -50,10 +50,11 @@ async function drawn(page, step, file) {
   assert.ok(share > 0.004, `a shell is drawn (${share} of the canvas)`);
 }
 
-// One story is walked here, the one whose steps are of every kind (grown, shown whole, under a
-// parameter map): what the page shows of each step of every story is the session's to decide,
-// and tests/stories.rs walks them all natively by their Next links; the forms they show are
-// drawn by their own page tests.
+// One story is walked here, the coiling story, whose steps are grown, shown whole and under a
+// parameter map: what the page shows of each step of every story (which step, its shell, its
+// map, whether a step shown whole stands still) is the session's to decide, and
+// tests/stories.rs walks them all natively by their Next links; the forms they show are drawn
+// by their own page tests.
 const WALKED = STORIES.filter((s) => s.id === 'coiling');
 assert.equal(WALKED.length, 1, 'the coiling story');
 
