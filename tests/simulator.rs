@@ -287,6 +287,17 @@ impl SimScreen {
         }
     }
 
+    /// The browser takes the device away in frame `frame` (a WebGL context, which it gives
+    /// back `restore` frames later unless that is 0, or a WebGPU device).
+    fn lose(&mut self, webgl: bool, restore: u8, frame: u64) {
+        self.lost = Some(Loss {
+            reason: "taken by the browser".into(),
+            restored: false,
+            webgl,
+        });
+        self.restore_at = (webgl && restore > 0).then(|| frame + u64::from(restore));
+    }
+
     fn fault(&mut self, failure: Failure) {
         self.fault.get_or_insert(failure);
     }
@@ -875,14 +886,7 @@ impl Page {
             Step::Garble { slot } => self.workers.garble(usize::from(*slot)),
             Step::Twice { slot } => self.workers.twice(usize::from(*slot)),
             Step::LoseDevice { webgl, restore } => {
-                let screen = self.viewer.screen_mut();
-                screen.lost = Some(Loss {
-                    reason: "taken by the browser".into(),
-                    restored: false,
-                    webgl: *webgl,
-                });
-                screen.restore_at =
-                    (*webgl && *restore > 0).then(|| self.frame + u64::from(*restore));
+                self.viewer.screen_mut().lose(*webgl, *restore, self.frame)
             }
             Step::Restore => {
                 if let Some(lost) = &mut self.viewer.screen_mut().lost
@@ -897,16 +901,10 @@ impl Page {
                 self.viewer.screen_mut().behind_until = self.frame + u64::from(*frames);
             }
             Step::GpuStops => self.viewer.screen_mut().stopped = true,
-            Step::LosePictures { webgl, restore } => {
-                let screen = self.pictures.screen_mut();
-                screen.lost = Some(Loss {
-                    reason: "taken by the browser".into(),
-                    restored: false,
-                    webgl: *webgl,
-                });
-                screen.restore_at =
-                    (*webgl && *restore > 0).then(|| self.frame + u64::from(*restore));
-            }
+            Step::LosePictures { webgl, restore } => self
+                .pictures
+                .screen_mut()
+                .lose(*webgl, *restore, self.frame),
             Step::PictureWorker { slot, fault } => {
                 let (workers, slot) = (&mut self.picture_workers, usize::from(*slot));
                 match fault % 4 {
