@@ -197,7 +197,7 @@ fn the_grown_murex_wears_four_textures_and_the_exports_carry_them() {
     let pure_body = outer.iter().filter(|v| v.tint[3] == 1.0).count();
     let blended = outer.len() - pure_part - pure_body;
     assert!(
-        pure_part > outer.len() / 50 && pure_body > outer.len() / 3 && blended > 100,
+        pure_part > outer.len() / 50 && pure_body > outer.len() / 4 && blended > 100,
         "{pure_part} part, {pure_body} body, {blended} blended of {}",
         outer.len()
     );

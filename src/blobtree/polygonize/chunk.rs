@@ -1,14 +1,15 @@
 //! Meshing one chunk (a piece of its level) by marching tetrahedra: each voxel's six
 //! tetrahedra hold zero, one or two triangles; a vertex sits where the field crosses the
-//! iso-value on a grid edge (`vertex.rs`). Where the piece meets pieces of another level, it
-//! follows the refinement's rule (`refinement.rs`) and splits its triangles at a finer
-//! neighbour's vertices.
+//! iso-value on an edge of a tetrahedron (`vertex.rs`). A piece meshes the voxels of its own
+//! level only; a whole voxel beside a halved one is coned from its centre to meet it
+//! (`transition.rs`, `refinement.rs`).
 
-use super::grid::{CHUNK, Grid, at_local, local};
+use super::grid::{CHUNK, Grid, SIDE, at_local, local};
 use super::memory::{Known, Memory};
 use super::refinement::{Piece, Refinement};
-use super::sample::{class, octant_of, sample};
+use super::sample::{Culled, FineClasses, class, octant_of, sample};
 use super::tetrahedra::{CUTS, DIRECTIONS, EDGES, TETRAHEDRA, edge_key, edge_of, offset};
+use super::transition::{Point, coned, cut};
 use super::vertex::surface_vertex;
 use crate::blobtree::blob_tree::Node;
 use crate::mesh::{Bounds, Mesh, Vertex};
@@ -24,12 +25,13 @@ pub struct Scratch {
     touched: Vec<usize>,
     /// Vertices taken over from a [`Memory`].
     known: Known,
+    /// What a chunk beside halved voxels knows of the points of the finest lattice.
+    judged: Vec<u8>,
 }
 
 /// The mesh of the surface of `tree` at growth step `step` inside one piece of the grid
 /// `refinement` refines; empty when the piece is proven to hold none of it. Samples and
-/// vertices that `memory` holds are taken over instead of computed. Where the piece meets
-/// pieces of other levels, it follows the refinement's rule (see `refinement.rs`).
+/// vertices that `memory` holds are taken over instead of computed.
 pub fn mesh_chunk(
     tree: &Node,
     refinement: &Refinement,
@@ -42,17 +44,13 @@ pub fn mesh_chunk(
     let chunk = piece.chunk;
     let first = Grid::first_sample(chunk);
     let global = |i: [usize; 3]| std::array::from_fn(|k| first[k] + i[k] as i64);
-    let finest = |i: [usize; 3]| Refinement::finest(global(i), piece.level);
-    let border = refinement.borders_other_levels(piece).then_some(refinement);
-    // The samples another level fixes take their values, whatever was known of them.
-    let fix_border = |tree: &Node, field: &mut [f64]| {
-        if let Some(r) = border {
-            for (i, f) in field.iter_mut().enumerate() {
-                if let Some(v) = r.interpolated(tree, finest(at_local(i))) {
-                    *f = v;
-                }
-            }
-        }
+    let whole = piece.level == 0;
+    // Whether voxels of the other level stand in the piece or beside it: only then is a
+    // voxel's level asked.
+    let mixed = if whole {
+        refinement.halved_near(chunk)
+    } else {
+        refinement.halved_in_cell(chunk) != u64::MAX
     };
     // The grid edge with key `key` and the box it spans: a vertex looks at the field there only.
     let edge = |key: usize| {
@@ -66,7 +64,7 @@ pub fn mesh_chunk(
     };
     scratch.known.clear();
     // What is known already: the cache's samples and vertices outside the changed boxes, or
-    // what the neighbours handed over; then the samples another level fixes.
+    // what the neighbours handed over.
     match &memory {
         Memory::Cache { cache, changed } if !cache.field.is_empty() => {
             let unchanged = |(lo, hi): ([usize; 3], [usize; 3])| {
@@ -94,23 +92,21 @@ pub fn mesh_chunk(
         chunk,
         step,
         &mut scratch.field,
-        |culled, field| {
-            match &memory {
-                Memory::Cache { cache, changed } if !cache.field.is_empty() => {
-                    for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
-                        let at = grid.sample(global(at_local(i)));
-                        if old.is_finite() && !changed.iter().any(|b| b.contains(at)) {
-                            *f = *old;
-                        }
-                    }
-                }
-                _ => {
-                    for &(i, f) in received.iter().flat_map(|face| &face.samples) {
-                        field[i] = f;
+        whole && mixed,
+        |field| match &memory {
+            Memory::Cache { cache, changed } if !cache.field.is_empty() => {
+                for (i, (f, old)) in field.iter_mut().zip(&cache.field).enumerate() {
+                    let at = grid.sample(global(at_local(i)));
+                    if old.is_finite() && !changed.iter().any(|b| b.contains(at)) {
+                        *f = *old;
                     }
                 }
             }
-            fix_border(culled, field);
+            _ => {
+                for &(i, f) in received.iter().flat_map(|face| &face.samples) {
+                    field[i] = f;
+                }
+            }
         },
     );
     let Some(culled) = culled else {
@@ -125,6 +121,17 @@ pub fn mesh_chunk(
         }
         return Mesh::default();
     };
+    let mut fine = (whole && mixed).then(|| {
+        let at = (grid, chunk);
+        let buffer = std::mem::take(&mut scratch.judged);
+        FineClasses::new(
+            (tree, step),
+            refinement,
+            at,
+            (&culled, &scratch.field),
+            buffer,
+        )
+    });
     class(
         tree,
         step,
@@ -132,85 +139,45 @@ pub fn mesh_chunk(
         chunk,
         &scratch.field,
         &mut scratch.inside,
-        refinement,
+        fine.as_mut(),
     );
     scratch.vertex_of.resize(EDGES, u32::MAX);
     let mut mesh = Mesh::default();
     for z in 0..CHUNK as usize {
         for y in 0..CHUNK as usize {
             for x in 0..CHUNK as usize {
-                let corner = |c: usize| {
-                    let o = offset(c);
-                    [x + o[0], y + o[1], z + o[2]]
-                };
-                let mask = (0..8)
-                    .filter(|&c| scratch.inside[local(corner(c))])
-                    .fold(0, |m, c| m | 1 << c);
-                if mask == 0 || mask == 0xff {
-                    continue;
-                }
-                // The octant's tree holds every primitive that reaches this voxel (an octant
-                // without one is proven on one side, so none of its voxels gets here).
-                let tree = culled.octants[octant_of([x, y, z])]
-                    .as_ref()
-                    .unwrap_or(&culled.chunk);
-                for (tet, cuts) in TETRAHEDRA.iter().zip(&CUTS) {
-                    let inside = (0..4).filter(|&i| mask & 1 << tet[i] != 0);
-                    let cut = &cuts[inside.fold(0, |m, i| m | 1 << i)];
-                    let mut made = [0; 4];
-                    let mut ends = [([0; 3], [0; 3]); 4];
-                    for (edge_index, (slot, edge)) in made
-                        .iter_mut()
-                        .zip(&cut.edges[..cut.edge_count])
-                        .enumerate()
-                    {
-                        let (lo, hi) = (corner(edge.lo), corner(edge.hi));
-                        let key = edge_key(local(lo), edge.direction);
-                        if scratch.vertex_of[key] == u32::MAX {
-                            scratch.vertex_of[key] = mesh.next_index();
-                            scratch.touched.push(key);
-                            // An edge along a coarser one takes that edge's vertex.
-                            let coarser = border.and_then(|r| {
-                                let (a, b) = r.coarser_edge(finest(lo), finest(hi), piece.level)?;
-                                Some(r.vertex(&culled.chunk, a, b))
-                            });
-                            mesh.vertices.push(match (coarser, scratch.known.get(key)) {
-                                (Some(v), _) | (None, Some(v)) => v,
-                                (None, None) => surface_vertex(
-                                    tree,
-                                    [
-                                        (grid.sample(global(lo)), scratch.field[local(lo)]),
-                                        (grid.sample(global(hi)), scratch.field[local(hi)]),
-                                    ],
-                                ),
-                            });
-                        }
-                        *slot = scratch.vertex_of[key];
-                        ends[edge_index] = (lo, hi);
-                    }
-                    for triangle in &cut.triangles[..cut.triangle_count] {
-                        let t = triangle.map(|i| made[i]);
-                        let Some(r) = border else {
-                            mesh.triangle(t, false);
+                if mixed {
+                    let v = global([x, y, z]);
+                    if !whole {
+                        // A voxel of the cell whose whole voxel is not halved is meshed whole.
+                        if !refinement.is_halved(v.map(|c| c.div_euclid(2))) {
                             continue;
-                        };
-                        // Its sides on a face with a finer piece take that piece's vertices.
-                        let e = triangle.map(|i| ends[i]);
-                        let inserts = std::array::from_fn(|i| {
-                            let sides = [e[i], e[(i + 1) % 3]];
-                            (finer_crossings(r, &culled.chunk, piece.level, sides, &finest))
-                                .into_iter()
-                                .map(|v| {
-                                    mesh.vertices.push(v);
-                                    mesh.next_index() - 1
-                                })
-                                .collect()
-                        });
-                        split_triangle(&mut mesh, t, inserts);
+                        }
+                    } else if refinement.is_halved(v) {
+                        continue;
+                    } else if let Some(tetrahedra) = coned(v, &|w| refinement.is_halved(w)) {
+                        // A coned voxel's samples and vertices take the octant's tree too;
+                        // an octant without one is proven on one side.
+                        if let Some(tree) = &culled.octants[octant_of([x, y, z])] {
+                            let fine = fine
+                                .as_mut()
+                                .expect("judged in a chunk beside halved voxels");
+                            let at = Coned {
+                                tree,
+                                refinement,
+                                first,
+                            };
+                            at.mesh(&tetrahedra, scratch, fine, &mut mesh);
+                        }
+                        continue;
                     }
                 }
+                kuhn_voxel([x, y, z], &culled, grid, global, scratch, &mut mesh);
             }
         }
+    }
+    if let Some(fine) = fine {
+        scratch.judged = fine.into_buffer();
     }
     let made = scratch
         .touched
@@ -230,67 +197,146 @@ pub fn mesh_chunk(
     mesh
 }
 
-/// The vertices of a finer piece across a face of this piece (of `level`) at which its mesh
-/// crosses the triangle of this piece's grid that the grid edges `sides` (local samples; a
-/// triangle side runs between their vertices) lie in, in order from the first side's vertex:
-/// none unless both lie in a face whose piece across is finer.
-fn finer_crossings(
-    refinement: &Refinement,
-    tree: &Node,
-    level: u32,
-    sides: [([usize; 3], [usize; 3]); 2],
-    finest: &dyn Fn([usize; 3]) -> [i64; 3],
-) -> Vec<Vertex> {
-    let points = [sides[0].0, sides[0].1, sides[1].0, sides[1].1];
-    let face = (0..3).find_map(|axis| {
-        let c = points[0][axis];
-        let on_face = points.iter().all(|p| p[axis] == c) && (c == 0 || c == CHUNK as usize);
-        on_face.then_some((axis, c != 0))
-    });
-    let Some((axis, high)) = face else {
-        return Vec::new();
+/// Meshes the voxel whose lowest sample is `[x, y, z]` (in the chunk) as Kuhn's six
+/// tetrahedra.
+fn kuhn_voxel(
+    [x, y, z]: [usize; 3],
+    culled: &Culled,
+    grid: &Grid,
+    global: impl Fn([usize; 3]) -> [i64; 3],
+    scratch: &mut Scratch,
+    mesh: &mut Mesh,
+) {
+    let corner = |c: usize| {
+        let o = offset(c);
+        [x + o[0], y + o[1], z + o[2]]
     };
-    let corner = std::array::from_fn(|k| points.iter().map(|&p| finest(p)[k]).min().unwrap_or(0));
-    let Some(finer) = refinement.finer_across(corner, axis, high, level) else {
-        return Vec::new();
-    };
-    let ends = sides.map(|(lo, hi)| [finest(lo), finest(hi)]);
-    refinement.crossings(tree, ends, axis, [level, finer])
+    let mask = (0..8)
+        .filter(|&c| scratch.inside[local(corner(c))])
+        .fold(0, |m, c| m | 1 << c);
+    if mask == 0 || mask == 0xff {
+        return;
+    }
+    // The octant's tree holds every primitive that reaches this voxel (an octant without one
+    // is proven on one side, so none of its voxels gets here).
+    let tree = culled.octants[octant_of([x, y, z])]
+        .as_ref()
+        .unwrap_or(&culled.chunk);
+    for (tet, cuts) in TETRAHEDRA.iter().zip(&CUTS) {
+        let inside = (0..4).filter(|&i| mask & 1 << tet[i] != 0);
+        let cut = &cuts[inside.fold(0, |m, i| m | 1 << i)];
+        let mut made = [0; 4];
+        for (slot, edge) in made.iter_mut().zip(&cut.edges[..cut.edge_count]) {
+            let (lo, hi) = (corner(edge.lo), corner(edge.hi));
+            let ends = [lo, hi].map(|i| (grid.sample(global(i)), scratch.field[local(i)]));
+            let key = edge_key(local(lo), edge.direction);
+            *slot = grid_vertex(scratch, mesh, key, || surface_vertex(tree, ends));
+        }
+        for triangle in &cut.triangles[..cut.triangle_count] {
+            mesh.triangle(triangle.map(|i| made[i]), false);
+        }
+    }
 }
 
-/// Pushes triangle `t`, its edge from `t[i]` to `t[i + 1]` split at the vertices `inserts[i]`
-/// (in order along it): a fan from the opposite corner for the first edge split, then the same
-/// for the others in the triangles of the fan that hold them. Winding is kept.
-fn split_triangle(mesh: &mut Mesh, t: [u32; 3], inserts: [Vec<u32>; 3]) {
-    let Some(i) = (0..3).find(|&i| !inserts[i].is_empty()) else {
-        mesh.triangle(t, false);
-        return;
-    };
-    let [a, b, c] = [t[i], t[(i + 1) % 3], t[(i + 2) % 3]];
-    let [mut along, mut next, mut back] = {
-        let mut inserts = inserts;
-        [i, (i + 1) % 3, (i + 2) % 3].map(|k| std::mem::take(&mut inserts[k]))
-    };
-    let chain: Vec<u32> = std::iter::once(a)
-        .chain(along.drain(..))
-        .chain(std::iter::once(b))
-        .collect();
-    let last = chain.len() - 2;
-    for (n, pair) in chain.windows(2).enumerate() {
-        // The first triangle of the fan holds the edge c → a, the last the edge b → c.
-        let rest = [
-            Vec::new(),
-            if n == last {
-                std::mem::take(&mut next)
-            } else {
-                Vec::new()
-            },
-            if n == 0 {
-                std::mem::take(&mut back)
-            } else {
-                Vec::new()
-            },
-        ];
-        split_triangle(mesh, [pair[0], pair[1], c], rest);
+/// The vertex on the grid edge with key `key`: the one made already in this chunk, else the
+/// one known, else `make`'s.
+fn grid_vertex(
+    scratch: &mut Scratch,
+    mesh: &mut Mesh,
+    key: usize,
+    make: impl FnOnce() -> Vertex,
+) -> u32 {
+    if scratch.vertex_of[key] == u32::MAX {
+        scratch.vertex_of[key] = mesh.next_index();
+        scratch.touched.push(key);
+        mesh.vertices
+            .push(scratch.known.get(key).unwrap_or_else(make));
+    }
+    scratch.vertex_of[key]
+}
+
+/// A whole voxel of a chunk of level 0 coned to meet halved neighbours.
+struct Coned<'a> {
+    /// The tree of the voxel's octant.
+    tree: &'a Node,
+    refinement: &'a Refinement,
+    /// The chunk's first sample (global index of level 0).
+    first: [i64; 3],
+}
+
+impl Coned<'_> {
+    /// The chunk's sample at the finest point `q`, when `q` is one (a corner of a whole voxel).
+    fn sample_of(&self, q: Point) -> Option<[usize; 3]> {
+        let i: [i64; 3] = std::array::from_fn(|k| q[k].div_euclid(2) - self.first[k]);
+        let on_grid = q.iter().all(|c| c.rem_euclid(2) == 0);
+        (on_grid && i.iter().all(|c| (0..SIDE as i64).contains(c))).then(|| i.map(|c| c as usize))
+    }
+
+    /// The field at `q` and whether it counts as inside: a corner's sample and class, as the
+    /// chunk decided them (the field evaluated where its block was proven one-sided), or the
+    /// field evaluated at another point of the finest lattice and the class `fine` judges
+    /// there, as every voxel holding the point judges it.
+    fn value(&self, q: Point, scratch: &Scratch, fine: &mut FineClasses) -> (f64, bool) {
+        let evaluate = || self.tree.field(self.refinement.point(q));
+        match self.sample_of(q) {
+            Some(i) => {
+                let f = scratch.field[local(i)];
+                (
+                    if f.is_finite() { f } else { evaluate() },
+                    scratch.inside[local(i)],
+                )
+            }
+            None => (evaluate(), fine.class(q)),
+        }
+    }
+
+    /// Meshes the voxel's `tetrahedra`, whose points are the 3³ points of the finest lattice
+    /// in it.
+    fn mesh(
+        &self,
+        tetrahedra: &[[Point; 4]],
+        scratch: &mut Scratch,
+        fine: &mut FineClasses,
+        mesh: &mut Mesh,
+    ) {
+        let base = tetrahedra[0][3].map(|c| c - 1);
+        let slot =
+            |q: Point| ((q[0] - base[0]) + 3 * (q[1] - base[1]) + 9 * (q[2] - base[2])) as usize;
+        let mut values: [Option<(f64, bool)>; 27] = [None; 27];
+        // The vertices made on edges that are not grid edges, by their ends in order.
+        let mut between: Vec<((Point, Point), u32)> = Vec::new();
+        for tet in tetrahedra {
+            let at =
+                tet.map(|q| *values[slot(q)].get_or_insert_with(|| self.value(q, scratch, fine)));
+            for triangle in cut(tet, at.map(|(_, inside)| inside)) {
+                let t = triangle.map(|(a, b)| {
+                    // In one order, whichever voxel meets the edge.
+                    let (lo, hi) = if tet[a] < tet[b] { (a, b) } else { (b, a) };
+                    let ends = [lo, hi].map(|i| (self.refinement.point(tet[i]), at[i].0));
+                    let make = || surface_vertex(self.tree, ends);
+                    let key = (tet[lo], tet[hi]);
+                    match self.grid_edge(key.0, key.1) {
+                        Some(edge) => grid_vertex(scratch, mesh, edge, make),
+                        None => match between.iter().find(|(k, _)| *k == key) {
+                            Some(&(_, v)) => v,
+                            None => {
+                                mesh.vertices.push(make());
+                                between.push((key, mesh.next_index() - 1));
+                                mesh.next_index() - 1
+                            }
+                        },
+                    }
+                });
+                mesh.triangle(t, false);
+            }
+        }
+    }
+
+    /// The key of the chunk's grid edge from `lo` to `hi` (finest points), when it is one.
+    fn grid_edge(&self, lo: Point, hi: Point) -> Option<usize> {
+        let (a, b) = (self.sample_of(lo)?, self.sample_of(hi)?);
+        let d: [usize; 3] = std::array::from_fn(|k| b[k].wrapping_sub(a[k]));
+        let direction = DIRECTIONS.iter().position(|&e| e == d)?;
+        Some(edge_key(local(a), direction))
     }
 }

@@ -1,7 +1,7 @@
 //! The voxel grid a BlobTree is polygonized on: cubic voxels over a box, cut into chunks of
 //! [`CHUNK`]³ voxels, and the numbering of the samples inside a chunk. A grid of level ℓ
-//! halves the voxels of level 0 ℓ times over the same box: a refined chunk is meshed as the
-//! 8^ℓ chunks of that grid it holds (see `refinement.rs`).
+//! halves the voxels of level 0 ℓ times over the same box: the halved voxels are meshed in
+//! chunks of that grid (see `refinement.rs`).
 
 use crate::mesh::Bounds;
 use glam::DVec3;
@@ -59,6 +59,20 @@ impl Grid {
             chunks: self.chunks.map(|c| (c >> self.level) * scale),
             level,
             base: self.base,
+        }
+    }
+
+    /// The grid of level 0 whose voxels are this one's halved, from the same origin: what a
+    /// grid every voxel of which is halved must mesh alike.
+    #[cfg(test)]
+    pub(super) fn halved(&self) -> Self {
+        let voxel = self.voxel / 2.0;
+        Self {
+            origin: self.origin,
+            voxel,
+            chunks: self.chunks.map(|c| c * 2),
+            level: 0,
+            base: voxel,
         }
     }
 

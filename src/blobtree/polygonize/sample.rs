@@ -120,8 +120,7 @@ impl Sampler<'_> {
 
 /// The trees a chunk the surface passes through is meshed with.
 pub(super) struct Culled {
-    /// Culled to the chunk and two voxels more on every side: the corners of a coarser
-    /// piece's voxel that a sample on its face is interpolated from.
+    /// Culled to the chunk.
     pub(super) chunk: Node,
     /// Culled to each octant ([`octant_of`]); `None` where the field is zero throughout it or
     /// proven on one side of the iso-value.
@@ -130,24 +129,25 @@ pub(super) struct Culled {
 
 /// Samples the field of `tree` at growth step `step` at a chunk's corners into `field`, and
 /// gives the trees culled to the chunk and its octants; `None` when the surface does not pass
-/// through it (proven by the culled tree or the field's range, or seen in the samples).
-/// `known` first fills in the samples known already (exact, or left NaN), given the tree
-/// culled to the chunk. Samples in blocks proven one-sided hold [`proven`] values; `field`
-/// is left empty when none was sampled.
+/// through it (proven by the culled tree or the field's range, or seen in the samples, unless
+/// it may pass `between` them: a chunk with coned voxels meshes points the samples are not).
+/// `known` first fills in the samples known already (exact, or left NaN). Samples in blocks
+/// proven one-sided hold [`proven`] values; `field` is left empty when none was sampled.
 pub(super) fn sample(
     tree: &Node,
     grid: &Grid,
     chunk: ChunkIndex,
     step: u32,
     field: &mut Vec<f64>,
-    known: impl FnOnce(&Node, &mut [f64]),
+    between: bool,
+    known: impl FnOnce(&mut [f64]),
 ) -> Option<Culled> {
     field.clear();
     let region = grid.region(chunk);
-    let tree = tree.cull(&region.padded(2.0 * grid.voxel), step)?;
+    let tree = tree.cull(&region, step)?;
     one_side(&tree, &region).is_none().then_some(())?;
     field.resize(SIDE * SIDE * SIDE, f64::NAN);
-    known(&tree, field);
+    known(field);
     let mut sampler = Sampler {
         grid,
         first: Grid::first_sample(chunk),
@@ -170,7 +170,7 @@ pub(super) fn sample(
     });
     let inside = field.iter().any(|&f| f >= ISO);
     let outside = field.iter().any(|&f| f < ISO);
-    (inside && outside).then_some(Culled {
+    (between || inside && outside).then_some(Culled {
         chunk: tree,
         octants,
     })
@@ -189,9 +189,8 @@ pub(super) fn sample(
 pub(crate) const SPECK: usize = 12;
 
 /// Voxels beyond its chunk that the classes deciding a chunk's specks reach: a speck's
-/// samples lie within [`SPECK`] of the chunk, and a sample on the face of a coarser piece is
-/// interpolated from that piece's corners, at most a coarser voxel (two finer ones) further.
-pub(super) const REACH: f64 = SPECK as f64 + 2.0;
+/// samples lie within [`SPECK`] of the chunk.
+pub(super) const REACH: f64 = SPECK as f64;
 
 /// The neighbours within its chunk of the chunk's sample `i`, along the edges of the Kuhn
 /// triangulation.
@@ -207,14 +206,146 @@ fn neighbours_within(i: usize) -> impl Iterator<Item = usize> {
     })
 }
 
+/// The neighbours of a sample along the edges of the Kuhn triangulation, in or beyond a chunk.
+fn neighbours(at: [i64; 3]) -> impl Iterator<Item = [i64; 3]> {
+    DIRECTIONS.iter().flat_map(move |d| {
+        [1i64, -1].map(|sign| -> [i64; 3] { std::array::from_fn(|k| at[k] + sign * d[k] as i64) })
+    })
+}
+
+/// The classes of points of the finest lattice, judged on that lattice as a chunk of it
+/// judges its samples (see [`class`]): a chunk of level 0 asks it for its samples held by
+/// halved voxels too, and for the points its coned voxels add, so that every voxel holding a
+/// point, of either level, gives it one class.
+pub(super) struct FineClasses<'a> {
+    tree: &'a Node,
+    step: u32,
+    refinement: &'a Refinement,
+    /// The chunk's trees: a point in it is evaluated with its octant's.
+    culled: &'a Culled,
+    /// The side of each octant whose tree is `None`, proven one-sided.
+    octant_sides: [bool; 8],
+    /// The box the points asked about and their specks lie in.
+    region: Bounds,
+    /// The tree culled to it, once a point beyond the chunk is evaluated.
+    reach: Option<Option<Node>>,
+    /// The chunk's first point.
+    first: [i64; 3],
+    /// Each point's side of the iso-value and class in the block the chunk's specks reach,
+    /// x fastest: bit 0 evaluated, bit 1 inside; bit 2 judged, bit 3 its class inside.
+    points: Vec<u8>,
+}
+
+/// Points of the finest lattice along each side of the block whose sides and classes
+/// [`FineClasses`] keeps: a chunk's, and a speck's reach on either side.
+const KEPT: i64 = 2 * CHUNK as i64 + 1 + 2 * (SPECK as i64 + 1);
+
+impl<'a> FineClasses<'a> {
+    /// The judge of the points of the finest lattice about `chunk` of `grid` (of level 0),
+    /// from `tree` at growth step `step`, the chunk's samples `field` and trees `culled`;
+    /// `points` is a buffer to keep what is known of the points in (see [`Self::into_buffer`]).
+    pub(super) fn new(
+        (tree, step): (&'a Node, u32),
+        refinement: &'a Refinement,
+        (grid, chunk): (&Grid, ChunkIndex),
+        (culled, field): (&'a Culled, &[f64]),
+        mut points: Vec<u8>,
+    ) -> Self {
+        points.clear();
+        points.resize((KEPT * KEPT * KEPT) as usize, 0);
+        let octant_sides = std::array::from_fn(|octant| {
+            let corner = offset(octant).map(|o| o * OCTANT);
+            field.get(local(corner)).is_some_and(|&f| f >= ISO)
+        });
+        Self {
+            tree,
+            step,
+            refinement,
+            culled,
+            octant_sides,
+            region: grid.region(chunk).padded(REACH * grid.voxel),
+            reach: None,
+            first: Refinement::finest(Grid::first_sample(chunk), grid.level),
+            points,
+        }
+    }
+
+    /// The buffer handed to [`Self::new`], for the next chunk.
+    pub(super) fn into_buffer(self) -> Vec<u8> {
+        self.points
+    }
+
+    /// The slot of the point `q` (finest index) in the block kept, if it lies in it.
+    fn slot(&self, q: [i64; 3]) -> Option<usize> {
+        let at: [i64; 3] = std::array::from_fn(|k| q[k] - self.first[k] + SPECK as i64 + 1);
+        (at.iter().all(|c| (0..KEPT).contains(c)))
+            .then(|| (at[0] + KEPT * (at[1] + KEPT * at[2])) as usize)
+    }
+
+    /// The side of the iso-value the field at the point `q` (finest index) lies on.
+    fn side(&mut self, q: [i64; 3]) -> bool {
+        let slot = self.slot(q);
+        if let Some(known) = slot.map(|i| self.points[i]).filter(|&p| p & 1 != 0) {
+            return known & 2 != 0;
+        }
+        let point = self.refinement.point(q);
+        let fine_side = 2 * CHUNK as i64;
+        let within: [i64; 3] = std::array::from_fn(|k| q[k] - self.first[k]);
+        let side = if within.iter().all(|c| (0..=fine_side).contains(c)) {
+            let octant = (0..3)
+                .map(|k| usize::from(within[k] >= fine_side / 2) << k)
+                .sum::<usize>();
+            match &self.culled.octants[octant] {
+                Some(tree) => tree.field(point) >= ISO,
+                None => self.octant_sides[octant],
+            }
+        } else {
+            let (tree, region, step) = (self.tree, self.region, self.step);
+            let reach = self.reach.get_or_insert_with(|| tree.cull(&region, step));
+            reach.as_ref().is_some_and(|t| t.field(point) >= ISO)
+        };
+        if let Some(i) = slot {
+            self.points[i] |= 1 | u8::from(side) << 1;
+        }
+        side
+    }
+
+    /// The class of the point `q` (finest index): its side, or the other one where it lies
+    /// in a speck of the finest lattice.
+    pub(super) fn class(&mut self, q: [i64; 3]) -> bool {
+        let slot = self.slot(q);
+        if let Some(known) = slot.map(|i| self.points[i]).filter(|&p| p & 4 != 0) {
+            return known & 8 != 0;
+        }
+        let mine = self.side(q);
+        // The component, up to one point more than a speck holds.
+        let mut found = [q; SPECK + 1];
+        let (mut count, mut next) = (1, 0);
+        while next < count && count <= SPECK {
+            for n in neighbours(found[next]) {
+                if count <= SPECK && !found[..count].contains(&n) && self.side(n) == mine {
+                    found[count] = n;
+                    count += 1;
+                }
+            }
+            next += 1;
+        }
+        let class = mine != (count <= SPECK);
+        if let Some(i) = slot {
+            self.points[i] |= 4 | u8::from(class) << 3;
+        }
+        class
+    }
+}
+
 /// Classifies a chunk's samples (`field`) as inside or outside the surface, into `inside`:
 /// each by its own side of the iso-value, but for specks (see [`SPECK`]), which take the
 /// other class. A speck may cross the chunk's faces: samples beyond the chunk are evaluated
 /// from `tree` at growth step `step` (culled [`REACH`] voxels wider than the chunk, once a
-/// chunk needs them) and take the values `refinement` gives them, as the chunks holding them
-/// do, so every chunk holding part of a speck decides alike. A component holding samples
-/// shared by pieces of different levels is never flipped: each side would judge it by
-/// other neighbours.
+/// chunk needs them), so every chunk holding part of a speck decides alike. A chunk of level
+/// 0 beside halved voxels hands over `fine`: its samples that halved voxels hold too are
+/// judged on the finest lattice, as the halved voxels' chunks judge them, and a component on
+/// its own lattice holding one of them is not flipped.
 pub(super) fn class(
     tree: &Node,
     step: u32,
@@ -222,7 +353,7 @@ pub(super) fn class(
     chunk: ChunkIndex,
     field: &[f64],
     inside: &mut Vec<bool>,
-    refinement: &Refinement,
+    fine: Option<&mut FineClasses>,
 ) {
     let first = Grid::first_sample(chunk);
     let global = |n: [i64; 3]| -> [i64; 3] { std::array::from_fn(|k| first[k] + n[k]) };
@@ -231,13 +362,8 @@ pub(super) fn class(
     inside.extend(field.iter().map(|&f| f >= ISO));
     let within = |n: &[i64; 3]| n.iter().all(|&i| (0..SIDE as i64).contains(&i));
     let index = |n: [i64; 3]| local(n.map(|i| i as usize));
-    let neighbours = |at: [i64; 3]| {
-        DIRECTIONS.iter().flat_map(move |d| {
-            [1i64, -1]
-                .map(|sign| -> [i64; 3] { std::array::from_fn(|k| at[k] + sign * d[k] as i64) })
-        })
-    };
-    let fixed = |n: [i64; 3]| refinement.is_shared_across_levels(finest(n));
+    let levels = fine.as_ref().map(|f| f.refinement);
+    let fixed = |n: [i64; 3]| levels.is_some_and(|r| r.is_shared_across_levels(finest(n)));
     // The classes of samples beyond the chunk, evaluated once each.
     let mut reach: Option<Option<Node>> = None;
     let mut beyond: HashMap<[i64; 3], bool> = HashMap::new();
@@ -246,10 +372,9 @@ pub(super) fn class(
             let reach = reach.get_or_insert_with(|| {
                 tree.cull(&grid.region(chunk).padded(REACH * grid.voxel), step)
             });
-            let f = reach.as_ref().map_or(0.0, |tree| {
-                (refinement.interpolated(tree, finest(n)))
-                    .unwrap_or_else(|| tree.field(grid.sample(global(n))))
-            });
+            let f = reach
+                .as_ref()
+                .map_or(0.0, |tree| tree.field(grid.sample(global(n))));
             f >= ISO
         })
     };
@@ -307,6 +432,15 @@ pub(super) fn class(
     for (class, flip) in inside.iter_mut().zip(flip) {
         *class ^= flip;
     }
+    if let Some(fine) = fine {
+        for (i, class) in inside.iter_mut().enumerate() {
+            let n = at_local(i).map(|c| c as i64);
+            // A sample in a block proven one-sided lies in a component larger than a speck.
+            if field[i].is_finite() && fixed(n) {
+                *class = fine.class(finest(n));
+            }
+        }
+    }
 }
 
 /// The box of the grid samples inside the surface of `tree` at growth step `step`, grown by
@@ -315,7 +449,7 @@ pub fn surface_box(tree: &Node, grid: &Grid, step: u32) -> Bounds {
     let mut field = Vec::new();
     let mut inside = Bounds::EMPTY;
     for chunk in grid.chunks_touching(&tree.bounds) {
-        if sample(tree, grid, chunk, step, &mut field, |_, _| {}).is_none() {
+        if sample(tree, grid, chunk, step, &mut field, false, |_| {}).is_none() {
             continue;
         }
         let first = Grid::first_sample(chunk);
@@ -345,7 +479,7 @@ mod tests {
         let grid = Grid::new(&tree.bounds, 64);
         let (mut field, mut evaluated, mut proven, mut meshed) = (Vec::new(), 0, 0, 0);
         for chunk in grid.chunks_touching(&tree.bounds) {
-            if sample(tree, &grid, chunk, step, &mut field, |_, _| {}).is_none() {
+            if sample(tree, &grid, chunk, step, &mut field, false, |_| {}).is_none() {
                 continue;
             }
             meshed += 1;

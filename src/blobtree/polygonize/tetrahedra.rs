@@ -44,8 +44,7 @@ pub(super) struct Edge {
 /// vertices lie on, in the order they are made, and its triangles over them, wound to face
 /// from the inside corners towards the outside ones. The winding is decided here, with each
 /// vertex at its edge's midpoint, not from where the vertices end up: wherever on its open
-/// edge each vertex lies the triangle keeps that orientation, and a vertex shared with a
-/// coarser grid edge (see `refinement.rs`) may even lie beyond its own.
+/// edge each vertex lies the triangle keeps that orientation.
 #[derive(Clone, Copy)]
 pub(super) struct Cut {
     pub(super) edges: [Edge; 4],

@@ -1,5 +1,5 @@
-//! Where the surface crosses a grid edge: the one vertex every piece that has the edge (or, on
-//! a border between levels, the coarser edge it lies along) computes alike, bit for bit.
+//! Where the surface crosses an edge of the tetrahedra: the one vertex every piece that has
+//! the edge computes alike, bit for bit.
 
 use crate::blobtree::blob_tree::{Node, Probe};
 use crate::blobtree::falloff::ISO;
