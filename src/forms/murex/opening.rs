@@ -30,15 +30,19 @@ use super::sections::Gathered;
 use super::varix::{edge_distance, outward};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
+use crate::blobtree::polygonize::MAX_LEVEL;
 use crate::blobtree::texture_blend::Look;
+use crate::mesh::Bounds;
 use crate::spec::form::implicit::{GeneratorSpec, ImplicitSpec, Shows};
 use glam::DVec3;
 
 /// The thinnest wall the hollow leaves, as a fraction of the shell's extent (with its longest
 /// spine); closer to the apex, where it would be thinner, the shell is solid. The model's own
-/// size, the same at every resolution from 112 voxels up: 0.7/112, half a millimetre on the
-/// 80 mm print the exporters default to.
-pub const THINNEST_WALL: f64 = WALL_VOXELS / SHOWS_THE_MODEL as f64;
+/// size, the same at every resolution from 112 voxels up: 0.7/224, a quarter of a millimetre
+/// on the 80 mm print the exporters default to, and [`WALL_VOXELS`] of a grid of 112 voxels
+/// halved once, which the polygonizer halves where a wall is that thin (see
+/// [`Opening::thin_walls`]).
+pub const THINNEST_WALL: f64 = WALL_VOXELS / (SHOWS_THE_MODEL << MAX_LEVEL) as f64;
 
 /// Voxels a wall is at least thick on a grid too coarse for [`THINNEST_WALL`] (under 112
 /// voxels): thinner, the grid would show it perforated, in specks.
@@ -56,6 +60,9 @@ pub(crate) struct Opening {
     pub(crate) hollow: Node,
     /// B_inside_wall of eq 15, at the growing edge.
     pub(crate) wall: Option<Node>,
+    /// The boxes of the generating surfaces whose wall is thinner than the grid's whole voxels
+    /// show: hints for the polygonizer, which halves its voxels there.
+    pub(crate) thin_walls: Vec<Bounds>,
 }
 
 /// The opening of eqs 14–15: the inside generating surface placed like the shell's, up to
@@ -63,13 +70,13 @@ pub(crate) struct Opening {
 /// the aperture is open at every stage. It starts where consecutive inside surfaces join into
 /// one tube. `varices` are the spines and ridges of the varices (unplaced, with the instance
 /// each closes), which the hollow leaves intact until the next whorl has grown over them.
-/// `thinnest_wall` is the thinnest wall it leaves ([`THINNEST_WALL`] of the shell's extent,
-/// or [`WALL_VOXELS`] of a coarser grid).
+/// `walls` are the thinnest wall it leaves ([`THINNEST_WALL`] of the shell's extent, or
+/// [`WALL_VOXELS`] of a coarser grid) and the thinnest the grid's whole voxels show.
 pub(crate) fn opening(
     spec: &ImplicitSpec,
     instances: &Instances,
     varices: &[(u32, Node)],
-    thinnest_wall: f64,
+    walls: (f64, f64),
     shell: &Node,
     look: Look,
     gathered: &mut Gathered,
@@ -114,6 +121,7 @@ pub(crate) fn opening(
     // Nor is it carved where the wall it leaves would be thinner than `thinnest_wall`; drawn
     // alone (fig 10), the inside whorl has no wall to keep, and starts where it joins.
     let apart = spec.opening.shows == Shows::Inside;
+    let (thinnest_wall, shown_whole) = walls;
     let shown = |k: u32| apart || wall * instances.size(f64::from(k)) >= thinnest_wall;
     let first = (0..end).find(|&k| joins(k) && shown(k))? + 1;
     // The generating surface at instance k, for its pattern time and its parts present then.
@@ -136,6 +144,7 @@ pub(crate) fn opening(
     // whorl blended whole and left uncarved would reach through the previous whorl's wall
     // (the inside surface is nearly as large as the body's), leaving no wall between them.
     let mut extended: Vec<Option<Node>> = vec![None; first as usize];
+    let mut thin_walls = Vec::new();
     for k in first..end {
         let birth = k.saturating_sub(o.ahead);
         let inside = surface(&o.inside, k);
@@ -143,8 +152,16 @@ pub(crate) fn opening(
             .into_iter()
             .flatten()
             .collect();
-        extended
-            .push((!parts.is_empty()).then(|| gathered.placed(at(k), Node::blend(parts), birth)));
+        let placed = (!parts.is_empty()).then(|| gathered.placed(at(k), Node::blend(parts), birth));
+        let thickness = wall * instances.size(f64::from(k));
+        if let Some(p) = placed
+            .as_ref()
+            .filter(|_| !apart && thickness < shown_whole)
+        {
+            // The wall lies about the inside surface, within its thickness and a whole voxel.
+            thin_walls.push(p.bounds.padded(thickness + shown_whole));
+        }
+        extended.push(placed);
     }
     // The body's whorl of points (eq 9), for the previous whorl.
     let points_whorl: Vec<Option<Node>> = (0..count)
@@ -210,6 +227,7 @@ pub(crate) fn opening(
         inside: Node::union(inside),
         hollow,
         wall: inside_wall(spec, instances, first, shell, look, gathered),
+        thin_walls,
     })
 }
 

@@ -313,7 +313,7 @@ pub fn whorl(
         spec,
         &instances,
         &kept,
-        thinnest_wall,
+        (thinnest_wall, WALL_VOXELS * voxel),
         &shell,
         body_look,
         &mut gathered,
@@ -322,17 +322,22 @@ pub fn whorl(
             inside,
             hollow,
             wall,
-        }) => match spec.opening.shows {
-            Shows::Shell => {
-                let carved = Node::difference(shell, hollow);
-                match wall {
-                    Some(wall) => Node::union(vec![carved, wall]),
-                    None => carved,
+            thin_walls,
+        }) => {
+            fine.boxes
+                .extend(thin_walls.into_iter().map(|b| (b, MAX_LEVEL)));
+            match spec.opening.shows {
+                Shows::Shell => {
+                    let carved = Node::difference(shell, hollow);
+                    match wall {
+                        Some(wall) => Node::union(vec![carved, wall]),
+                        None => carved,
+                    }
                 }
+                Shows::Inside => inside,
+                Shows::Opening => hollow,
             }
-            Shows::Inside => inside,
-            Shows::Opening => hollow,
-        },
+        }
         None if spec.opening.shows == Shows::Shell => shell,
         None => {
             return Err(ShapeError::new(
