@@ -114,6 +114,7 @@ pub fn mesh_chunk(
             Memory::Cache { cache, .. } => {
                 cache.field.clear();
                 cache.vertices.clear();
+                cache.judged.clear();
             }
             Memory::Seams(seams) => {
                 seams.hand_over(grid, piece, &scratch.field, std::iter::empty());
@@ -124,13 +125,17 @@ pub fn mesh_chunk(
     let mut fine = (whole && mixed).then(|| {
         let at = (grid, chunk);
         let buffer = std::mem::take(&mut scratch.judged);
-        FineClasses::new(
+        let mut fine = FineClasses::new(
             (tree, step),
             refinement,
             at,
             (&culled, &scratch.field),
             buffer,
-        )
+        );
+        if let Memory::Cache { cache, changed } = &memory {
+            fine.take_over(&cache.judged, changed);
+        }
+        fine
     });
     class(
         tree,
@@ -142,20 +147,19 @@ pub fn mesh_chunk(
         fine.as_mut(),
     );
     scratch.vertex_of.resize(EDGES, u32::MAX);
+    let around = (whole && mixed).then(|| refinement.halved_around(chunk));
+    let cell = refinement.halved_in_cell(chunk);
     let mut mesh = Mesh::default();
     for z in 0..CHUNK as usize {
         for y in 0..CHUNK as usize {
             for x in 0..CHUNK as usize {
-                if mixed {
+                if let Some(around) = &around {
                     let v = global([x, y, z]);
-                    if !whole {
-                        // A voxel of the cell whose whole voxel is not halved is meshed whole.
-                        if !refinement.is_halved(v.map(|c| c.div_euclid(2))) {
-                            continue;
-                        }
-                    } else if refinement.is_halved(v) {
+                    if around.is_halved(v) {
                         continue;
-                    } else if let Some(tetrahedra) = coned(v, &|w| refinement.is_halved(w)) {
+                    }
+                    let tetrahedra = around.beside(v).then(|| coned(v, &|w| around.is_halved(w)));
+                    if let Some(tetrahedra) = tetrahedra.flatten() {
                         // A coned voxel's samples and vertices take the octant's tree too;
                         // an octant without one is proven on one side.
                         if let Some(tree) = &culled.octants[octant_of([x, y, z])] {
@@ -171,14 +175,22 @@ pub fn mesh_chunk(
                         }
                         continue;
                     }
+                } else if mixed {
+                    // A voxel of the cell whose whole voxel is not halved is meshed whole.
+                    let bit = (x / 2) + 4 * (y / 2) + 16 * (z / 2);
+                    if cell & 1 << bit == 0 {
+                        continue;
+                    }
                 }
                 kuhn_voxel([x, y, z], &culled, grid, global, scratch, &mut mesh);
             }
         }
     }
-    if let Some(fine) = fine {
+    let judged = fine.map(|fine| {
+        let judged = fine.judged();
         scratch.judged = fine.into_buffer();
-    }
+        judged
+    });
     let made = scratch
         .touched
         .iter()
@@ -188,6 +200,7 @@ pub fn mesh_chunk(
             cache.vertices.clear();
             cache.vertices.extend(made);
             std::mem::swap(&mut cache.field, &mut scratch.field);
+            cache.judged = judged.unwrap_or_default();
         }
         Memory::Seams(seams) => seams.hand_over(grid, piece, &scratch.field, made),
     }

@@ -17,6 +17,9 @@ pub struct ChunkCache {
     pub(super) field: Vec<f64>,
     /// Each vertex by its edge.
     pub(super) vertices: HashMap<usize, Vertex>,
+    /// What a chunk beside halved voxels judged of the points of the finest lattice, by slot
+    /// (see `sample::FineClasses`).
+    pub(super) judged: Vec<(u32, u8)>,
 }
 
 /// The samples and vertices on the faces between chunks, each handed by the chunk that meshed

@@ -141,6 +141,18 @@ impl Refinement {
         near(2).any(|z| near(1).any(|y| near(0).any(|x| self.is_halved([x, y, z]))))
     }
 
+    /// Which voxels of a chunk of level 0, and of the voxels around it, are halved, read once.
+    pub(super) fn halved_around(&self, chunk: ChunkIndex) -> HalvedAround {
+        let first = Grid::first_sample(chunk).map(|c| c - 1);
+        let flags = (0..AROUND * AROUND * AROUND)
+            .map(|n| {
+                let at = [n % AROUND, n / AROUND % AROUND, n / (AROUND * AROUND)];
+                self.is_halved(std::array::from_fn(|k| first[k] + at[k]))
+            })
+            .collect();
+        HalvedAround { first, flags }
+    }
+
     /// Whether `piece` has voxels to mesh: whole ones for a chunk of level 0, halved ones for
     /// a cell.
     fn is_meshed(&self, piece: Piece) -> bool {
@@ -243,5 +255,33 @@ impl Refinement {
     /// The position of the sample with finest index `q`.
     pub(super) fn point(&self, q: [i64; 3]) -> DVec3 {
         self.grid_at(MAX_LEVEL).sample(q)
+    }
+}
+
+/// Voxels along each side of a chunk with the voxels around it.
+const AROUND: i64 = CHUNK as i64 + 2;
+
+/// Which voxels of a chunk of level 0 and around it are halved ([`Refinement::halved_around`]).
+pub(super) struct HalvedAround {
+    /// The lowest voxel held.
+    first: [i64; 3],
+    flags: Vec<bool>,
+}
+
+impl HalvedAround {
+    /// Whether voxel `v` (global index of level 0, in the chunk or beside it) is halved.
+    pub(super) fn is_halved(&self, v: [i64; 3]) -> bool {
+        let at: [i64; 3] = std::array::from_fn(|k| v[k] - self.first[k]);
+        (at.iter().all(|c| (0..AROUND).contains(c)))
+            && self.flags[(at[0] + AROUND * (at[1] + AROUND * at[2])) as usize]
+    }
+
+    /// Whether a voxel beside voxel `v` of the chunk (sharing a face, an edge or a corner) is
+    /// halved: only then may `v` be coned.
+    pub(super) fn beside(&self, v: [i64; 3]) -> bool {
+        (0..27).any(|n| {
+            let o = [n % 3 - 1, n / 3 % 3 - 1, n / 9 - 1];
+            self.is_halved(std::array::from_fn(|k| v[k] + o[k]))
+        })
     }
 }

@@ -4,7 +4,7 @@
 //! one class (specks the grid, not the model, makes) take the other class.
 
 use super::grid::{CHUNK, ChunkIndex, Grid, SIDE, at_local, local};
-use super::refinement::Refinement;
+use super::refinement::{MAX_LEVEL, Refinement};
 use super::tetrahedra::{DIRECTIONS, offset};
 use crate::blobtree::blob_tree::Node;
 use crate::blobtree::falloff::ISO;
@@ -234,6 +234,8 @@ pub(super) struct FineClasses<'a> {
     /// Each point's side of the iso-value and class in the block the chunk's specks reach,
     /// x fastest: bit 0 evaluated, bit 1 inside; bit 2 judged, bit 3 its class inside.
     points: Vec<u8>,
+    /// The slots written, so that reading and clearing them costs what was judged.
+    written: Vec<u32>,
 }
 
 /// Points of the finest lattice along each side of the block whose sides and classes
@@ -243,7 +245,8 @@ const KEPT: i64 = 2 * CHUNK as i64 + 1 + 2 * (SPECK as i64 + 1);
 impl<'a> FineClasses<'a> {
     /// The judge of the points of the finest lattice about `chunk` of `grid` (of level 0),
     /// from `tree` at growth step `step`, the chunk's samples `field` and trees `culled`;
-    /// `points` is a buffer to keep what is known of the points in (see [`Self::into_buffer`]).
+    /// `points` is a buffer to keep what is known of the points in, all zeros (as
+    /// [`Self::into_buffer`] leaves it).
     pub(super) fn new(
         (tree, step): (&'a Node, u32),
         refinement: &'a Refinement,
@@ -251,7 +254,6 @@ impl<'a> FineClasses<'a> {
         (culled, field): (&'a Culled, &[f64]),
         mut points: Vec<u8>,
     ) -> Self {
-        points.clear();
         points.resize((KEPT * KEPT * KEPT) as usize, 0);
         let octant_sides = std::array::from_fn(|octant| {
             let corner = offset(octant).map(|o| o * OCTANT);
@@ -267,11 +269,59 @@ impl<'a> FineClasses<'a> {
             reach: None,
             first: Refinement::finest(Grid::first_sample(chunk), grid.level),
             points,
+            written: Vec::new(),
         }
     }
 
-    /// The buffer handed to [`Self::new`], for the next chunk.
-    pub(super) fn into_buffer(self) -> Vec<u8> {
+    /// Sets `bits` in the record of slot `slot`.
+    fn write(&mut self, slot: usize, bits: u8) {
+        if self.points[slot] == 0 {
+            self.written.push(slot as u32);
+        }
+        self.points[slot] |= bits;
+    }
+
+    /// Takes over what meshing the same chunk judged before (`judged`, from [`Self::judged`])
+    /// where the tree did not change since: a point's side outside the boxes `changed`, its
+    /// class where no point within a speck's reach of it is in one.
+    pub(super) fn take_over(&mut self, judged: &[(u32, u8)], changed: &[Bounds]) {
+        let fine_voxel = self.refinement.grid_at(MAX_LEVEL).voxel;
+        let reach = (SPECK as f64 + 1.0) * fine_voxel;
+        for &(slot, record) in judged {
+            let n = i64::from(slot);
+            let at = [n % KEPT, n / KEPT % KEPT, n / (KEPT * KEPT)];
+            let q = std::array::from_fn(|k| at[k] + self.first[k] - (SPECK as i64 + 1));
+            let point = self.refinement.point(q);
+            if changed.iter().any(|b| b.contains(point)) {
+                continue;
+            }
+            let around = Bounds {
+                min: point,
+                max: point,
+            }
+            .padded(reach);
+            let kept = if changed.iter().any(|b| b.intersects(&around)) {
+                record & 3
+            } else {
+                record
+            };
+            self.write(slot as usize, kept);
+        }
+    }
+
+    /// What was judged of the points, by slot, for [`Self::take_over`].
+    pub(super) fn judged(&self) -> Vec<(u32, u8)> {
+        (self.written.iter())
+            .map(|&slot| (slot, self.points[slot as usize]))
+            .filter(|&(_, record)| record != 0)
+            .collect()
+    }
+
+    /// The buffer handed to [`Self::new`], all zeros again, for the next chunk.
+    pub(super) fn into_buffer(mut self) -> Vec<u8> {
+        for &slot in &self.written {
+            self.points[slot as usize] = 0;
+        }
         self.points
     }
 
@@ -305,7 +355,7 @@ impl<'a> FineClasses<'a> {
             reach.as_ref().is_some_and(|t| t.field(point) >= ISO)
         };
         if let Some(i) = slot {
-            self.points[i] |= 1 | u8::from(side) << 1;
+            self.write(i, 1 | u8::from(side) << 1);
         }
         side
     }
@@ -332,7 +382,7 @@ impl<'a> FineClasses<'a> {
         }
         let class = mine != (count <= SPECK);
         if let Some(i) = slot {
-            self.points[i] |= 4 | u8::from(class) << 3;
+            self.write(i, 4 | u8::from(class) << 3);
         }
         class
     }
