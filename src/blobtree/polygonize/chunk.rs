@@ -1,13 +1,13 @@
-//! Meshing one chunk (a piece of its level) by marching tetrahedra: each voxel's six
-//! tetrahedra hold zero, one or two triangles; a vertex sits where the field crosses the
-//! iso-value on an edge of a tetrahedron (`vertex.rs`). A piece meshes the voxels of its own
+//! Meshing one chunk (a piece of its level) by marching tetrahedra: a voxel's tetrahedra
+//! (Kuhn's six, or a coned voxel's) hold zero, one or two triangles each; a vertex sits where
+//! the field crosses the iso-value on an edge of a tetrahedron (`vertex.rs`). A piece meshes the voxels of its own
 //! level only; a whole voxel beside a halved one is coned from its centre to meet it
 //! (`transition.rs`, `refinement.rs`).
 
 use super::grid::{CHUNK, Grid, SIDE, at_local, local};
 use super::memory::{Known, Memory};
 use super::refinement::{Piece, Refinement};
-use super::sample::{Culled, FineClasses, class, octant_of, sample};
+use super::sample::{Culled, FineClasses, class, octant_of, one_side, sample};
 use super::tetrahedra::{CUTS, DIRECTIONS, EDGES, TETRAHEDRA, edge_key, edge_of, offset};
 use super::transition::{Point, coned, cut};
 use super::vertex::surface_vertex;
@@ -138,17 +138,21 @@ pub fn mesh_chunk(
         fine
     });
     class(
-        tree,
-        step,
+        (tree, step),
         grid,
         chunk,
         &scratch.field,
         &mut scratch.inside,
+        whole.then_some(refinement),
         fine.as_mut(),
     );
     scratch.vertex_of.resize(EDGES, u32::MAX);
     let around = (whole && mixed).then(|| refinement.halved_around(chunk));
-    let cell = refinement.halved_in_cell(chunk);
+    let cell = if whole {
+        0
+    } else {
+        refinement.halved_in_cell(chunk)
+    };
     let mut mesh = Mesh::default();
     for z in 0..CHUNK as usize {
         for y in 0..CHUNK as usize {
@@ -163,6 +167,22 @@ pub fn mesh_chunk(
                         // A coned voxel's samples and vertices take the octant's tree too;
                         // an octant without one is proven on one side.
                         if let Some(tree) = &culled.octants[octant_of([x, y, z])] {
+                            // A voxel whose field is proven on the side its corners all take
+                            // holds no surface: every point of it takes that side, in a
+                            // component larger than a speck.
+                            let corners = (0..8).map(|c| {
+                                let o = offset(c);
+                                scratch.inside[local([x + o[0], y + o[1], z + o[2]])]
+                            });
+                            let side = corners.clone().all(|c| c) || !corners.clone().any(|c| c);
+                            let region = Bounds {
+                                min: grid.sample(v),
+                                max: grid.sample(v.map(|c| c + 1)),
+                            };
+                            let inside = scratch.inside[local([x, y, z])];
+                            if side && one_side(tree, &region) == Some(inside) {
+                                continue;
+                            }
                             let fine = fine
                                 .as_mut()
                                 .expect("judged in a chunk beside halved voxels");

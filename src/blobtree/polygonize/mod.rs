@@ -366,6 +366,48 @@ mod tests {
     }
 
     #[test]
+    fn a_speck_beside_a_halved_voxel_is_judged_alike_by_every_chunk_holding_it() {
+        use crate::blobtree::falloff::support_of;
+        use crate::blobtree::primitive::Primitive;
+        use crate::blobtree::texture_blend::Texture;
+        use glam::DVec3;
+        // Voxels of side 1, samples at whole coordinates, chunk faces at 6, 14, 22, 30: a rod
+        // holding two samples across the chunk face at x = 14, the first a corner of a voxel
+        // halved in the chunk below, the second beside no halved voxel in the chunk above,
+        // which must not flip it either.
+        let grid = Grid::new(
+            &Bounds {
+                min: DVec3::ZERO,
+                max: DVec3::splat(40.0),
+            },
+            40,
+        );
+        let voxel = Bounds {
+            min: DVec3::new(12.25, 10.25, 10.25),
+            max: DVec3::new(12.75, 10.75, 10.75),
+        };
+        let refinement = Refinement::new(grid, &[(voxel, MAX_LEVEL)]);
+        let leaf = |primitive| Node::leaf(primitive, Texture::around(0.0));
+        let rod = leaf(Primitive::Cone {
+            from: DVec3::new(13.0, 10.0, 10.0),
+            to: DVec3::new(14.0, 10.0, 10.0),
+            radii: [0.3; 2].map(support_of),
+        });
+        let ball = leaf(Primitive::Point {
+            centre: DVec3::splat(30.0),
+            radius: support_of(5.0),
+        });
+        let mesh = polygonize(&Node::union(vec![ball, rod]), &refinement, 0);
+        let bad = unpaired(&mesh);
+        assert!(
+            mesh.triangle_count() > 100 && bad.is_empty(),
+            "{} edges not paired: {:?}",
+            bad.len(),
+            &bad[..bad.len().min(6)]
+        );
+    }
+
+    #[test]
     fn a_grid_every_voxel_of_which_is_halved_meshes_as_the_grid_of_halved_voxels() {
         let (tree, step) = test_shell();
         let grid = Grid::new(&tree.bounds, 24);
@@ -441,8 +483,7 @@ mod tests {
     fn pieces_of_every_level_join_into_one_closed_surface() {
         let (tree, step) = test_shell();
         let grid = Grid::new(&tree.bounds, 48);
-        // The finest level over one box, level 1 over another overlapping it, across chunk
-        // faces.
+        // Voxels halved over two overlapping boxes, across chunk faces.
         let size = tree.bounds.max - tree.bounds.min;
         let part = |from: f64, to: f64| Bounds {
             min: tree.bounds.min + size * from,

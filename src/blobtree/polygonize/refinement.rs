@@ -8,11 +8,11 @@
 //!
 //! Where whole and halved voxels meet, the mesh conforms by construction: every sample is the
 //! field itself, on the lattice of the halved voxels, and the tetrahedra of both sides share
-//! their faces (`transition.rs`). A halved voxel is split as every voxel is, into Kuhn's six
-//! tetrahedra; a whole voxel beside one is split to meet it, coned from its centre. Nothing is
-//! interpolated and no triangle is split after the fact. Samples that voxels of both levels
-//! hold are never flipped as part of a speck (`sample.rs`): each side would judge them by
-//! other neighbours.
+//! their faces (`transition.rs`). The eight halves of a halved voxel are split as every voxel
+//! is, into Kuhn's six tetrahedra; a whole voxel beside one is split to meet it, coned from its
+//! centre. Nothing is interpolated and no triangle is split after the fact. Samples that
+//! voxels of both levels hold are judged specks or not on the finest lattice by every chunk
+//! holding them (`sample.rs`), so that both sides give them one class.
 
 use super::grid::{CHUNK, ChunkIndex, Grid};
 use crate::mesh::Bounds;
@@ -210,8 +210,7 @@ impl Refinement {
     }
 
     /// Whether voxels of both levels hold the sample with finest index `q` (a corner, or a
-    /// point of an edge or a face, of each): its class is then never flipped as part of a
-    /// speck.
+    /// point of an edge or a face, of each): its class is then judged on the finest lattice.
     pub(super) fn is_shared_across_levels(&self, q: [i64; 3]) -> bool {
         if self.halved.is_empty() {
             return false;

@@ -14,7 +14,7 @@ use std::collections::{HashMap, HashSet};
 /// Which side of the iso-value the field of `tree` is proven to keep throughout `region`, by
 /// the bounds [`Node::range`] gives over the ball around it: `Some(true)` inside, `Some(false)`
 /// outside, `None` when the bounds allow both.
-fn one_side(tree: &Node, region: &Bounds) -> Option<bool> {
+pub(super) fn one_side(tree: &Node, region: &Bounds) -> Option<bool> {
     let (lo, hi) = tree.range(region.center(), (region.max - region.min).length() * 0.5);
     // A margin for the rounding of the bounds themselves.
     const MARGIN: f64 = 1e-9;
@@ -392,17 +392,18 @@ impl<'a> FineClasses<'a> {
 /// each by its own side of the iso-value, but for specks (see [`SPECK`]), which take the
 /// other class. A speck may cross the chunk's faces: samples beyond the chunk are evaluated
 /// from `tree` at growth step `step` (culled [`REACH`] voxels wider than the chunk, once a
-/// chunk needs them), so every chunk holding part of a speck decides alike. A chunk of level
-/// 0 beside halved voxels hands over `fine`: its samples that halved voxels hold too are
-/// judged on the finest lattice, as the halved voxels' chunks judge them, and a component on
-/// its own lattice holding one of them is not flipped.
+/// chunk needs them), so every chunk holding part of a speck decides alike. In a chunk of
+/// level 0 (`levels` given) a component holding a sample that halved voxels hold too is not
+/// flipped, in every such chunk alike, since its neighbours beyond may hold one; a chunk
+/// beside halved voxels hands over `fine`, and those samples are judged on the finest
+/// lattice, as the halved voxels' chunks judge them.
 pub(super) fn class(
-    tree: &Node,
-    step: u32,
+    (tree, step): (&Node, u32),
     grid: &Grid,
     chunk: ChunkIndex,
     field: &[f64],
     inside: &mut Vec<bool>,
+    levels: Option<&Refinement>,
     fine: Option<&mut FineClasses>,
 ) {
     let first = Grid::first_sample(chunk);
@@ -412,7 +413,6 @@ pub(super) fn class(
     inside.extend(field.iter().map(|&f| f >= ISO));
     let within = |n: &[i64; 3]| n.iter().all(|&i| (0..SIDE as i64).contains(&i));
     let index = |n: [i64; 3]| local(n.map(|i| i as usize));
-    let levels = fine.as_ref().map(|f| f.refinement);
     let fixed = |n: [i64; 3]| levels.is_some_and(|r| r.is_shared_across_levels(finest(n)));
     // The classes of samples beyond the chunk, evaluated once each.
     let mut reach: Option<Option<Node>> = None;

@@ -1,7 +1,8 @@
 //! The thin parts of a Murex — spines, ridges, canal spines, bumps — at their size in the
 //! model, and the level of refinement each needs to be shown on the grid it is polygonized with
 //! ([`Refinement`](crate::blobtree::polygonize::Refinement)): the voxels a part reaches are
-//! halved until the part is [`THINNEST_VOXELS`] thick, up to [`MAX_LEVEL`] times. The model decides what exists, the grid only how finely it is shown:
+//! halved until the part is [`THINNEST_VOXELS`] thick, up to [`MAX_LEVEL`] times. The model
+//! decides what exists, the grid only how finely it is shown:
 //! a part is never thinner than [`THINNEST`] of the shell's extent (a spine's tip, the
 //! smallest bumps are drawn that thick, none is left out), whatever the grid, so that the
 //! same BlobTree is built at every resolution of [`SHOWS_THE_MODEL`] voxels or more. Each part

@@ -144,6 +144,8 @@ pub(crate) fn opening(
     // whorl blended whole and left uncarved would reach through the previous whorl's wall
     // (the inside surface is nearly as large as the body's), leaving no wall between them.
     let mut extended: Vec<Option<Node>> = vec![None; first as usize];
+    // Walls are hinted only where the shell is drawn: the solids drawn apart have none.
+    let walled = spec.opening.shows == Shows::Shell;
     let mut thin_walls = Vec::new();
     for k in first..end {
         let birth = k.saturating_sub(o.ahead);
@@ -156,7 +158,7 @@ pub(crate) fn opening(
         let thickness = wall * instances.size(f64::from(k));
         if let Some(p) = placed
             .as_ref()
-            .filter(|_| !apart && thickness < shown_whole)
+            .filter(|_| walled && thickness < shown_whole)
         {
             // The wall lies about the inside surface, within its thickness and a whole voxel.
             thin_walls.push(p.bounds.padded(thickness + shown_whole));
