@@ -183,8 +183,9 @@ impl GrowingShape for ImplicitMesh {
         // vertices before welding, with 1.75 triangles each; a plain whorl 15 r²), so that
         // growth never stops to move a large mesh: the renderer's buffers and the meshes still
         // grow when a shell needs more. Refined where its spines and bumps stand, the Murex
-        // has up to 65 r² (46–65 r² at 112–256 voxels): its thin parts cover most of its last
-        // whorls, which a quarter of the grid's chunks refined already holds.
+        // has up to 65 r² (measured at 112–256 voxels with whole chunks refined): its thin
+        // parts cover most of its last whorls, and the guess is full once a quarter of the
+        // grid's voxels are halved.
         let refined = self.maker.refinement.refined_share();
         let per_r2 = 20.0 + 45.0 * (4.0 * refined).min(1.0);
         let r2 = f64::from(self.resolution).powi(2);
