@@ -47,8 +47,9 @@ pub fn mesh_chunk(
     let whole = piece.level == 0;
     // Whether voxels of the other level stand in the piece or beside it: only then is a
     // voxel's level asked.
+    let around = whole.then(|| refinement.halved_around(chunk)).flatten();
     let mixed = if whole {
-        refinement.halved_near(chunk)
+        around.is_some()
     } else {
         refinement.halved_in_cell(chunk) != u64::MAX
     };
@@ -147,7 +148,6 @@ pub fn mesh_chunk(
         fine.as_mut(),
     );
     scratch.vertex_of.resize(EDGES, u32::MAX);
-    let around = (whole && mixed).then(|| refinement.halved_around(chunk));
     let cell = if whole {
         0
     } else {

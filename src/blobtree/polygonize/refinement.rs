@@ -130,27 +130,22 @@ impl Refinement {
         self.halved[(c[0] + cells[0] * (c[1] + cells[1] * c[2])) as usize]
     }
 
-    /// Whether a voxel of a chunk of level 0, or one beside it, is halved: only then may its
-    /// voxels be skipped or coned.
-    pub(super) fn halved_near(&self, chunk: ChunkIndex) -> bool {
+    /// Which voxels of a chunk of level 0, and of the voxels around it, are halved, read once;
+    /// `None` when none is: only then may its voxels be skipped or coned.
+    pub(super) fn halved_around(&self, chunk: ChunkIndex) -> Option<HalvedAround> {
         if self.halved.is_empty() {
-            return false;
+            return None;
         }
-        let first = Grid::first_sample(chunk);
-        let near = |k: usize| first[k] - 1..=first[k] + i64::from(CHUNK);
-        near(2).any(|z| near(1).any(|y| near(0).any(|x| self.is_halved([x, y, z]))))
-    }
-
-    /// Which voxels of a chunk of level 0, and of the voxels around it, are halved, read once.
-    pub(super) fn halved_around(&self, chunk: ChunkIndex) -> HalvedAround {
         let first = Grid::first_sample(chunk).map(|c| c - 1);
-        let flags = (0..AROUND * AROUND * AROUND)
+        let flags: Vec<bool> = (0..AROUND * AROUND * AROUND)
             .map(|n| {
                 let at = [n % AROUND, n / AROUND % AROUND, n / (AROUND * AROUND)];
                 self.is_halved(std::array::from_fn(|k| first[k] + at[k]))
             })
             .collect();
-        HalvedAround { first, flags }
+        flags
+            .contains(&true)
+            .then_some(HalvedAround { first, flags })
     }
 
     /// Whether `piece` has voxels to mesh: whole ones for a chunk of level 0, halved ones for
@@ -225,9 +220,7 @@ impl Refinement {
                 v..=v
             }
         };
-        let voxels = (0..3)
-            .map(|k| i64::from(self.cells[k]) * CELL)
-            .collect::<Vec<_>>();
+        let voxels = self.cells.map(|c| i64::from(c) * CELL);
         let (mut whole, mut halved) = (false, false);
         for z in along(2) {
             for y in along(1) {
